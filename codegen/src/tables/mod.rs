@@ -1,0 +1,1 @@
+//! Per-suit tables (filled in by the tables work).

@@ -1,0 +1,1 @@
+//! Kernel subset -> WGSL translator.
