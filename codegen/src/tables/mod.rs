@@ -1,1 +1,145 @@
-//! Per-suit tables (filled in by the tables work).
+//! Per-suit tables keyed by base-5 codes, built from first principles at build time.
+//!
+//! Everything lives in one flat `Vec<u32>` so the runtime can upload it to the GPU as a single
+//! storage buffer and the CPU can `include_bytes!` the same bytes; regions are found by offset.
+//!
+//! | region | words per entry | content |
+//! |---|---|---|
+//! | `suit_cost` | 2 per suit code | D(m, 0) at bits `4m..4m+4` in word 0, D(m, 1) in word 1 |
+//! | `honor_cost` | 2 per honor code | the same for honors (triplets and pairs only) |
+//! | `decomp_index` | 1 per suit code | `(first << 4) \| count` into `decomps` |
+//! | `decomps` | 2 per decomposition | word 0: pair and sets; word 1: yaku bits (see [`decomp`]) |
+//!
+//! D is exact (see [`cost`]), so per-suit costs can be combined exactly by the shanten kernel.
+
+mod code;
+mod cost;
+pub mod decomp;
+
+pub use code::{honor_code, suit_code, HONOR_CODES, SUIT_CODES};
+
+/// Bits of the count field in a `decomp_index` word.
+pub const INDEX_COUNT_BITS: u32 = 4;
+
+/// All tables in one buffer, with each region's offset (in words).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Tables {
+    pub words: Vec<u32>,
+    pub suit_cost: u32,
+    pub honor_cost: u32,
+    pub decomp_index: u32,
+    pub decomps: u32,
+    /// Number of decompositions (the `decomps` region holds twice as many words).
+    pub n_decomps: u32,
+}
+
+/// Builds every table. Deterministic: the same words on every run and machine.
+pub fn build() -> Tables {
+    let decomps = decomp::all();
+    let n_decomps = decomps.len();
+
+    let suit_cost = 0;
+    let honor_cost = suit_cost + 2 * SUIT_CODES;
+    let decomp_index = honor_cost + 2 * HONOR_CODES;
+    let decomps_at = decomp_index + SUIT_CODES;
+    let mut words = vec![0u32; decomps_at + 2 * n_decomps];
+
+    cost::build::<9>(&cost::suit_sets(), &mut words[suit_cost..honor_cost]);
+    cost::build::<7>(&cost::honor_sets(), &mut words[honor_cost..decomp_index]);
+
+    let (index, list) = words[decomp_index..].split_at_mut(SUIT_CODES);
+    // `decomps` is sorted by code, so each code's decompositions are one contiguous run.
+    let mut first = 0;
+    while first < n_decomps {
+        let code = decomps[first].0;
+        let count = decomps[first..].iter().take_while(|d| d.0 == code).count();
+        assert!(
+            count < 1 << INDEX_COUNT_BITS,
+            "code {code}: {count} decompositions"
+        );
+        index[code] = (first as u32) << INDEX_COUNT_BITS | count as u32;
+        first += count;
+    }
+    for ((code, d), out) in decomps.iter().zip(list.chunks_exact_mut(2)) {
+        out[0] = d.word0();
+        out[1] = d.word1(&code::decode::<9>(*code));
+    }
+
+    let offset = |x: usize| u32::try_from(x).expect("tables exceed u32 offsets");
+    Tables {
+        words,
+        suit_cost: offset(suit_cost),
+        honor_cost: offset(honor_cost),
+        decomp_index: offset(decomp_index),
+        decomps: offset(decomps_at),
+        n_decomps: offset(n_decomps),
+    }
+}
+
+impl Tables {
+    /// Kernel-subset Rust consts for the region offsets, one `const NAME: u32 = <n>u32;` a line.
+    pub fn kernel_consts(&self) -> String {
+        self.regions()
+            .iter()
+            .map(|(name, at, _)| format!("const T_{}: u32 = {at}u32;\n", name.to_uppercase()))
+            .collect()
+    }
+
+    /// Little-endian bytes of `words`, for writing to OUT_DIR and `include_bytes!`.
+    pub fn to_le_bytes(&self) -> Vec<u8> {
+        self.words.iter().flat_map(|w| w.to_le_bytes()).collect()
+    }
+
+    /// 64-bit FNV-1a over each region's little-endian bytes, by region name.
+    pub fn region_hashes(&self) -> Vec<(&'static str, u64)> {
+        self.regions()
+            .into_iter()
+            .map(|(name, at, len)| (name, fnv1a(&self.words[at as usize..][..len])))
+            .collect()
+    }
+
+    /// The two cost words of a suit code.
+    pub fn suit_cost_words(&self, code: usize) -> [u32; 2] {
+        self.pair_at(self.suit_cost as usize + 2 * code)
+    }
+
+    /// The two cost words of an honor code.
+    pub fn honor_cost_words(&self, code: usize) -> [u32; 2] {
+        self.pair_at(self.honor_cost as usize + 2 * code)
+    }
+
+    /// The `decomps` words (two per decomposition) of a suit code; empty if it is incomplete.
+    pub fn decomps_of(&self, code: usize) -> &[u32] {
+        let entry = self.words[self.decomp_index as usize + code];
+        let first = (entry >> INDEX_COUNT_BITS) as usize;
+        let count = (entry & ((1 << INDEX_COUNT_BITS) - 1)) as usize;
+        &self.words[self.decomps as usize + 2 * first..][..2 * count]
+    }
+
+    fn pair_at(&self, at: usize) -> [u32; 2] {
+        [self.words[at], self.words[at + 1]]
+    }
+
+    fn regions(&self) -> [(&'static str, u32, usize); 4] {
+        [
+            ("suit_cost", self.suit_cost, 2 * SUIT_CODES),
+            ("honor_cost", self.honor_cost, 2 * HONOR_CODES),
+            ("decomp_index", self.decomp_index, SUIT_CODES),
+            ("decomps", self.decomps, 2 * self.n_decomps as usize),
+        ]
+    }
+}
+
+/// D(m, h) out of a pair of cost words.
+pub fn cost(words: [u32; 2], m: usize, h: usize) -> u32 {
+    words[h] >> (cost::D_BITS * m) & 0xf
+}
+
+fn fnv1a(words: &[u32]) -> u64 {
+    words
+        .iter()
+        .flat_map(|w| w.to_le_bytes())
+        .fold(0xcbf2_9ce4_8422_2325, |h, b| {
+            (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
+        })
+}
