@@ -1,0 +1,497 @@
+//! Table checks: independent oracles (reference statistics, brute-force costs and splitters)
+//! prove what the tables mean; the hash pin only catches unintended change.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::sync::OnceLock;
+use std::time::Instant;
+
+use rinshan_codegen::tables::{
+    self, cost, decomp, honor_code, suit_code, Tables, HONOR_CODES, SUIT_CODES,
+};
+
+fn tables() -> &'static Tables {
+    static T: OnceLock<Tables> = OnceLock::new();
+    T.get_or_init(|| {
+        let start = Instant::now();
+        let t = tables::build();
+        eprintln!(
+            "tables::build: {:?} ({} words, {} decompositions)",
+            start.elapsed(),
+            t.words.len(),
+            t.n_decomps
+        );
+        t
+    })
+}
+
+/// Random sample sizes: full size in release, smaller unoptimised so the file stays quick.
+const SAMPLES: usize = if cfg!(debug_assertions) { 500 } else { 2000 };
+
+/// splitmix64: enough randomness for sampling, and reproducible.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    }
+
+    fn below(&mut self, n: usize) -> usize {
+        (self.next() % n as u64) as usize
+    }
+}
+
+fn decode<const N: usize>(mut code: usize) -> [u8; N] {
+    let mut c = [0u8; N];
+    for i in (0..N).rev() {
+        c[i] = (code % 5) as u8;
+        code /= 5;
+    }
+    c
+}
+
+/// Adds a set (0..7 run start, 7..16 triplet) to suit counts; false if a count would pass 4.
+fn add_set(c: &mut [u8; 9], v: usize) -> bool {
+    if v < 7 {
+        c[v..v + 3].iter_mut().for_each(|x| *x += 1);
+    } else {
+        c[v - 7] += 3;
+    }
+    c.iter().all(|&x| x <= 4)
+}
+
+/// Sample codes: a third uniform, a third random tiles (0..=14), a third random sets + pair with
+/// a tile added or removed now and then, so complete and near-complete suits are well covered.
+fn sample_suits(rng: &mut Rng, n: usize) -> Vec<[u8; 9]> {
+    let mut out = Vec::with_capacity(n);
+    while out.len() < n {
+        let mut c = [0u8; 9];
+        let ok = match out.len() % 3 {
+            0 => {
+                c = decode(rng.below(SUIT_CODES));
+                true
+            }
+            1 => (0..rng.below(15)).all(|_| {
+                let p = rng.below(9);
+                c[p] += 1;
+                c[p] <= 4
+            }),
+            _ => {
+                let ok = (0..rng.below(5)).all(|_| add_set(&mut c, rng.below(16)));
+                if rng.below(2) == 0 {
+                    c[rng.below(9)] += 2;
+                }
+                match rng.below(4) {
+                    0 => c[rng.below(9)] += 1,
+                    1 => {
+                        let p = rng.below(9);
+                        c[p] = c[p].saturating_sub(1);
+                    }
+                    _ => {}
+                }
+                ok && c.iter().all(|&x| x <= 4)
+            }
+        };
+        if ok {
+            out.push(c);
+        }
+    }
+    out
+}
+
+/// Every target of `m` sets and `h` pairs from `shapes`, counts <= 4, deduplicated.
+fn targets<const N: usize>(shapes: &[[u8; N]], m: usize, h: usize) -> Vec<[u8; N]> {
+    let mut all = BTreeSet::new();
+    let mut stack = vec![(0usize, 0usize, [0u8; N])];
+    while let Some((start, used, acc)) = stack.pop() {
+        if used == m {
+            if h == 0 {
+                all.insert(acc);
+            } else {
+                for p in 0..N {
+                    let mut t = acc;
+                    t[p] += 2;
+                    if t[p] <= 4 {
+                        all.insert(t);
+                    }
+                }
+            }
+            continue;
+        }
+        for (k, s) in shapes.iter().enumerate().skip(start) {
+            let mut t = acc;
+            t.iter_mut().zip(s).for_each(|(a, b)| *a += b);
+            if t.iter().all(|&x| x <= 4) {
+                stack.push((k, used + 1, t));
+            }
+        }
+    }
+    all.into_iter().collect()
+}
+
+fn suit_shapes() -> Vec<[u8; 9]> {
+    (0..16)
+        .map(|v| {
+            let mut c = [0; 9];
+            add_set(&mut c, v);
+            c
+        })
+        .collect()
+}
+
+fn honor_shapes() -> Vec<[u8; 7]> {
+    (0..7)
+        .map(|p| {
+            let mut c = [0; 7];
+            c[p] = 3;
+            c
+        })
+        .collect()
+}
+
+fn brute_d<const N: usize>(targets: &[[u8; N]], c: &[u8; N]) -> u32 {
+    targets
+        .iter()
+        .map(|t| {
+            t.iter()
+                .zip(c)
+                .map(|(&t, &c)| u32::from(t.saturating_sub(c)))
+                .sum()
+        })
+        .min()
+        .expect("no targets")
+}
+
+fn check_costs<const N: usize>(
+    shapes: &[[u8; N]],
+    samples: &[[u8; N]],
+    code_of: impl Fn(&[u8; N]) -> usize,
+    words_of: impl Fn(usize) -> [u32; 2],
+) {
+    for m in 0..=4 {
+        for h in 0..=1 {
+            let ts = targets(shapes, m, h);
+            for c in samples {
+                let got = cost(words_of(code_of(c)), m, h);
+                assert_eq!(got, brute_d(&ts, c), "D({m},{h}) of {c:?}");
+            }
+        }
+    }
+}
+
+#[test]
+fn suit_costs_match_brute_force() {
+    let t = tables();
+    let mut rng = Rng(1);
+    let mut samples = sample_suits(&mut rng, SAMPLES);
+    // Every suit of at most 3 tiles too: the small cases are where off-by-ones hide.
+    samples.extend(
+        (0..SUIT_CODES)
+            .map(decode::<9>)
+            .filter(|c| c.iter().sum::<u8>() <= 3),
+    );
+    check_costs(&suit_shapes(), &samples, suit_code, |c| {
+        t.suit_cost_words(c)
+    });
+}
+
+#[test]
+fn honor_costs_match_brute_force() {
+    let t = tables();
+    let mut rng = Rng(2);
+    let samples: Vec<[u8; 7]> = (0..SAMPLES)
+        .map(|i| {
+            if i % 2 == 0 {
+                decode(rng.below(HONOR_CODES))
+            } else {
+                // Honor hands are mostly pairs and triplets: sample those shapes more.
+                let mut c = [0u8; 7];
+                for _ in 0..rng.below(6) {
+                    let p = rng.below(7);
+                    c[p] = (c[p] + [1, 2, 3][rng.below(3)]).min(4);
+                }
+                c
+            }
+        })
+        .collect();
+    check_costs(&honor_shapes(), &samples, honor_code, |c| {
+        t.honor_cost_words(c)
+    });
+}
+
+#[test]
+fn complete_suits_cost_nothing() {
+    // A suit with a decomposition into n sets and h pairs needs no tile for (n, h).
+    let t = tables();
+    for code in 0..SUIT_CODES {
+        for d in t.decomps_of(code).chunks_exact(2) {
+            let pair = usize::from(d[0] & 15 != decomp::NO_PAIR);
+            let n = (d[0] >> decomp::W0_NSETS_SHIFT & 7) as usize;
+            assert_eq!(cost(t.suit_cost_words(code), n, pair), 0, "code {code}");
+        }
+    }
+}
+
+type Reading = (Option<u8>, Vec<u8>);
+
+/// Lowest tile first: it must start a run, or sit in a triplet or the pair. A hand holds at most
+/// four sets, so longer splits (of suits over 14 tiles) do not count.
+fn split(c: &mut [u8; 9], pair: Option<u8>, sets: &mut Vec<u8>, out: &mut BTreeSet<Reading>) {
+    let Some(i) = c.iter().position(|&x| x > 0) else {
+        let mut s = sets.clone();
+        s.sort_unstable();
+        out.insert((pair, s));
+        return;
+    };
+    let room = sets.len() < 4;
+    if room && c[i] >= 3 {
+        c[i] -= 3;
+        sets.push(7 + i as u8);
+        split(c, pair, sets, out);
+        sets.pop();
+        c[i] += 3;
+    }
+    if room && i <= 6 && c[i + 1] > 0 && c[i + 2] > 0 {
+        c[i..i + 3].iter_mut().for_each(|x| *x -= 1);
+        sets.push(i as u8);
+        split(c, pair, sets, out);
+        sets.pop();
+        c[i..i + 3].iter_mut().for_each(|x| *x += 1);
+    }
+    if pair.is_none() && c[i] >= 2 {
+        c[i] -= 2;
+        split(c, Some(i as u8), sets, out);
+        c[i] += 2;
+    }
+}
+
+fn table_readings(t: &Tables, code: usize) -> Vec<Reading> {
+    t.decomps_of(code)
+        .chunks_exact(2)
+        .map(|d| {
+            let pair = (d[0] & 15) as u8;
+            let n = d[0] >> decomp::W0_NSETS_SHIFT & 7;
+            let sets = (0..n)
+                .map(|k| (d[0] >> (decomp::W0_SETS_SHIFT + 4 * k) & 15) as u8)
+                .collect();
+            ((pair != decomp::NO_PAIR as u8).then_some(pair), sets)
+        })
+        .collect()
+}
+
+/// The yaku word, recomputed from a reading and the suit's counts.
+fn expected_word1(c: &[u8; 9], (pair, sets): &Reading) -> u32 {
+    let mut w = 0;
+    let mut mult = [0u32; 7];
+    for &v in sets {
+        if v < 7 {
+            w |= 1 << v;
+            mult[usize::from(v)] += 1;
+        } else {
+            w |= 1 << (7 + v - 7);
+        }
+    }
+    w |= mult.iter().map(|m| m / 2).sum::<u32>() << 16;
+    let end = |p: u8| p == 0 || p == 8;
+    let outside = sets
+        .iter()
+        .all(|&v| if v < 7 { v == 0 || v == 6 } else { end(v - 7) })
+        && pair.is_none_or(end);
+    if outside {
+        w |= 1 << 18;
+    }
+    let floor = [3, 1, 1, 1, 1, 1, 1, 1, 3];
+    if c.iter().map(|&x| u32::from(x)).sum::<u32>() == 14
+        && c.iter().zip(floor).all(|(&x, f)| x >= f)
+    {
+        w |= 1 << 19;
+    }
+    w
+}
+
+#[test]
+fn decompositions_match_brute_force_splitter() {
+    let t = tables();
+    let mut rng = Rng(3);
+    let samples = sample_suits(&mut rng, SAMPLES);
+    let mut complete = 0;
+    for c in &samples {
+        let code = suit_code(c);
+        let mut want = BTreeSet::new();
+        split(&mut c.clone(), None, &mut Vec::new(), &mut want);
+        let got = table_readings(t, code);
+        // Strictly increasing means sorted and free of duplicates.
+        assert!(
+            got.windows(2).all(|w| w[0] < w[1]),
+            "{c:?}: {got:?} not sorted"
+        );
+        for (_, sets) in &got {
+            assert!(
+                sets.windows(2).all(|w| w[0] <= w[1]),
+                "{c:?}: sets unsorted"
+            );
+        }
+        assert_eq!(got, want.into_iter().collect::<Vec<_>>(), "{c:?}");
+        for (d, r) in t.decomps_of(code).chunks_exact(2).zip(&got) {
+            assert_eq!(d[1], expected_word1(c, r), "{c:?} {r:?}");
+        }
+        complete += usize::from(!got.is_empty());
+    }
+    // The sampler must really exercise complete suits.
+    assert!(
+        complete * 4 > samples.len(),
+        "only {complete} complete samples"
+    );
+}
+
+#[test]
+fn reference_completeness_statistics() {
+    let t = tables();
+    let complete = (0..SUIT_CODES)
+        .filter(|&c| !t.decomps_of(c).is_empty())
+        .count();
+    assert_eq!(complete, 21_743);
+
+    // The reference's tuple: (pair, run-start mask, triplet mask, identical-run pairs, outside,
+    // nine gates) is exactly (pair field, word 1), identical runs collapsing into one mask bit.
+    let mut by_distinct = BTreeMap::<usize, usize>::new();
+    for code in 0..SUIT_CODES {
+        let tuples: BTreeSet<(u32, u32)> = t
+            .decomps_of(code)
+            .chunks_exact(2)
+            .map(|d| (d[0] & 15, d[1]))
+            .collect();
+        *by_distinct.entry(tuples.len()).or_default() += 1;
+    }
+    let at_least_two: usize = by_distinct.range(2..).map(|(_, n)| n).sum();
+    assert_eq!(at_least_two, 1_568, "{by_distinct:?}");
+    assert_eq!(by_distinct.get(&4), Some(&16), "{by_distinct:?}");
+    assert_eq!(by_distinct.range(5..).count(), 0, "{by_distinct:?}");
+}
+
+fn d_row(words: [u32; 2]) -> [[u32; 5]; 2] {
+    [0, 1].map(|h| [0, 1, 2, 3, 4].map(|m| cost(words, m, h)))
+}
+
+fn suit(tiles: &str) -> [u8; 9] {
+    let mut c = [0u8; 9];
+    for b in tiles.bytes() {
+        c[usize::from(b - b'1')] += 1;
+    }
+    c
+}
+
+#[test]
+fn hand_checked_values() {
+    let t = tables();
+    let row = |c: &[u8; 9]| d_row(t.suit_cost_words(suit_code(c)));
+    assert_eq!(row(&[0; 9]), [[0, 3, 6, 9, 12], [2, 5, 8, 11, 14]]);
+    assert_eq!(row(&suit("1")), [[0, 2, 5, 8, 11], [1, 4, 7, 10, 13]]);
+    // Four 1s: a triplet and a pair of 1s would need five, so one of them is built elsewhere.
+    assert_eq!(row(&suit("1111")), [[0, 0, 2, 5, 8], [0, 2, 4, 7, 10]]);
+    assert_eq!(row(&suit("11123456789999"))[1][4], 0);
+    // 111 234 567 999 leaves 8 and 9 unused.
+    assert_eq!(row(&suit("11123456789999"))[0][4], 0);
+    assert_eq!(row(&suit("147"))[0], [0, 2, 4, 6, 9]);
+    assert_eq!(
+        d_row(t.honor_cost_words(0)),
+        [[0, 3, 6, 9, 12], [2, 5, 8, 11, 14]]
+    );
+    assert_eq!(
+        d_row(t.honor_cost_words(honor_code(&[4, 0, 0, 0, 0, 0, 0]))),
+        [[0, 0, 3, 6, 9], [0, 2, 5, 8, 11]]
+    );
+    assert_eq!(
+        d_row(t.honor_cost_words(honor_code(&[3, 3, 3, 3, 2, 0, 0])))[1][4],
+        0
+    );
+    assert_eq!(
+        d_row(t.honor_cost_words(honor_code(&[1, 1, 1, 1, 1, 1, 1])))[1][4],
+        8
+    );
+
+    assert_eq!(
+        suit_code(&suit("123")),
+        3 * 5usize.pow(6) + 5usize.pow(7) * 6
+    );
+    assert_eq!(suit_code(&suit("9")), 1);
+    assert_eq!(honor_code(&[1, 0, 0, 0, 0, 0, 0]), 5usize.pow(6));
+
+    let decomps = |s: &str| t.decomps_of(suit_code(&suit(s))).to_vec();
+    assert_eq!(decomps(""), [decomp::NO_PAIR, decomp::W1_OUTSIDE_BIT]);
+    assert_eq!(decomps("123"), [15 | 1 << 4, 1 | decomp::W1_OUTSIDE_BIT]);
+    assert_eq!(decomps("99"), [8, decomp::W1_OUTSIDE_BIT]);
+    assert_eq!(
+        decomps("111222333"),
+        [
+            15 | 3 << 4,
+            1 | 1 << 16 | decomp::W1_OUTSIDE_BIT,
+            15 | 3 << 4 | 7 << 8 | 8 << 12 | 9 << 16,
+            0b111 << 7,
+        ]
+    );
+    let gates = decomps("11123456789999");
+    assert!(!gates.is_empty());
+    assert!(gates
+        .chunks(2)
+        .all(|d| d[1] & decomp::W1_NINE_GATES_BIT != 0));
+    let not_gates = decomps("11122233344455");
+    assert!(!not_gates.is_empty());
+    assert!(not_gates
+        .chunks(2)
+        .all(|d| d[1] & decomp::W1_NINE_GATES_BIT == 0));
+    assert!(decomps("1112345678999").is_empty());
+    assert!(decomps("1").is_empty());
+}
+
+#[test]
+fn layout_and_exports() {
+    let t = tables();
+    assert_eq!(t.suit_cost, 0);
+    assert_eq!(t.honor_cost as usize, 2 * SUIT_CODES);
+    assert_eq!(t.decomp_index as usize, 2 * SUIT_CODES + 2 * HONOR_CODES);
+    assert_eq!(t.decomps as usize, t.decomp_index as usize + SUIT_CODES);
+    assert_eq!(t.words.len(), t.decomps as usize + 2 * t.n_decomps as usize);
+    assert_eq!(
+        t.kernel_consts(),
+        format!(
+            "const T_SUIT_COST: u32 = 0u32;\nconst T_HONOR_COST: u32 = {}u32;\n\
+             const T_DECOMP_INDEX: u32 = {}u32;\nconst T_DECOMPS: u32 = {}u32;\n",
+            t.honor_cost, t.decomp_index, t.decomps
+        )
+    );
+    let bytes = t.to_le_bytes();
+    assert_eq!(bytes.len(), 4 * t.words.len());
+    assert_eq!(
+        bytes[4 * t.decomps as usize..][..4],
+        t.words[t.decomps as usize].to_le_bytes()
+    );
+    // Every decomposition is reachable from exactly one index entry, in order.
+    let mut next = 0;
+    for code in 0..SUIT_CODES {
+        let e = t.words[t.decomp_index as usize + code];
+        if e & 15 != 0 {
+            assert_eq!(e >> 4, next, "code {code}");
+            next += e & 15;
+        }
+    }
+    assert_eq!(next, t.n_decomps);
+}
+
+#[test]
+fn region_hashes_are_pinned() {
+    let got = tables().region_hashes();
+    eprintln!("{got:#x?}");
+    assert_eq!(
+        got,
+        [
+            ("suit_cost", 0x6dff_ebe4_2941_9109),
+            ("honor_cost", 0x712c_9837_4b7b_1e38),
+            ("decomp_index", 0x3c6c_3388_ab75_fba0),
+            ("decomps", 0x473f_b73d_ba79_a3b0),
+        ]
+    );
+}
