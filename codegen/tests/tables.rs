@@ -408,14 +408,15 @@ fn hand_checked_values() {
         d_row(t.honor_cost_words(honor_code(&[3, 3, 3, 3, 2, 0, 0])))[1][4],
         0
     );
+    // Four singles grow into triplets (2 each) and a fifth into the pair (1).
     assert_eq!(
         d_row(t.honor_cost_words(honor_code(&[1, 1, 1, 1, 1, 1, 1])))[1][4],
-        8
+        9
     );
 
     assert_eq!(
         suit_code(&suit("123")),
-        3 * 5usize.pow(6) + 5usize.pow(7) * 6
+        5usize.pow(8) + 5usize.pow(7) + 5usize.pow(6)
     );
     assert_eq!(suit_code(&suit("9")), 1);
     assert_eq!(honor_code(&[1, 0, 0, 0, 0, 0, 0]), 5usize.pow(6));
