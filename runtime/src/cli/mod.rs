@@ -1,0 +1,51 @@
+//! Command-line front end. Each subcommand lives in its own module.
+
+mod bench;
+mod score;
+mod shanten;
+
+use clap::{Parser, Subcommand};
+
+/// A failed command: what to tell the user and the exit code (2 = bad input, 1 = other failure).
+pub struct CliError {
+    pub message: String,
+    pub code: u8,
+}
+
+impl CliError {
+    pub fn input(message: impl std::fmt::Display) -> CliError {
+        CliError { message: message.to_string(), code: 2 }
+    }
+
+    pub fn failure(message: impl std::fmt::Display) -> CliError {
+        CliError { message: message.to_string(), code: 1 }
+    }
+}
+
+#[derive(Parser)]
+#[command(name = "rinshan", version, about = "Vectorized Riichi Mahjong whose rules are data: hand calculator and benchmarks")]
+pub struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Shanten of a concealed hand (-1 = complete), e.g. `rinshan shanten 123m456p789s1122z`
+    Shanten(shanten::Args),
+    /// Score a winning hand, e.g. `rinshan score 234567m234p4566s --win 6s --tsumo`
+    Score(score::Args),
+    /// Benchmarks
+    Bench {
+        #[command(subcommand)]
+        what: bench::What,
+    },
+}
+
+pub fn run(cli: Cli) -> Result<(), CliError> {
+    match cli.command {
+        Command::Shanten(a) => shanten::run(a),
+        Command::Score(a) => score::run(a),
+        Command::Bench { what } => bench::run(what),
+    }
+}

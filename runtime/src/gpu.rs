@@ -1,0 +1,235 @@
+//! The GPU backend: the WGSL that `rinshan-shaders-gen` translated from `rules/kernel/` at build
+//! time, run through wgpu (Vulkan, Metal, DX12 or GL; Mesa's software Vulkan driver without a GPU).
+//! Inputs and outputs are the same raw kernel words as the CPU batch functions in [`crate::hand`],
+//! so parity is a comparison of words.
+
+use std::collections::HashMap;
+use std::sync::mpsc;
+
+use wgpu::util::DeviceExt;
+
+use crate::hand::{SCORE_IN_WORDS, SCORE_OUT_WORDS, SHANTEN_IN_WORDS, SHANTEN_OUT_WORDS};
+use crate::{tables, with_variant, Variant};
+
+const WORKGROUP: usize = 64;
+const MAX_GROUPS: usize = 65_535;
+
+/// What went wrong while bringing up or using the GPU.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum GpuError {
+    /// No adapter: no GPU and no software driver (install Mesa's `mesa-vulkan-drivers`).
+    NoAdapter(String),
+    Device(String),
+    Readback(String),
+    BadInput(String),
+}
+
+impl std::fmt::Display for GpuError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            GpuError::NoAdapter(m) => write!(f, "no GPU adapter found ({m}); on a machine without a GPU install Mesa's software Vulkan driver: apt-get install -y mesa-vulkan-drivers libvulkan1"),
+            GpuError::Device(m) => write!(f, "GPU device error: {m}"),
+            GpuError::Readback(m) => write!(f, "GPU readback failed: {m}"),
+            GpuError::BadInput(m) => write!(f, "bad GPU input: {m}"),
+        }
+    }
+}
+
+impl std::error::Error for GpuError {}
+
+/// A kernel entry point of the generated WGSL.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Kernel {
+    Shanten,
+    Score,
+}
+
+impl Kernel {
+    fn entry(self) -> &'static str {
+        match self {
+            Kernel::Shanten => "shanten_main",
+            Kernel::Score => "score_main",
+        }
+    }
+
+    fn words(self) -> (usize, usize) {
+        match self {
+            Kernel::Shanten => (SHANTEN_IN_WORDS, SHANTEN_OUT_WORDS),
+            Kernel::Score => (SCORE_IN_WORDS, SCORE_OUT_WORDS),
+        }
+    }
+
+    /// The entry's input/output bindings: the translator gives the k-th entry 1+2k and 2+2k.
+    fn bindings(self) -> (u32, u32) {
+        match self {
+            Kernel::Shanten => (1, 2),
+            Kernel::Score => (3, 4),
+        }
+    }
+}
+
+/// A GPU device with the tables uploaded once and one pipeline per (variant, kernel), made on first use.
+pub struct Gpu {
+    device: wgpu::Device,
+    queue: wgpu::Queue,
+    info: wgpu::AdapterInfo,
+    tables: wgpu::Buffer,
+    pipelines: HashMap<(Variant, Kernel), (wgpu::ComputePipeline, wgpu::BindGroupLayout)>,
+}
+
+impl Gpu {
+    /// Opens the first adapter wgpu offers (a real GPU first, else a software one).
+    pub fn new() -> Result<Gpu, GpuError> {
+        let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
+        desc.backends = wgpu::Backends::from_env().unwrap_or(wgpu::Backends::all());
+        let instance = wgpu::Instance::new(desc);
+        let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
+            power_preference: wgpu::PowerPreference::HighPerformance,
+            force_fallback_adapter: false,
+            compatible_surface: None,
+        }))
+        .map_err(|e| GpuError::NoAdapter(e.to_string()))?;
+        let info = adapter.get_info();
+        let mut limits = wgpu::Limits::default();
+        let available = adapter.limits();
+        limits.max_storage_buffer_binding_size = available.max_storage_buffer_binding_size;
+        limits.max_buffer_size = available.max_buffer_size;
+        limits.max_storage_buffers_per_shader_stage = available.max_storage_buffers_per_shader_stage.max(limits.max_storage_buffers_per_shader_stage);
+        let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
+            label: Some("rinshan"),
+            required_limits: limits,
+            ..Default::default()
+        }))
+        .map_err(|e| GpuError::Device(e.to_string()))?;
+        let tables = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("rinshan tables"),
+            contents: tables::bytes(),
+            usage: wgpu::BufferUsages::STORAGE,
+        });
+        Ok(Gpu { device, queue, info, tables, pipelines: HashMap::new() })
+    }
+
+    /// The adapter's name and backend, e.g. `llvmpipe (LLVM 15.0.6, 256 bits) (Vulkan)`.
+    pub fn adapter(&self) -> String {
+        format!("{} ({:?}, {:?})", self.info.name, self.info.backend, self.info.device_type)
+    }
+
+    fn pipeline(&mut self, variant: Variant, kernel: Kernel) -> &(wgpu::ComputePipeline, wgpu::BindGroupLayout) {
+        let device = &self.device;
+        self.pipelines.entry((variant, kernel)).or_insert_with(|| {
+            let source = with_variant!(variant, v => v::WGSL);
+            let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+                label: Some(variant.name()),
+                source: wgpu::ShaderSource::Wgsl(source.into()),
+            });
+            let storage = |binding: u32, read_only: bool| wgpu::BindGroupLayoutEntry {
+                binding,
+                visibility: wgpu::ShaderStages::COMPUTE,
+                ty: wgpu::BindingType::Buffer {
+                    ty: wgpu::BufferBindingType::Storage { read_only },
+                    has_dynamic_offset: false,
+                    min_binding_size: None,
+                },
+                count: None,
+            };
+            let (input, output) = kernel.bindings();
+            let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+                label: Some(kernel.entry()),
+                entries: &[storage(0, true), storage(input, true), storage(output, false)],
+            });
+            let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+                label: Some(kernel.entry()),
+                bind_group_layouts: &[Some(&layout)],
+                immediate_size: 0,
+            });
+            let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+                label: Some(kernel.entry()),
+                layout: Some(&pipeline_layout),
+                module: &module,
+                entry_point: Some(kernel.entry()),
+                compilation_options: Default::default(),
+                cache: None,
+            });
+            (pipeline, layout)
+        })
+    }
+
+    /// Runs `kernel` of `variant` over `inputs` (whole records of raw words) and reads back the outputs.
+    pub fn run(&mut self, variant: Variant, kernel: Kernel, inputs: &[u32]) -> Result<Vec<u32>, GpuError> {
+        let (in_words, out_words) = kernel.words();
+        if inputs.len() % in_words != 0 {
+            return Err(GpuError::BadInput(format!("{} words is not a whole number of {in_words}-word records", inputs.len())));
+        }
+        let n = inputs.len() / in_words;
+        let mut outputs = Vec::with_capacity(n * out_words);
+        // One dispatch covers at most MAX_GROUPS workgroups; bigger batches go in chunks.
+        for chunk in inputs.chunks(in_words * WORKGROUP * MAX_GROUPS) {
+            outputs.extend(self.run_chunk(variant, kernel, chunk)?);
+        }
+        Ok(outputs)
+    }
+
+    fn run_chunk(&mut self, variant: Variant, kernel: Kernel, inputs: &[u32]) -> Result<Vec<u32>, GpuError> {
+        let (in_words, out_words) = kernel.words();
+        let n = inputs.len() / in_words;
+        if n == 0 {
+            return Ok(Vec::new());
+        }
+        let out_bytes = (n * out_words * 4) as u64;
+        let (input, output) = kernel.bindings();
+        let input_buffer = self.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("rinshan input"),
+            contents: bytemuck::cast_slice(inputs),
+            usage: wgpu::BufferUsages::STORAGE,
+        });
+        let output_buffer = self.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("rinshan output"),
+            size: out_bytes,
+            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
+            mapped_at_creation: false,
+        });
+        let readback = self.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("rinshan readback"),
+            size: out_bytes,
+            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let tables = self.tables.clone();
+        let (pipeline, layout) = self.pipeline(variant, kernel).clone();
+        let bind_group = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("rinshan bindings"),
+            layout: &layout,
+            entries: &[
+                wgpu::BindGroupEntry { binding: 0, resource: tables.as_entire_binding() },
+                wgpu::BindGroupEntry { binding: input, resource: input_buffer.as_entire_binding() },
+                wgpu::BindGroupEntry { binding: output, resource: output_buffer.as_entire_binding() },
+            ],
+        });
+        let mut encoder = self.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("rinshan") });
+        {
+            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some(kernel.entry()), timestamp_writes: None });
+            pass.set_pipeline(&pipeline);
+            pass.set_bind_group(0, &bind_group, &[]);
+            pass.dispatch_workgroups(n.div_ceil(WORKGROUP) as u32, 1, 1);
+        }
+        encoder.copy_buffer_to_buffer(&output_buffer, 0, &readback, 0, out_bytes);
+        self.queue.submit([encoder.finish()]);
+        let (tx, rx) = mpsc::channel();
+        readback.map_async(wgpu::MapMode::Read, .., move |r| {
+            let _ = tx.send(r);
+        });
+        self.device
+            .poll(wgpu::PollType::wait_indefinitely())
+            .map_err(|e| GpuError::Readback(e.to_string()))?;
+        match rx.recv() {
+            Ok(Ok(())) => {}
+            Ok(Err(e)) => return Err(GpuError::Readback(e.to_string())),
+            Err(e) => return Err(GpuError::Readback(e.to_string())),
+        }
+        let view = readback.get_mapped_range(..).map_err(|e| GpuError::Readback(format!("{e:?}")))?;
+        let words: Vec<u32> = bytemuck::cast_slice(&view).to_vec();
+        drop(view);
+        readback.unmap();
+        Ok(words)
+    }
+}

@@ -1,0 +1,311 @@
+//! Shanten and hand scoring on the CPU: the generated kernels, one hand at a time or a batch in
+//! parallel. Batches are kept as raw kernel words so the GPU backend takes exactly the same input.
+
+use rayon::prelude::*;
+
+use crate::notation::{Meld, MeldKind, Tile};
+use crate::{with_variant, Variant};
+
+/// Shanten of a concealed hand: the number of tiles away from tenpai (`-1` = complete).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Shanten {
+    pub shanten: i32,
+    pub normal: i32,
+    /// `None` when the hand has too few tiles for seven pairs (it has called melds).
+    pub chiitoitsu: Option<i32>,
+    pub kokushi: Option<i32>,
+}
+
+/// Words of one kernel input or output, per entry point (checked against the kernel's structs).
+pub const SHANTEN_IN_WORDS: usize = 34;
+pub const SHANTEN_OUT_WORDS: usize = 4;
+pub const SCORE_IN_WORDS: usize = 58;
+pub const SCORE_OUT_WORDS: usize = 15;
+
+const NOT_APPLICABLE: i32 = 99;
+
+fn check_sizes() {
+    with_variant!(Variant::ALL[0], v => {
+        debug_assert_eq!(std::mem::size_of::<v::ShantenInput>(), SHANTEN_IN_WORDS * 4);
+        debug_assert_eq!(std::mem::size_of::<v::ShantenOutput>(), SHANTEN_OUT_WORDS * 4);
+        debug_assert_eq!(std::mem::size_of::<v::ScoreInput>(), SCORE_IN_WORDS * 4);
+        debug_assert_eq!(std::mem::size_of::<v::ScoreOutput>(), SCORE_OUT_WORDS * 4);
+    })
+}
+
+/// Shanten input words for a concealed hand given as counts.
+pub fn shanten_input(counts: &[u8; 34]) -> [u32; SHANTEN_IN_WORDS] {
+    counts.map(u32::from)
+}
+
+/// Decodes one shanten output (4 words).
+pub fn decode_shanten(words: &[u32]) -> Shanten {
+    let get = |i: usize| words[i] as i32;
+    let opt = |x: i32| (x != NOT_APPLICABLE).then_some(x);
+    Shanten { shanten: get(0), normal: get(1), chiitoitsu: opt(get(2)), kokushi: opt(get(3)) }
+}
+
+/// Shanten of one hand of 1 to 14 concealed tiles (counts per type, each at most 4).
+pub fn shanten(counts: &[u8; 34]) -> Shanten {
+    let mut out = [0u32; SHANTEN_OUT_WORDS];
+    shanten_batch(Variant::ALL[0], &shanten_input(counts), &mut out);
+    decode_shanten(&out)
+}
+
+/// Runs the shanten kernel over `inputs` (SHANTEN_IN_WORDS each) into `outputs`, on the calling thread.
+pub fn shanten_batch(variant: Variant, inputs: &[u32], outputs: &mut [u32]) {
+    check_sizes();
+    with_variant!(variant, v => {
+        let ins: &[v::ShantenInput] = bytemuck::cast_slice(inputs);
+        let outs: &mut [v::ShantenOutput] = bytemuck::cast_slice_mut(outputs);
+        for (i, o) in ins.iter().zip(outs.iter_mut()) {
+            *o = v::shanten(*i);
+        }
+    })
+}
+
+/// As [`shanten_batch`], split over the current rayon pool.
+pub fn shanten_batch_par(variant: Variant, inputs: &[u32], outputs: &mut [u32]) {
+    with_variant!(variant, v => {
+        let ins: &[v::ShantenInput] = bytemuck::cast_slice(inputs);
+        let outs: &mut [v::ShantenOutput] = bytemuck::cast_slice_mut(outputs);
+        ins.par_iter().zip(outs.par_iter_mut()).with_min_len(256).for_each(|(i, o)| *o = v::shanten(*i));
+    })
+}
+
+/// The circumstances of a win.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct WinContext {
+    pub tsumo: bool,
+    pub riichi: bool,
+    pub double_riichi: bool,
+    pub ippatsu: bool,
+    pub haitei: bool,
+    pub houtei: bool,
+    pub rinshan: bool,
+    pub chankan: bool,
+    pub tenhou: bool,
+    pub chiihou: bool,
+    pub dealer: bool,
+    /// 0..3 = E S W N.
+    pub round_wind: u8,
+    pub seat_wind: u8,
+    /// Dora indicators (at most 5), tile types.
+    pub dora: Vec<Tile>,
+    /// Ura-dora indicators (at most 5), counted only with riichi.
+    pub ura: Vec<Tile>,
+    pub honba: u32,
+    /// Riichi sticks on the table, collected by the winner.
+    pub sticks: u32,
+}
+
+/// A winning hand to score.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Win {
+    /// Concealed tiles, the winning tile included.
+    pub hand: [u8; 34],
+    pub win: Tile,
+    pub melds: Vec<Meld>,
+    /// Red fives among all the winner's tiles, melds included.
+    pub aka: u8,
+    pub context: WinContext,
+}
+
+/// Why a hand could not be scored.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum ScoreError {
+    /// The input itself is inconsistent (tile counts, too many melds or indicators...).
+    BadInput(String),
+    /// The tiles do not form a winning hand.
+    NotComplete,
+    /// A complete hand without any yaku (dora are not yaku).
+    NoYaku,
+}
+
+impl std::fmt::Display for ScoreError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            ScoreError::BadInput(m) => write!(f, "invalid hand: {m}"),
+            ScoreError::NotComplete => f.write_str("not a winning hand: the tiles do not form four sets and a pair, seven pairs or thirteen orphans"),
+            ScoreError::NoYaku => f.write_str("the hand is complete but has no yaku (dora alone do not count)"),
+        }
+    }
+}
+
+impl std::error::Error for ScoreError {}
+
+/// One yaku of a scored hand: its spec name and han (for a yakuman, its weight).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Yaku {
+    pub name: &'static str,
+    pub han: u32,
+}
+
+/// Who pays what, in points, honba included and riichi sticks excluded.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Payment {
+    Ron { discarder: u32 },
+    /// `dealer` is `None` when the dealer is the winner (then all three pay `others`).
+    Tsumo { dealer: Option<u32>, others: u32 },
+}
+
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Score {
+    pub han: u32,
+    pub fu: u32,
+    /// Total yakuman weight (0 for an ordinary hand; kazoe yakuman is han >= 13 with 0 here).
+    pub yakuman: u32,
+    pub yaku: Vec<Yaku>,
+    pub base: u32,
+    pub payment: Payment,
+    /// The winner's total gain, riichi sticks included.
+    pub gain: u32,
+}
+
+fn bad(message: impl Into<String>) -> ScoreError {
+    ScoreError::BadInput(message.into())
+}
+
+fn meld_word(m: &Meld) -> u32 {
+    let kind = match m.kind {
+        MeldKind::Chi => 0,
+        MeldKind::Pon => 1,
+        MeldKind::Kan => 2,
+        MeldKind::Ankan => 3,
+        MeldKind::Kakan => 4,
+    };
+    kind | (u32::from(m.tile) << 4)
+}
+
+/// Checks a win for consistency and packs it into kernel input words.
+pub fn score_input(win: &Win) -> Result<[u32; SCORE_IN_WORDS], ScoreError> {
+    let c = &win.context;
+    if win.melds.len() > 4 {
+        return Err(bad(format!("{} melds: a hand has at most 4", win.melds.len())));
+    }
+    if c.dora.len() > 5 || c.ura.len() > 5 {
+        return Err(bad("at most 5 dora and 5 ura indicators"));
+    }
+    if c.round_wind > 3 || c.seat_wind > 3 {
+        return Err(bad("winds are 0..3 (E S W N)"));
+    }
+    if c.dealer != (c.seat_wind == 0) {
+        return Err(bad("the dealer's seat wind is East, and only the dealer's"));
+    }
+    if win.win >= 34 || win.hand[win.win as usize] == 0 {
+        return Err(bad("the winning tile must be among the concealed tiles"));
+    }
+    let mut all = win.hand;
+    for m in &win.melds {
+        for t in m.tiles() {
+            all[t as usize] += 1;
+        }
+    }
+    if let Some(t) = all.iter().position(|&n| n > 4) {
+        return Err(bad(format!("{} copies of {}: there are only 4", all[t], crate::notation::tile_name(t as u8))));
+    }
+    let concealed: usize = win.hand.iter().map(|&n| n as usize).sum();
+    if concealed + 3 * win.melds.len() != 14 {
+        return Err(bad(format!(
+            "{concealed} concealed tiles and {} melds: a winning hand has 14 - 3 x melds concealed tiles",
+            win.melds.len()
+        )));
+    }
+    let fives = all[4] + all[13] + all[22];
+    if win.aka > fives.min(3) {
+        return Err(bad(format!("{} red fives but only {fives} fives", win.aka)));
+    }
+    let flags = [c.tsumo, c.riichi, c.double_riichi, c.ippatsu, c.haitei, c.houtei, c.rinshan, c.chankan, c.tenhou, c.chiihou, c.dealer];
+    let mut w = [0u32; SCORE_IN_WORDS];
+    for t in 0..34 {
+        w[t] = u32::from(win.hand[t]);
+    }
+    w[34] = u32::from(win.win);
+    for (i, m) in win.melds.iter().enumerate() {
+        w[35 + i] = meld_word(m);
+    }
+    w[39] = win.melds.len() as u32;
+    w[40] = flags.iter().enumerate().fold(0, |acc, (i, &f)| acc | (u32::from(f) << i));
+    w[41] = u32::from(c.round_wind);
+    w[42] = u32::from(c.seat_wind);
+    for (i, &t) in c.dora.iter().enumerate() {
+        w[43 + i] = u32::from(t);
+    }
+    w[48] = c.dora.len() as u32;
+    for (i, &t) in c.ura.iter().enumerate() {
+        w[49 + i] = u32::from(t);
+    }
+    w[54] = c.ura.len() as u32;
+    w[55] = u32::from(win.aka);
+    w[56] = c.honba;
+    w[57] = c.sticks;
+    Ok(w)
+}
+
+/// Decodes one score output (SCORE_OUT_WORDS words) of `variant`.
+pub fn decode_score(variant: Variant, w: &[u32]) -> Result<Score, ScoreError> {
+    match w[0] {
+        0 => {}
+        1 => return Err(ScoreError::NotComplete),
+        2 => return Err(ScoreError::NoYaku),
+        _ => return Err(bad("rejected by the scoring kernel")),
+    }
+    let (han, fu, yakuman, lo, hi, dora, aka, ura, base) = (w[1], w[2], w[3], w[4], w[5], w[6], w[7], w[8], w[9]);
+    let concealed = w[14] != 0;
+    let mut yaku = Vec::new();
+    with_variant!(variant, v => {
+        for i in 0..v::YAKU_COUNT as usize {
+            let held = if i < 32 { lo >> i & 1 } else { hi >> (i - 32) & 1 };
+            if held == 1 {
+                let value = if v::YAKU_YAKUMAN[i] > 0 {
+                    if v::DOUBLE_YAKUMAN { v::YAKU_YAKUMAN[i] } else { 1 }
+                } else if concealed {
+                    v::YAKU_HAN_CLOSED[i]
+                } else {
+                    v::YAKU_HAN_OPEN[i]
+                };
+                yaku.push(Yaku { name: v::host::YAKU_NAMES[i], han: value });
+            }
+        }
+    });
+    for (name, n) in [("dora", dora), ("aka", aka), ("ura", ura)] {
+        if n > 0 {
+            yaku.push(Yaku { name, han: n });
+        }
+    }
+    let payment = if w[10] > 0 {
+        Payment::Ron { discarder: w[10] }
+    } else {
+        Payment::Tsumo { dealer: (w[11] > 0).then_some(w[11]), others: w[12] }
+    };
+    Ok(Score { han, fu, yakuman, yaku, base, payment, gain: w[13] })
+}
+
+/// Runs the scoring kernel over `inputs` (SCORE_IN_WORDS each) into `outputs`, on the calling thread.
+pub fn score_batch(variant: Variant, inputs: &[u32], outputs: &mut [u32]) {
+    check_sizes();
+    with_variant!(variant, v => {
+        let ins: &[v::ScoreInput] = bytemuck::cast_slice(inputs);
+        let outs: &mut [v::ScoreOutput] = bytemuck::cast_slice_mut(outputs);
+        for (i, o) in ins.iter().zip(outs.iter_mut()) {
+            *o = v::score_hand(*i);
+        }
+    })
+}
+
+/// As [`score_batch`], split over the current rayon pool.
+pub fn score_batch_par(variant: Variant, inputs: &[u32], outputs: &mut [u32]) {
+    with_variant!(variant, v => {
+        let ins: &[v::ScoreInput] = bytemuck::cast_slice(inputs);
+        let outs: &mut [v::ScoreOutput] = bytemuck::cast_slice_mut(outputs);
+        ins.par_iter().zip(outs.par_iter_mut()).with_min_len(64).for_each(|(i, o)| *o = v::score_hand(*i));
+    })
+}
+
+/// Scores one winning hand under `variant`'s rules.
+pub fn score(variant: Variant, win: &Win) -> Result<Score, ScoreError> {
+    let input = score_input(win)?;
+    let mut out = [0u32; SCORE_OUT_WORDS];
+    score_batch(variant, &input, &mut out);
+    decode_score(variant, &out)
+}
