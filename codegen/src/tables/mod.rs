@@ -10,7 +10,7 @@
 //! | `decomp_index` | 1 per suit code | `(first << 4) \| count` into `decomps` |
 //! | `decomps` | 2 per decomposition | word 0: pair and sets; word 1: yaku bits (see [`decomp`]) |
 //!
-//! D is exact (see [`cost`]), so per-suit costs can be combined exactly by the shanten kernel.
+//! D is exact (see the `cost` module), so per-suit costs can be combined exactly by the shanten kernel.
 
 mod code;
 mod cost;
@@ -131,7 +131,7 @@ impl Tables {
 }
 
 /// D(m, h) out of a pair of cost words.
-pub fn cost(words: [u32; 2], m: usize, h: usize) -> u32 {
+pub fn cost_d(words: [u32; 2], m: usize, h: usize) -> u32 {
     words[h] >> (cost::D_BITS * m) & 0xf
 }
 
