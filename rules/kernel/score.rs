@@ -79,6 +79,8 @@ pub struct ScoreOutput {
     pub others_pay: u32,
     // The winner's whole gain, riichi sticks included.
     pub gain: u32,
+    // 1 when no meld was called (closed kans allowed): selects the closed han of each yaku.
+    pub concealed: u32,
 }
 
 // What does not depend on the reading.
@@ -130,6 +132,7 @@ fn empty_output(status: u32) -> ScoreOutput {
         dealer_pays: 0u32,
         others_pay: 0u32,
         gain: 0u32,
+        concealed: 0u32,
     }
 }
 
@@ -406,7 +409,7 @@ fn has_yaku(lo: u32, hi: u32, i: u32) -> bool {
     ((hi >> (i - 32u32)) & 1u32) != 0u32
 }
 
-fn dora_count(inp: ScoreInput, h: HandInfo, indicators: [u32; 5], n: u32) -> u32 {
+fn dora_count(h: HandInfo, indicators: [u32; 5], n: u32) -> u32 {
     let mut count: u32 = 0u32;
     for i in 0u32..n {
         count += h.full[dora_of(indicators[i as usize]) as usize];
@@ -497,9 +500,9 @@ fn judge(inp: ScoreInput, h: HandInfo, f: Features, fu: u32, fixed_fu: u32) -> J
         j.base = base_points(0u32, 0u32, yakuman);
         return j;
     }
-    j.dora = dora_count(inp, h, inp.dora, inp.n_dora);
+    j.dora = dora_count(h, inp.dora, inp.n_dora);
     if f.riichi {
-        j.ura = dora_count(inp, h, inp.ura, inp.n_ura);
+        j.ura = dora_count(h, inp.ura, inp.n_ura);
     }
     if RED_FIVES {
         j.aka = inp.aka;
@@ -811,6 +814,7 @@ pub fn score_hand(inp: ScoreInput) -> ScoreOutput {
     out.aka = best.aka;
     out.ura = best.ura;
     out.base = best.base;
+    out.concealed = h.concealed as u32;
     let dealer: bool = flag(inp, FLAG_DEALER);
     let sticks: u32 = inp.sticks * RIICHI_STICK_POINTS;
     if flag(inp, FLAG_TSUMO) {
