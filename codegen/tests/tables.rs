@@ -5,9 +5,7 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::sync::OnceLock;
 use std::time::Instant;
 
-use rinshan_codegen::tables::{
-    self, cost_d, decomp, honor_code, suit_code, Tables, HONOR_CODES, SUIT_CODES,
-};
+use rinshan_codegen::tables::{self, cost_d, decomp, honor_code, suit_code, Tables, HONOR_CODES, SUIT_CODES};
 
 fn tables() -> &'static Tables {
     static T: OnceLock<Tables> = OnceLock::new();
@@ -155,12 +153,7 @@ fn honor_shapes() -> Vec<[u8; 7]> {
 fn brute_d<const N: usize>(targets: &[[u8; N]], c: &[u8; N]) -> u32 {
     targets
         .iter()
-        .map(|t| {
-            t.iter()
-                .zip(c)
-                .map(|(&t, &c)| u32::from(t.saturating_sub(c)))
-                .sum()
-        })
+        .map(|t| t.iter().zip(c).map(|(&t, &c)| u32::from(t.saturating_sub(c))).sum())
         .min()
         .expect("no targets")
 }
@@ -188,14 +181,8 @@ fn suit_costs_match_brute_force() {
     let mut rng = Rng(1);
     let mut samples = sample_suits(&mut rng, SAMPLES);
     // Every suit of at most 3 tiles too: the small cases are where off-by-ones hide.
-    samples.extend(
-        (0..SUIT_CODES)
-            .map(decode::<9>)
-            .filter(|c| c.iter().sum::<u8>() <= 3),
-    );
-    check_costs(&suit_shapes(), &samples, suit_code, |c| {
-        t.suit_cost_words(c)
-    });
+    samples.extend((0..SUIT_CODES).map(decode::<9>).filter(|c| c.iter().sum::<u8>() <= 3));
+    check_costs(&suit_shapes(), &samples, suit_code, |c| t.suit_cost_words(c));
 }
 
 #[test]
@@ -217,9 +204,7 @@ fn honor_costs_match_brute_force() {
             }
         })
         .collect();
-    check_costs(&honor_shapes(), &samples, honor_code, |c| {
-        t.honor_cost_words(c)
-    });
+    check_costs(&honor_shapes(), &samples, honor_code, |c| t.honor_cost_words(c));
 }
 
 #[test]
@@ -296,17 +281,12 @@ fn expected_word1(c: &[u8; 9], (pair, sets): &Reading) -> u32 {
     }
     w |= mult.iter().map(|m| m / 2).sum::<u32>() << 16;
     let end = |p: u8| p == 0 || p == 8;
-    let outside = sets
-        .iter()
-        .all(|&v| if v < 7 { v == 0 || v == 6 } else { end(v - 7) })
-        && pair.is_none_or(end);
+    let outside = sets.iter().all(|&v| if v < 7 { v == 0 || v == 6 } else { end(v - 7) }) && pair.is_none_or(end);
     if outside {
         w |= 1 << 18;
     }
     let floor = [3, 1, 1, 1, 1, 1, 1, 1, 3];
-    if c.iter().map(|&x| u32::from(x)).sum::<u32>() == 14
-        && c.iter().zip(floor).all(|(&x, f)| x >= f)
-    {
+    if c.iter().map(|&x| u32::from(x)).sum::<u32>() == 14 && c.iter().zip(floor).all(|(&x, f)| x >= f) {
         w |= 1 << 19;
     }
     w
@@ -324,15 +304,9 @@ fn decompositions_match_brute_force_splitter() {
         split(&mut c.clone(), None, &mut Vec::new(), &mut want);
         let got = table_readings(t, code);
         // Strictly increasing means sorted and free of duplicates.
-        assert!(
-            got.windows(2).all(|w| w[0] < w[1]),
-            "{c:?}: {got:?} not sorted"
-        );
+        assert!(got.windows(2).all(|w| w[0] < w[1]), "{c:?}: {got:?} not sorted");
         for (_, sets) in &got {
-            assert!(
-                sets.windows(2).all(|w| w[0] <= w[1]),
-                "{c:?}: sets unsorted"
-            );
+            assert!(sets.windows(2).all(|w| w[0] <= w[1]), "{c:?}: sets unsorted");
         }
         assert_eq!(got, want.into_iter().collect::<Vec<_>>(), "{c:?}");
         for (d, r) in t.decomps_of(code).chunks_exact(2).zip(&got) {
@@ -341,29 +315,20 @@ fn decompositions_match_brute_force_splitter() {
         complete += usize::from(!got.is_empty());
     }
     // The sampler must really exercise complete suits.
-    assert!(
-        complete * 4 > samples.len(),
-        "only {complete} complete samples"
-    );
+    assert!(complete * 4 > samples.len(), "only {complete} complete samples");
 }
 
 #[test]
 fn reference_completeness_statistics() {
     let t = tables();
-    let complete = (0..SUIT_CODES)
-        .filter(|&c| !t.decomps_of(c).is_empty())
-        .count();
+    let complete = (0..SUIT_CODES).filter(|&c| !t.decomps_of(c).is_empty()).count();
     assert_eq!(complete, 21_743);
 
     // The reference's tuple: (pair, run-start mask, triplet mask, identical-run pairs, outside,
     // nine gates) is exactly (pair field, word 1), identical runs collapsing into one mask bit.
     let mut by_distinct = BTreeMap::<usize, usize>::new();
     for code in 0..SUIT_CODES {
-        let tuples: BTreeSet<(u32, u32)> = t
-            .decomps_of(code)
-            .chunks_exact(2)
-            .map(|d| (d[0] & 15, d[1]))
-            .collect();
+        let tuples: BTreeSet<(u32, u32)> = t.decomps_of(code).chunks_exact(2).map(|d| (d[0] & 15, d[1])).collect();
         *by_distinct.entry(tuples.len()).or_default() += 1;
     }
     let at_least_two: usize = by_distinct.range(2..).map(|(_, n)| n).sum();
@@ -396,28 +361,16 @@ fn hand_checked_values() {
     // 111 234 567 999 leaves 8 and 9 unused.
     assert_eq!(row(&suit("11123456789999"))[0][4], 0);
     assert_eq!(row(&suit("147"))[0], [0, 2, 4, 6, 9]);
-    assert_eq!(
-        d_row(t.honor_cost_words(0)),
-        [[0, 3, 6, 9, 12], [2, 5, 8, 11, 14]]
-    );
+    assert_eq!(d_row(t.honor_cost_words(0)), [[0, 3, 6, 9, 12], [2, 5, 8, 11, 14]]);
     assert_eq!(
         d_row(t.honor_cost_words(honor_code(&[4, 0, 0, 0, 0, 0, 0]))),
         [[0, 0, 3, 6, 9], [0, 2, 5, 8, 11]]
     );
-    assert_eq!(
-        d_row(t.honor_cost_words(honor_code(&[3, 3, 3, 3, 2, 0, 0])))[1][4],
-        0
-    );
+    assert_eq!(d_row(t.honor_cost_words(honor_code(&[3, 3, 3, 3, 2, 0, 0])))[1][4], 0);
     // Four singles grow into triplets (2 each) and a fifth into the pair (1).
-    assert_eq!(
-        d_row(t.honor_cost_words(honor_code(&[1, 1, 1, 1, 1, 1, 1])))[1][4],
-        9
-    );
+    assert_eq!(d_row(t.honor_cost_words(honor_code(&[1, 1, 1, 1, 1, 1, 1])))[1][4], 9);
 
-    assert_eq!(
-        suit_code(&suit("123")),
-        5usize.pow(8) + 5usize.pow(7) + 5usize.pow(6)
-    );
+    assert_eq!(suit_code(&suit("123")), 5usize.pow(8) + 5usize.pow(7) + 5usize.pow(6));
     assert_eq!(suit_code(&suit("9")), 1);
     assert_eq!(honor_code(&[1, 0, 0, 0, 0, 0, 0]), 5usize.pow(6));
 
@@ -436,14 +389,10 @@ fn hand_checked_values() {
     );
     let gates = decomps("11123456789999");
     assert!(!gates.is_empty());
-    assert!(gates
-        .chunks(2)
-        .all(|d| d[1] & decomp::W1_NINE_GATES_BIT != 0));
+    assert!(gates.chunks(2).all(|d| d[1] & decomp::W1_NINE_GATES_BIT != 0));
     let not_gates = decomps("11122233344455");
     assert!(!not_gates.is_empty());
-    assert!(not_gates
-        .chunks(2)
-        .all(|d| d[1] & decomp::W1_NINE_GATES_BIT == 0));
+    assert!(not_gates.chunks(2).all(|d| d[1] & decomp::W1_NINE_GATES_BIT == 0));
     assert!(decomps("1112345678999").is_empty());
     assert!(decomps("1").is_empty());
 }

@@ -122,12 +122,7 @@ fn max_up(a: &mut [u8], stride: usize) {
 /// Calls `f` on every target: a multiset of `m` shapes from `sets` plus `h` pairs, counts <= 4.
 /// Each multiset is visited once (shapes in non-decreasing index order); counts only grow along
 /// the recursion, so a branch is cut as soon as one exceeds 4.
-pub(crate) fn for_each_target<const N: usize>(
-    sets: &[[u8; N]],
-    m: usize,
-    h: usize,
-    f: &mut impl FnMut(&[u8; N]),
-) {
+pub(crate) fn for_each_target<const N: usize>(sets: &[[u8; N]], m: usize, h: usize, f: &mut impl FnMut(&[u8; N])) {
     fn rec<const N: usize>(
         sets: &[[u8; N]],
         start: usize,

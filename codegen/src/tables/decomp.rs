@@ -2,9 +2,10 @@
 //!
 //! A decomposition splits all tiles of a suit into sets (runs, triplets) plus at most one pair.
 //! Rather than splitting each of the 1.95M codes, we enumerate every multiset of at most four sets
-//! with an optional pair (about 48k candidates) and file each under the code it adds up to: a code
-//! with no entry has no decomposition. Keeping all of them (not a fixed few per code) is what lets
-//! hand evaluation pick the best reading.
+//! with an optional pair whose counts stay <= 4 (23,533 of them) and file each under the code it
+//! adds up to: a code with no entry has no decomposition. Keeping all of them (not a fixed few per
+//! code) is what lets hand evaluation pick the best reading. Within a code they are sorted by pair
+//! position, then by the ascending list of set values, so the tables are the same on every build.
 
 use super::code::encode;
 use super::cost::MAX_SETS;
@@ -47,9 +48,7 @@ impl Decomp {
         let mut c = [0u8; 9];
         for &v in self.sets() {
             if u32::from(v) < RUN_KINDS {
-                c[usize::from(v)..usize::from(v) + 3]
-                    .iter_mut()
-                    .for_each(|x| *x += 1);
+                c[usize::from(v)..usize::from(v) + 3].iter_mut().for_each(|x| *x += 1);
             } else {
                 c[usize::from(v) - RUN_KINDS as usize] += 3;
             }
@@ -62,9 +61,11 @@ impl Decomp {
 
     pub(crate) fn word0(&self) -> u32 {
         let pair = self.pair.map_or(NO_PAIR, u32::from);
-        let sets = self.sets().iter().enumerate().fold(0, |w, (k, &v)| {
-            w | u32::from(v) << (W0_SETS_SHIFT + 4 * k as u32)
-        });
+        let sets = self
+            .sets()
+            .iter()
+            .enumerate()
+            .fold(0, |w, (k, &v)| w | u32::from(v) << (W0_SETS_SHIFT + 4 * k as u32));
         pair | u32::from(self.n_sets) << W0_NSETS_SHIFT | sets
     }
 

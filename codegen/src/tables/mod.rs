@@ -53,10 +53,7 @@ pub fn build() -> Tables {
     while first < n_decomps {
         let code = decomps[first].0;
         let count = decomps[first..].iter().take_while(|d| d.0 == code).count();
-        assert!(
-            count < 1 << INDEX_COUNT_BITS,
-            "code {code}: {count} decompositions"
-        );
+        assert!(count < 1 << INDEX_COUNT_BITS, "code {code}: {count} decompositions");
         index[code] = (first as u32) << INDEX_COUNT_BITS | count as u32;
         first += count;
     }
