@@ -2,9 +2,90 @@
 //!
 //! Stages, each in its own module (the way naga splits front end, IR, validator and back ends):
 //! * `diag`     — errors with file:line:col
-//! * `model`    — the typed spec model (serde)
-//! * `expr`     — the yaku condition language: parser and type checker
-//! * `check`    — semantic checks over the model (unknown features, duplicates, supersedes cycles, ranges)
+//! * `model`    — the spec files as written (serde, with spans)
+//! * `expr`     — the yaku condition language: parser, type checker, interpreter
+//! * `check`    — semantic checks over the model (unknown features, duplicates, supersedes cycles,
+//!   ranges, action layout), producing the checked `spec`
+//! * `spec`     — the checked spec the emitters read
 //! * `emit_rust`— kernel-subset Rust (variant consts, yaku table, yaku conditions) and host-only metadata
 //! * `tables`   — per-suit base-5 tables (shanten costs, decompositions) built from first principles
+pub mod check;
+pub mod diag;
+pub mod emit_rust;
+pub mod expr;
+pub mod model;
+pub mod spec;
 pub mod tables;
+
+pub use diag::Diagnostic;
+pub use emit_rust::{generate, Generated};
+pub use spec::Spec;
+
+use std::path::Path;
+
+fn read(path: &Path) -> Result<String, Diagnostic> {
+    std::fs::read_to_string(path).map_err(|e| Diagnostic {
+        file: path.display().to_string(),
+        line: 1,
+        column: 1,
+        message: format!("cannot read the file: {e}"),
+    })
+}
+
+/// Load, parse and check `rules/variants/<variant>.toml` + `rules/yaku.toml` +
+/// `rules/kernel/features.rs` under `rules_dir`.
+pub fn load(rules_dir: &Path, variant: &str) -> Result<Spec, Vec<Diagnostic>> {
+    let paths = [
+        rules_dir.join("variants").join(format!("{variant}.toml")),
+        rules_dir.join("yaku.toml"),
+        rules_dir.join("kernel").join("features.rs"),
+    ];
+    let mut texts = Vec::new();
+    let mut errors = Vec::new();
+    for p in &paths {
+        match read(p) {
+            Ok(t) => texts.push(t),
+            Err(e) => errors.push(e),
+        }
+    }
+    if !errors.is_empty() {
+        if paths[0].exists() {
+            return Err(errors);
+        }
+        let known = variant_names(rules_dir);
+        errors[0].message = format!(
+            "no variant `{variant}` (no file {}); the variants are: {}",
+            paths[0].display(),
+            known.join(", ")
+        );
+        return Err(errors);
+    }
+    let names: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
+    load_sources((&names[0], &texts[0]), (&names[1], &texts[1]), (&names[2], &texts[2]))
+}
+
+/// Same as [`load`] from in-memory sources, as (path used in diagnostics, text) pairs. The variant
+/// name in the file must equal the variant path's file stem.
+pub fn load_sources(
+    variant: (&str, &str),
+    yaku: (&str, &str),
+    features: (&str, &str),
+) -> Result<Spec, Vec<Diagnostic>> {
+    let features = check::parse_features(features.0, features.1)?;
+    check::check(variant, yaku, features)
+}
+
+/// File stems of `rules_dir/variants/*.toml`, sorted; empty if the folder cannot be read.
+pub fn variant_names(rules_dir: &Path) -> Vec<String> {
+    let Ok(dir) = std::fs::read_dir(rules_dir.join("variants")) else {
+        return Vec::new();
+    };
+    let mut names: Vec<String> = dir
+        .filter_map(Result::ok)
+        .map(|e| e.path())
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .filter_map(|p| p.file_stem().and_then(|s| s.to_str()).map(String::from))
+        .collect();
+    names.sort();
+    names
+}
