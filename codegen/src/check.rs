@@ -357,6 +357,7 @@ fn check_actions(
 ) -> (Vec<ActionBlock>, u32) {
     let mut blocks: Vec<ActionBlock> = Vec::new();
     let mut next = 0u32;
+    let errors_before = c.errors.len();
     for block in a.layout.get_ref() {
         let block = block.get_ref();
         let kind = block.kind.get_ref();
@@ -433,6 +434,10 @@ fn check_actions(
             count,
         });
         next = next.saturating_add(count);
+    }
+    // A bad block already explains why kinds or ids are missing; don't pile consequences on it.
+    if c.errors.len() > errors_before {
+        return (blocks, next);
     }
     for info in &ACTION_KINDS {
         let needed = match info.need {

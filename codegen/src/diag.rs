@@ -73,7 +73,16 @@ impl<'a> Source<'a> {
     /// Maps a toml/serde error (which carries a byte span into this file) to a diagnostic.
     pub fn toml_error(&self, err: &toml::de::Error) -> Diagnostic {
         let offset = err.span().map_or(0, |s| s.start);
-        let message = err.message().trim_end().replace('\n', " ");
+        let mut message = err.message().trim_end().replace('\n', " ");
+        // serde names Rust types; the spec author thinks in toml types.
+        for (rust, toml) in [
+            ("expected i64", "expected an integer"),
+            ("expected i32", "expected an integer"),
+            ("expected u32", "expected a non-negative integer"),
+            ("expected f64", "expected a number"),
+        ] {
+            message = message.replace(rust, toml);
+        }
         self.error_at(offset, message)
     }
 }
@@ -115,14 +124,14 @@ pub(crate) fn suggest<'c>(word: &str, candidates: impl IntoIterator<Item = &'c s
         .collect()
 }
 
-/// " did you mean `x`?" or "" — appended to messages about unknown names.
+/// " (did you mean `x`?)" or "" — appended to messages about unknown names.
 pub(crate) fn did_you_mean<'c>(word: &str, candidates: impl IntoIterator<Item = &'c str>) -> String {
     let found = suggest(word, candidates);
     if found.is_empty() {
         return String::new();
     }
     let list: Vec<String> = found.iter().map(|c| format!("`{c}`")).collect();
-    format!("; did you mean {}?", list.join(" or "))
+    format!(" (did you mean {}?)", list.join(" or "))
 }
 
 #[cfg(test)]

@@ -26,6 +26,15 @@ pub enum Type {
     Int,
 }
 
+impl Type {
+    fn plural(self) -> &'static str {
+        match self {
+            Type::Bool => "bool",
+            Type::Int => "integer",
+        }
+    }
+}
+
 impl fmt::Display for Type {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(match self {
@@ -483,7 +492,7 @@ fn type_of(expr: &Expr, src: &str, scope: &Scope) -> Result<Type, ExprError> {
                 };
                 err(
                     side.span().start,
-                    format!("`{sym}` needs {want} operands, but `{t}` is {got}; {fix}"),
+                    format!("`{sym}` needs {} operands, but `{t}` is {got}; {fix}", want.plural()),
                 )
             };
             match op {

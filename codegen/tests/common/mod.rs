@@ -1,0 +1,79 @@
+//! Shared helpers: the real spec sources, and loading them after a small textual edit.
+#![allow(dead_code)] // each test binary uses a different subset
+
+use rinshan_codegen::{Diagnostic, Spec};
+use std::path::{Path, PathBuf};
+
+pub const YAKU_PATH: &str = "rules/yaku.toml";
+pub const FEATURES_PATH: &str = "rules/kernel/features.rs";
+
+pub fn rules_dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../rules")
+}
+
+pub fn variant_path(variant: &str) -> String {
+    format!("rules/variants/{variant}.toml")
+}
+
+fn read(rel: &str) -> String {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join(rel);
+    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+}
+
+/// The real sources of a variant: (variant text, yaku text, features text).
+pub fn sources(variant: &str) -> (String, String, String) {
+    (read(&variant_path(variant)), read(YAKU_PATH), read(FEATURES_PATH))
+}
+
+/// Replaces exactly one occurrence of `from` (so an edit can never silently miss).
+pub fn replace_once(text: &str, from: &str, to: &str) -> String {
+    let n = text.matches(from).count();
+    assert_eq!(n, 1, "`{from}` occurs {n} times");
+    text.replacen(from, to, 1)
+}
+
+pub fn load_texts(variant: &str, v: &str, y: &str, f: &str) -> Result<Spec, Vec<Diagnostic>> {
+    rinshan_codegen::load_sources((&variant_path(variant), v), (YAKU_PATH, y), (FEATURES_PATH, f))
+}
+
+/// Loads `variant` after editing the yaku file.
+pub fn load_yaku_edit(variant: &str, from: &str, to: &str) -> Result<Spec, Vec<Diagnostic>> {
+    let (v, y, f) = sources(variant);
+    load_texts(variant, &v, &replace_once(&y, from, to), &f)
+}
+
+/// Loads `variant` after editing its variant file.
+pub fn load_variant_edit(variant: &str, from: &str, to: &str) -> Result<Spec, Vec<Diagnostic>> {
+    let (v, y, f) = sources(variant);
+    load_texts(variant, &replace_once(&v, from, to), &y, &f)
+}
+
+pub fn load_real(variant: &str) -> Spec {
+    match rinshan_codegen::load(&rules_dir(), variant) {
+        Ok(s) => s,
+        Err(errors) => panic!("{}", render(&errors)),
+    }
+}
+
+pub fn render(errors: &[Diagnostic]) -> String {
+    errors.iter().map(ToString::to_string).collect::<Vec<_>>().join("\n")
+}
+
+/// The single error of a failed load.
+pub fn single_error(result: Result<Spec, Vec<Diagnostic>>) -> Diagnostic {
+    match result {
+        Ok(_) => panic!("the edited spec was accepted"),
+        Err(errors) => {
+            assert_eq!(errors.len(), 1, "expected one error, got:\n{}", render(&errors));
+            errors.into_iter().next().unwrap()
+        }
+    }
+}
+
+/// Line (1-based) of the first line of `text` containing `needle`.
+pub fn line_of(text: &str, needle: &str) -> usize {
+    text.lines()
+        .position(|l| l.contains(needle))
+        .unwrap_or_else(|| panic!("`{needle}` not found"))
+        + 1
+}
