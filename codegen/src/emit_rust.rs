@@ -43,7 +43,10 @@ fn i32_tokens(v: i32) -> TokenStream {
 }
 
 fn f32_tokens(v: f32) -> TokenStream {
-    let lit = Literal::f32_suffixed(v.abs());
+    // `{:?}` keeps a `.0` and round-trips exactly; `Literal::f32_suffixed` would print `1f32`.
+    let lit: Literal = format!("{:?}f32", v.abs())
+        .parse()
+        .unwrap_or_else(|_| Literal::f32_suffixed(v.abs()));
     if v.is_sign_negative() {
         quote!(-#lit)
     } else {

@@ -77,3 +77,59 @@ pub fn line_of(text: &str, needle: &str) -> usize {
         .unwrap_or_else(|| panic!("`{needle}` not found"))
         + 1
 }
+
+/// Generated items by name (consts and fns), as normalized token text, so tests can compare two
+/// generated files item by item.
+pub fn items(src: &str) -> std::collections::BTreeMap<String, String> {
+    let file = syn::parse_file(src).unwrap_or_else(|e| panic!("generated code does not parse: {e}"));
+    file.items
+        .iter()
+        .map(|item| {
+            let name = match item {
+                syn::Item::Const(c) => c.ident.to_string(),
+                syn::Item::Fn(f) => f.sig.ident.to_string(),
+                other => panic!("unexpected item {}", quote::quote!(#other)),
+            };
+            (name, quote::quote!(#item).to_string())
+        })
+        .collect()
+}
+
+/// The value of a `const NAME: [u32; N] = [..]` in generated code.
+pub fn u32_array(src: &str, name: &str) -> Vec<u32> {
+    let file = syn::parse_file(src).unwrap_or_else(|e| panic!("generated code does not parse: {e}"));
+    for item in &file.items {
+        if let syn::Item::Const(c) = item {
+            if c.ident == name {
+                let syn::Expr::Array(a) = &*c.expr else {
+                    panic!("{name} is not an array")
+                };
+                return a
+                    .elems
+                    .iter()
+                    .map(|e| match e {
+                        syn::Expr::Lit(syn::ExprLit {
+                            lit: syn::Lit::Int(i), ..
+                        }) => i.base10_parse::<u32>().unwrap(),
+                        other => panic!("{name}: non-literal {}", quote::quote!(#other)),
+                    })
+                    .collect();
+            }
+        }
+    }
+    panic!("no const {name}")
+}
+
+/// The value of a scalar `const NAME: u32 = ..;` in generated code, as written.
+pub fn const_text(src: &str, name: &str) -> String {
+    let file = syn::parse_file(src).unwrap_or_else(|e| panic!("generated code does not parse: {e}"));
+    for item in &file.items {
+        if let syn::Item::Const(c) = item {
+            if c.ident == name {
+                let e = &c.expr;
+                return quote::quote!(#e).to_string();
+            }
+        }
+    }
+    panic!("no const {name}")
+}
