@@ -1,0 +1,83 @@
+//! Compute entry points and their bindings.
+//!
+//! Binding layout (group 0):
+//! - binding 0: `tables`, read-only `array<u32>`, shared by all entries (the `table(i)`
+//!   intrinsic), always declared;
+//! - the k-th `Entry` (0-based) gets its input array at binding `1 + 2k` and its output
+//!   array at binding `2 + 2k`. The runtime builds one pipeline per entry point, so with one
+//!   entry per module (the usual case) this is bindings 1 and 2.
+
+use crate::diag::{Diag, Error, Result};
+use crate::items::Program;
+use crate::names::wgsl_ident;
+use crate::types::Ty;
+use crate::Entry;
+
+pub(crate) const TABLES_DECL: &str = "@group(0) @binding(0) var<storage, read> tables: array<u32>;\n";
+
+pub(crate) fn lower_entry(prog: &Program, k: usize, entry: &Entry, fallback: Diag) -> Result<String> {
+    let bad = |msg: String| -> Error {
+        match prog.fns.get(&entry.function) {
+            Some(f) => prog.diag(f.file).node(&f.item.sig.ident, msg),
+            None => fallback.whole_file(msg),
+        }
+    };
+    let name = &entry.name;
+    if !is_plain_ident(name) || wgsl_ident(name) != *name {
+        return Err(bad(format!("entry point name `{name}` is not usable as a WGSL identifier")));
+    }
+    for global in [name.clone(), format!("{name}_in"), format!("{name}_out")] {
+        if prog.module_names.contains(&global) {
+            return Err(bad(format!("entry point `{name}` needs the name `{global}`, which the kernel sources already use; rename one")));
+        }
+    }
+    let Some(f) = prog.fns.get(&entry.function) else {
+        return Err(fallback.whole_file(format!("entry `{name}`: function `{}` is not defined in the kernel sources", entry.function)));
+    };
+    let input = Ty::Struct(entry.input.clone());
+    let output = Ty::Struct(entry.output.clone());
+    if f.params.len() != 1 || f.params[0].ty != input || f.ret != output {
+        return Err(bad(format!(
+            "entry `{name}` needs `fn {}(input: {}) -> {}`",
+            entry.function, entry.input, entry.output
+        )));
+    }
+    for ty in [&input, &output] {
+        host_shareable(prog, ty).map_err(|why| bad(format!("entry `{name}`: `{}` cannot live in a storage buffer: {why}", ty.rust())))?;
+    }
+    let (bin, bout) = (1 + 2 * k, 2 + 2 * k);
+    let input_w = input.wgsl();
+    let output_w = output.wgsl();
+    let func = wgsl_ident(&entry.function);
+    Ok(format!(
+        "@group(0) @binding({bin}) var<storage, read> {name}_in: array<{input_w}>;\n\
+         @group(0) @binding({bout}) var<storage, read_write> {name}_out: array<{output_w}>;\n\
+         \n\
+         @compute @workgroup_size(64)\n\
+         fn {name}(@builtin(global_invocation_id) gid: vec3<u32>) {{\n    \
+             let i = gid.x;\n    \
+             if (i >= arrayLength(&{name}_in)) {{ return; }}\n    \
+             {name}_out[i] = {func}({name}_in[i]);\n\
+         }}\n"
+    ))
+}
+
+fn is_plain_ident(s: &str) -> bool {
+    let mut chars = s.chars();
+    chars.next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_') && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
+}
+
+/// Input/output structs are uploaded as `#[repr(C)]` bytemuck values: only 4-byte scalars
+/// and arrays of them, which lay out identically in WGSL storage buffers.
+fn host_shareable(prog: &Program, ty: &Ty) -> std::result::Result<(), String> {
+    match ty {
+        Ty::U32 | Ty::I32 | Ty::F32 => Ok(()),
+        Ty::Bool => Err("`bool` has no defined memory layout; use a u32 (0 or 1)".into()),
+        Ty::Array(elem, _) => host_shareable(prog, elem),
+        Ty::Struct(s) => match prog.structs.get(s) {
+            Some(def) => def.fields.iter().try_for_each(|(_, t)| host_shareable(prog, t)),
+            None => Err(format!("`{s}` is not a struct defined in the kernel sources")),
+        },
+        _ => Err(format!("`{}` is not allowed", ty.rust())),
+    }
+}
