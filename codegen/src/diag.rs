@@ -26,6 +26,11 @@ impl fmt::Display for Diagnostic {
 
 impl std::error::Error for Diagnostic {}
 
+/// All diagnostics, one per line, for a build script's panic message or a CLI.
+pub fn render(errors: &[Diagnostic]) -> String {
+    errors.iter().map(ToString::to_string).collect::<Vec<_>>().join("\n")
+}
+
 /// A source file with a byte-offset -> line:column map.
 pub(crate) struct Source<'a> {
     pub path: &'a str,
@@ -77,7 +82,7 @@ impl<'a> Source<'a> {
         // serde names Rust types; the spec author thinks in toml types.
         for (rust, toml) in [
             ("expected i64", "expected an integer"),
-            ("expected i32", "expected an integer"),
+            ("expected i32", "expected a 32-bit signed integer"),
             ("expected u32", "expected a non-negative integer"),
             ("expected f64", "expected a number"),
         ] {

@@ -17,11 +17,11 @@ pub mod model;
 pub mod spec;
 pub mod tables;
 
-pub use diag::Diagnostic;
+pub use diag::{render, Diagnostic};
 pub use emit_rust::{generate, Generated};
 pub use spec::Spec;
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 fn read(path: &Path) -> Result<String, Diagnostic> {
     std::fs::read_to_string(path).map_err(|e| Diagnostic {
@@ -32,14 +32,20 @@ fn read(path: &Path) -> Result<String, Diagnostic> {
     })
 }
 
-/// Load, parse and check `rules/variants/<variant>.toml` + `rules/yaku.toml` +
-/// `rules/kernel/features.rs` under `rules_dir`.
-pub fn load(rules_dir: &Path, variant: &str) -> Result<Spec, Vec<Diagnostic>> {
-    let paths = [
+/// The files [`load`] reads for `variant`: the variant file, the yaku file and the features file
+/// (a build script prints them as `cargo:rerun-if-changed`).
+pub fn source_paths(rules_dir: &Path, variant: &str) -> [PathBuf; 3] {
+    [
         rules_dir.join("variants").join(format!("{variant}.toml")),
         rules_dir.join("yaku.toml"),
         rules_dir.join("kernel").join("features.rs"),
-    ];
+    ]
+}
+
+/// Load, parse and check `rules/variants/<variant>.toml` + `rules/yaku.toml` +
+/// `rules/kernel/features.rs` under `rules_dir`.
+pub fn load(rules_dir: &Path, variant: &str) -> Result<Spec, Vec<Diagnostic>> {
+    let paths = source_paths(rules_dir, variant);
     let mut texts = Vec::new();
     let mut errors = Vec::new();
     for p in &paths {

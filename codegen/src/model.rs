@@ -12,7 +12,9 @@ use std::collections::BTreeMap;
 pub struct VariantFile {
     pub variant: VariantSection,
     pub tiles: TilesSection,
-    /// Free-form bool options that yaku conditions may name (e.g. `open_tanyao`).
+    /// Free-form bool options that yaku conditions may name (e.g. `open_tanyao`); a variant may
+    /// have none.
+    #[serde(default)]
     pub yaku_rules: BTreeMap<Spanned<String>, Spanned<bool>>,
     pub scoring: ScoringSection,
     pub claims: ClaimsSection,

@@ -55,9 +55,7 @@ pub fn load_real(variant: &str) -> Spec {
     }
 }
 
-pub fn render(errors: &[Diagnostic]) -> String {
-    errors.iter().map(ToString::to_string).collect::<Vec<_>>().join("\n")
-}
+pub use rinshan_codegen::render;
 
 /// The single error of a failed load.
 pub fn single_error(result: Result<Spec, Vec<Diagnostic>>) -> Diagnostic {
