@@ -24,15 +24,22 @@ pub(crate) fn lower_entry(prog: &Program, k: usize, entry: &Entry, fallback: Dia
     };
     let name = &entry.name;
     if !is_plain_ident(name) || wgsl_ident(name) != *name {
-        return Err(bad(format!("entry point name `{name}` is not usable as a WGSL identifier")));
+        return Err(bad(format!(
+            "entry point name `{name}` is not usable as a WGSL identifier"
+        )));
     }
     for global in [name.clone(), format!("{name}_in"), format!("{name}_out")] {
         if prog.module_names.contains(&global) {
-            return Err(bad(format!("entry point `{name}` needs the name `{global}`, which the kernel sources already use; rename one")));
+            return Err(bad(format!(
+                "entry point `{name}` needs the name `{global}`, which the kernel sources already use; rename one"
+            )));
         }
     }
     let Some(f) = prog.fns.get(&entry.function) else {
-        return Err(fallback.whole_file(format!("entry `{name}`: function `{}` is not defined in the kernel sources", entry.function)));
+        return Err(fallback.whole_file(format!(
+            "entry `{name}`: function `{}` is not defined in the kernel sources",
+            entry.function
+        )));
     };
     let input = Ty::Struct(entry.input.clone());
     let output = Ty::Struct(entry.output.clone());
@@ -43,7 +50,12 @@ pub(crate) fn lower_entry(prog: &Program, k: usize, entry: &Entry, fallback: Dia
         )));
     }
     for ty in [&input, &output] {
-        host_shareable(prog, ty).map_err(|why| bad(format!("entry `{name}`: `{}` cannot live in a storage buffer: {why}", ty.rust())))?;
+        host_shareable(prog, ty).map_err(|why| {
+            bad(format!(
+                "entry `{name}`: `{}` cannot live in a storage buffer: {why}",
+                ty.rust()
+            ))
+        })?;
     }
     let (bin, bout) = (1 + 2 * k, 2 + 2 * k);
     let input_w = input.wgsl();
@@ -64,7 +76,8 @@ pub(crate) fn lower_entry(prog: &Program, k: usize, entry: &Entry, fallback: Dia
 
 fn is_plain_ident(s: &str) -> bool {
     let mut chars = s.chars();
-    chars.next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_') && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
+    chars.next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+        && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
 }
 
 /// Input/output structs are uploaded as `#[repr(C)]` bytemuck values: only 4-byte scalars

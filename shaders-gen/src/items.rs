@@ -54,7 +54,9 @@ pub(crate) struct Program<'a> {
     pub module_names: HashSet<String>,
 }
 
-const ALLOWED_ATTRS: &[&str] = &["derive", "doc", "allow", "inline", "repr", "must_use", "warn", "expect", "rustfmt"];
+const ALLOWED_ATTRS: &[&str] = &[
+    "derive", "doc", "allow", "inline", "repr", "must_use", "warn", "expect", "rustfmt",
+];
 
 fn check_attrs(diag: Diag, attrs: &[syn::Attribute]) -> Result<()> {
     for attr in attrs {
@@ -82,10 +84,14 @@ fn reject_generics(diag: Diag, generics: &syn::Generics) -> Result<()> {
 
 fn unsupported_item(diag: Diag, item: &syn::Item) -> crate::diag::Error {
     let msg = match item {
-        syn::Item::Use(_) => "`use` items are not supported: all kernel sources form one module; refer to items by their plain name",
+        syn::Item::Use(_) => {
+            "`use` items are not supported: all kernel sources form one module; refer to items by their plain name"
+        }
         syn::Item::Mod(_) => "`mod` items are not supported: pass each file as a separate `Source` instead",
         syn::Item::Impl(_) => "impl blocks are not supported; write free functions taking the struct as a parameter",
-        syn::Item::Trait(_) | syn::Item::TraitAlias(_) => "traits are not supported; write free functions for concrete types",
+        syn::Item::Trait(_) | syn::Item::TraitAlias(_) => {
+            "traits are not supported; write free functions for concrete types"
+        }
         syn::Item::Enum(_) => "enums are not supported; use u32 consts",
         syn::Item::Static(_) => "statics are not supported; use a `const`",
         syn::Item::Macro(_) => "macros are not supported in kernel sources; write the items out",
@@ -137,15 +143,20 @@ impl<'a> Program<'a> {
                     return Err(diag.node(ident, format!("`{name}` is reserved for the table intrinsic (`table(i)` reads the `tables` buffer); pick another name")));
                 }
                 if seen.insert(name.clone(), ()).is_some() || !module_names.insert(wgsl_ident(&name)) {
-                    return Err(diag.node(ident, format!("`{name}` is defined twice in the kernel sources; rename one")));
+                    return Err(diag.node(
+                        ident,
+                        format!("`{name}` is defined twice in the kernel sources; rename one"),
+                    ));
                 }
             }
         }
 
-        let struct_names: HashMap<String, ()> =
-            struct_items.iter().map(|(_, s)| (s.ident.to_string(), ())).collect();
+        let struct_names: HashMap<String, ()> = struct_items.iter().map(|(_, s)| (s.ident.to_string(), ())).collect();
         let const_values = const_int_values(&const_items);
-        let scope = TypeScope { structs: &struct_names, const_values: &const_values };
+        let scope = TypeScope {
+            structs: &struct_names,
+            const_values: &const_values,
+        };
 
         let mut structs = HashMap::new();
         for &(fi, s) in &struct_items {
@@ -174,12 +185,25 @@ impl<'a> Program<'a> {
         let mut consts = HashMap::new();
         for &(fi, c) in &const_items {
             let diag = Diag { file: paths[fi] };
-            let ty = parse_ty(diag, &scope, &c.ty)?;
+            // Rust needs `usize` consts for array lengths (`[u32; N]`); they are plain u32
+            // values on the GPU, so `N as u32` and `for i in 0..N` lower naturally.
+            let ty = match &*c.ty {
+                syn::Type::Path(p) if p.path.is_ident("usize") => Ty::U32,
+                other => parse_ty(diag, &scope, other)?,
+            };
             if ty == Ty::Unit {
                 return Err(diag.node(&c.ty, "`()` consts are not supported"));
             }
             let private = contains_array(&structs, &ty);
-            consts.insert(c.ident.to_string(), ConstDef { ty, private, item: c, file: fi });
+            consts.insert(
+                c.ident.to_string(),
+                ConstDef {
+                    ty,
+                    private,
+                    item: c,
+                    file: fi,
+                },
+            );
         }
 
         let mut fns = HashMap::new();
@@ -188,7 +212,10 @@ impl<'a> Program<'a> {
             let sig = &f.sig;
             reject_generics(diag, &sig.generics)?;
             if sig.asyncness.is_some() || sig.abi.is_some() || sig.variadic.is_some() {
-                return Err(diag.node(sig, "only plain `fn` items are supported (no async, extern or variadic)"));
+                return Err(diag.node(
+                    sig,
+                    "only plain `fn` items are supported (no async, extern or variadic)",
+                ));
             }
             if !matches!(sig.safety, syn::Safety::Default) {
                 return Err(diag.node(sig, "`unsafe fn` is not supported"));
@@ -198,7 +225,10 @@ impl<'a> Program<'a> {
                 let pat_ty = match input {
                     syn::FnArg::Typed(t) => t,
                     syn::FnArg::Receiver(r) => {
-                        return Err(diag.node(r, "methods are not supported; write a free function taking the struct as a parameter"))
+                        return Err(diag.node(
+                            r,
+                            "methods are not supported; write a free function taking the struct as a parameter",
+                        ))
                     }
                 };
                 let (name, mutable) = match &*pat_ty.pat {
@@ -207,7 +237,10 @@ impl<'a> Program<'a> {
                     }
                     syn::Pat::Wild(_) => ("_".to_string(), false),
                     other => {
-                        return Err(diag.node(other, "parameters must be plain names (`x: u32`); destructuring is not supported"))
+                        return Err(diag.node(
+                            other,
+                            "parameters must be plain names (`x: u32`); destructuring is not supported",
+                        ))
                     }
                 };
                 let ty = match &*pat_ty.ty {
@@ -237,10 +270,27 @@ impl<'a> Program<'a> {
                     parse_ty(diag, &scope, ty)?
                 }
             };
-            fns.insert(sig.ident.to_string(), FnDef { params, ret, item: f, file: fi });
+            fns.insert(
+                sig.ident.to_string(),
+                FnDef {
+                    params,
+                    ret,
+                    item: f,
+                    file: fi,
+                },
+            );
         }
 
-        let program = Program { paths, structs, struct_names, consts, fns, order, const_values, module_names };
+        let program = Program {
+            paths,
+            structs,
+            struct_names,
+            consts,
+            fns,
+            order,
+            const_values,
+            module_names,
+        };
         program.check_recursion()?;
         Ok(program)
     }
@@ -254,7 +304,10 @@ impl<'a> Program<'a> {
     fn check_recursion(&self) -> Result<()> {
         let mut graph: HashMap<&str, Vec<(String, proc_macro2::Span)>> = HashMap::new();
         for (name, f) in &self.fns {
-            let mut calls = CallCollector { fns: &self.fns, calls: Vec::new() };
+            let mut calls = CallCollector {
+                fns: &self.fns,
+                calls: Vec::new(),
+            };
             calls.visit_block(&f.item.block);
             graph.insert(name.as_str(), calls.calls);
         }
@@ -274,7 +327,9 @@ impl<'a> Program<'a> {
         stack: &mut Vec<String>,
         done: &mut HashSet<String>,
     ) -> Result<()> {
-        let Some(current) = stack.last().cloned() else { return Ok(()) };
+        let Some(current) = stack.last().cloned() else {
+            return Ok(());
+        };
         if done.contains(&current) {
             return Ok(());
         }
@@ -285,7 +340,10 @@ impl<'a> Program<'a> {
                 let file = self.fns.get(&current).map_or(0, |f| f.file);
                 return Err(self.diag(file).at(
                     *span,
-                    format!("recursion is not supported on the GPU ({}); rewrite it as a loop with an explicit stack array", cycle.join(" -> ")),
+                    format!(
+                        "recursion is not supported on the GPU ({}); rewrite it as a loop with an explicit stack array",
+                        cycle.join(" -> ")
+                    ),
                 ));
             }
             stack.push(callee.clone());

@@ -45,7 +45,8 @@ pub struct Entry {
 pub fn translate(sources: &[Source], entries: &[Entry]) -> Result<String, Error> {
     let mut files = Vec::new();
     for src in sources {
-        let file = syn::parse_file(&src.text).map_err(|e| Diag { file: &src.path }.at(e.span(), format!("syntax error: {e}")))?;
+        let file = syn::parse_file(&src.text)
+            .map_err(|e| Diag { file: &src.path }.at(e.span(), format!("syntax error: {e}")))?;
         files.push(file);
     }
     let paths: Vec<&str> = sources.iter().map(|s| s.path.as_str()).collect();
@@ -66,7 +67,9 @@ pub fn translate(sources: &[Source], entries: &[Entry]) -> Result<String, Error>
             Decl::Fn(name) => out.push_str(&lower::lower_fn(&prog, name)?),
         }
     }
-    let fallback = Diag { file: sources.first().map_or("<no sources>", |s| s.path.as_str()) };
+    let fallback = Diag {
+        file: sources.first().map_or("<no sources>", |s| s.path.as_str()),
+    };
     let mut entry_names = std::collections::HashSet::new();
     for (k, e) in entries.iter().enumerate() {
         if !entry_names.insert(e.name.as_str()) {
@@ -77,7 +80,9 @@ pub fn translate(sources: &[Source], entries: &[Entry]) -> Result<String, Error>
     }
     if let Err(msg) = validate(&out) {
         // A bug in the translator rather than in the kernel: report it with the WGSL.
-        return Err(fallback.whole_file(format!("internal error: generated WGSL does not validate:\n{msg}\n--- WGSL ---\n{out}")));
+        return Err(fallback.whole_file(format!(
+            "internal error: generated WGSL does not validate:\n{msg}\n--- WGSL ---\n{out}"
+        )));
     }
     Ok(out)
 }

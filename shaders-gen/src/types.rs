@@ -128,6 +128,10 @@ pub(crate) fn parse_ty(diag: Diag, scope: &TypeScope, ty: &syn::Type) -> Result<
             let len = eval_len(diag, scope.const_values, &a.len)?;
             Ok(Ty::Array(Box::new(elem), len))
         }
+        syn::Type::Reference(r) if matches!(&*r.elem, syn::Type::Slice(_)) => Err(diag.node(
+            ty,
+            "slices are not supported; use a fixed-size array `[T; N]` (plus a u32 length if needed)",
+        )),
         syn::Type::Reference(r) => Err(diag.node(
             ty,
             if r.mutability.is_some() {
@@ -136,7 +140,10 @@ pub(crate) fn parse_ty(diag: Diag, scope: &TypeScope, ty: &syn::Type) -> Result<
                 "shared references `&T` are not supported; pass the value itself (kernel types are Copy)"
             },
         )),
-        syn::Type::Slice(_) => Err(diag.node(ty, "slices are not supported; use a fixed-size array `[T; N]` (plus a u32 length if needed)")),
+        syn::Type::Slice(_) => Err(diag.node(
+            ty,
+            "slices are not supported; use a fixed-size array `[T; N]` (plus a u32 length if needed)",
+        )),
         syn::Type::Tuple(t) if t.elems.is_empty() => Ok(Ty::Unit),
         syn::Type::Tuple(_) => Err(diag.node(ty, "tuples are not supported; use a struct with named fields")),
         syn::Type::Ptr(_) => Err(diag.node(ty, "raw pointers are not supported; use a `&mut T` parameter")),
@@ -151,7 +158,10 @@ pub(crate) fn parse_ty(diag: Diag, scope: &TypeScope, ty: &syn::Type) -> Result<
 /// An array length: an integer literal, or an integer const (arithmetic allowed).
 pub(crate) fn eval_len(diag: Diag, consts: &HashMap<String, u64>, e: &syn::Expr) -> Result<u32> {
     let v = eval_const_int(consts, e).ok_or_else(|| {
-        diag.node(e, "array length must be an integer literal or an integer const (e.g. `[u32; 34]` or `[u32; N]`)")
+        diag.node(
+            e,
+            "array length must be an integer literal or an integer const (e.g. `[u32; 34]` or `[u32; N]`)",
+        )
     })?;
     match u32::try_from(v) {
         Ok(n) if n > 0 => Ok(n),
@@ -162,7 +172,9 @@ pub(crate) fn eval_len(diag: Diag, consts: &HashMap<String, u64>, e: &syn::Expr)
 /// Evaluates an integer expression made of literals, known consts and arithmetic.
 pub(crate) fn eval_const_int(consts: &HashMap<String, u64>, e: &syn::Expr) -> Option<u64> {
     match e {
-        syn::Expr::Lit(syn::ExprLit { lit: syn::Lit::Int(i), .. }) => i.base10_parse::<u64>().ok(),
+        syn::Expr::Lit(syn::ExprLit {
+            lit: syn::Lit::Int(i), ..
+        }) => i.base10_parse::<u64>().ok(),
         syn::Expr::Paren(p) => eval_const_int(consts, &p.expr),
         syn::Expr::Group(g) => eval_const_int(consts, &g.expr),
         syn::Expr::Path(p) => consts.get(&p.path.get_ident()?.to_string()).copied(),

@@ -26,7 +26,11 @@ pub(crate) struct Val {
 
 impl Val {
     fn atom(code: String, ty: Ty) -> Val {
-        Val { code, ty, prec: Prec::Atom }
+        Val {
+            code,
+            ty,
+            prec: Prec::Atom,
+        }
     }
 
     /// As an operand of binary `op`, on the left or the right.
@@ -54,10 +58,15 @@ fn is_untyped(ty: &Ty) -> bool {
 }
 
 pub(crate) fn macro_message(mac: &syn::Macro) -> String {
-    let name = mac.path.segments.last().map(|s| s.ident.to_string()).unwrap_or_default();
+    let name = mac
+        .path
+        .segments
+        .last()
+        .map(|s| s.ident.to_string())
+        .unwrap_or_default();
     match name.as_str() {
-        "panic" | "assert" | "assert_eq" | "assert_ne" | "debug_assert" | "debug_assert_eq"
-        | "debug_assert_ne" | "unreachable" | "todo" | "unimplemented" => format!(
+        "panic" | "assert" | "assert_eq" | "assert_ne" | "debug_assert" | "debug_assert_eq" | "debug_assert_ne"
+        | "unreachable" | "todo" | "unimplemented" => format!(
             "`{name}!` is not supported: GPU kernels cannot panic; return a status value (or clamp the input) instead"
         ),
         "println" | "print" | "eprintln" | "eprint" | "dbg" | "format" | "write" | "writeln" => format!(
@@ -132,7 +141,11 @@ impl Lowerer<'_, '_> {
     /// Reads through a `&mut` parameter.
     pub(super) fn load(&self, v: Val) -> Val {
         match v.ty {
-            Ty::Ptr(inner) => Val { code: format!("*{}", v.code), ty: *inner, prec: Prec::Unary },
+            Ty::Ptr(inner) => Val {
+                code: format!("*{}", v.code),
+                ty: *inner,
+                prec: Prec::Unary,
+            },
             _ => v,
         }
     }
@@ -157,7 +170,12 @@ impl Lowerer<'_, '_> {
             if v.ty != *w {
                 return Err(self.err(
                     e,
-                    format!("expected `{}`, found `{}`; convert with `as {}` if that is intended", w.rust(), v.ty.rust(), w.rust()),
+                    format!(
+                        "expected `{}`, found `{}`; convert with `as {}` if that is intended",
+                        w.rust(),
+                        v.ty.rust(),
+                        w.rust()
+                    ),
                 ));
             }
         }
@@ -176,11 +194,23 @@ impl Lowerer<'_, '_> {
                     "u32" => Ty::U32,
                     "i32" => Ty::I32,
                     "f32" => Ty::F32,
-                    "usize" => return Err(self.err(i, "`usize` literals are not supported; write a `u32` literal (indices need no suffix)")),
+                    "usize" => {
+                        return Err(self.err(
+                            i,
+                            "`usize` literals are not supported; write a `u32` literal (indices need no suffix)",
+                        ))
+                    }
                     "f64" => return Err(self.err(i, "`f64` is not available in WGSL; use `f32`")),
-                    other => return Err(self.err(i, format!("`{other}` is not available in WGSL; use a `u32` or `i32` literal"))),
+                    other => {
+                        return Err(self.err(
+                            i,
+                            format!("`{other}` is not available in WGSL; use a `u32` or `i32` literal"),
+                        ))
+                    }
                 };
-                let value = i.base10_parse::<u128>().map_err(|_| self.err(i, "integer literal out of range"))?;
+                let value = i
+                    .base10_parse::<u128>()
+                    .map_err(|_| self.err(i, "integer literal out of range"))?;
                 let max: u128 = match ty {
                     Ty::U32 | Ty::IntLit => u32::MAX.into(),
                     Ty::I32 if negated => 1 << 31,
@@ -190,7 +220,10 @@ impl Lowerer<'_, '_> {
                 if value > max {
                     return Err(self.err(
                         i,
-                        format!("integer literal {value} is out of range for `{}`; kernel integers are 32-bit (u32 or i32)", if ty == Ty::IntLit { "u32".into() } else { ty.rust() }),
+                        format!(
+                            "integer literal {value} is out of range for `{}`; kernel integers are 32-bit (u32 or i32)",
+                            if ty == Ty::IntLit { "u32".into() } else { ty.rust() }
+                        ),
                     ));
                 }
                 let code = match ty {
@@ -211,7 +244,11 @@ impl Lowerer<'_, '_> {
                     return Err(self.err(f, "expected an integer; write an integer literal"));
                 }
                 let digits = f.base10_digits();
-                let code = if digits.contains(['.', 'e', 'E']) { format!("{digits}f") } else { format!("{digits}.0f") };
+                let code = if digits.contains(['.', 'e', 'E']) {
+                    format!("{digits}f")
+                } else {
+                    format!("{digits}.0f")
+                };
                 Ok(Val::atom(code, Ty::F32))
             }
             syn::Lit::Bool(b) => Ok(Val::atom(b.value.to_string(), Ty::Bool)),
@@ -261,7 +298,11 @@ impl Lowerer<'_, '_> {
     fn unary(&mut self, u: &syn::ExprUnary, want: Option<&Ty>) -> Result<Val> {
         match u.op {
             syn::UnOp::Neg(_) => {
-                if let syn::Expr::Lit(syn::ExprLit { lit: lit @ syn::Lit::Int(_), .. }) = &*u.expr {
+                if let syn::Expr::Lit(syn::ExprLit {
+                    lit: lit @ syn::Lit::Int(_),
+                    ..
+                }) = &*u.expr
+                {
                     let v = self.lit(lit, want, true)?;
                     if v.ty == Ty::I32 && v.code == "2147483648i" {
                         // Not a valid WGSL i32 literal; the abstract-int form converts exactly.
@@ -270,12 +311,20 @@ impl Lowerer<'_, '_> {
                     if v.ty == Ty::U32 {
                         return Err(self.err(u, "cannot negate a `u32`; use `0u32.wrapping_sub(x)` or an `i32`"));
                     }
-                    return Ok(Val { code: format!("-{}", v.code), ty: v.ty, prec: Prec::Unary });
+                    return Ok(Val {
+                        code: format!("-{}", v.code),
+                        ty: v.ty,
+                        prec: Prec::Unary,
+                    });
                 }
                 let v = self.expr(&u.expr, want)?;
                 let v = self.load(v);
                 match v.ty {
-                    Ty::I32 | Ty::F32 | Ty::IntLit => Ok(Val { code: format!("-{}", v.tight()), ty: v.ty, prec: Prec::Unary }),
+                    Ty::I32 | Ty::F32 | Ty::IntLit => Ok(Val {
+                        code: format!("-{}", v.tight()),
+                        ty: v.ty,
+                        prec: Prec::Unary,
+                    }),
                     Ty::U32 => Err(self.err(u, "cannot negate a `u32`; use `0u32.wrapping_sub(x)` or an `i32`")),
                     ref t => Err(self.err(u, format!("cannot negate a `{}`", t.rust()))),
                 }
@@ -284,9 +333,17 @@ impl Lowerer<'_, '_> {
                 let v = self.expr(&u.expr, want)?;
                 let v = self.load(v);
                 match v.ty {
-                    Ty::Bool => Ok(Val { code: format!("!{}", v.tight()), ty: v.ty, prec: Prec::Unary }),
+                    Ty::Bool => Ok(Val {
+                        code: format!("!{}", v.tight()),
+                        ty: v.ty,
+                        prec: Prec::Unary,
+                    }),
                     // Rust's `!` on integers is bitwise complement.
-                    Ty::U32 | Ty::I32 | Ty::IntLit => Ok(Val { code: format!("~{}", v.tight()), ty: v.ty, prec: Prec::Unary }),
+                    Ty::U32 | Ty::I32 | Ty::IntLit => Ok(Val {
+                        code: format!("~{}", v.tight()),
+                        ty: v.ty,
+                        prec: Prec::Unary,
+                    }),
                     ref t => Err(self.err(u, format!("`!` is not defined for `{}`", t.rust()))),
                 }
             }
@@ -307,7 +364,11 @@ impl Lowerer<'_, '_> {
         let want = want.filter(|t| t.is_scalar());
         let lv = self.expr(l, want)?;
         let mut lv = self.load(lv);
-        let rwant = if is_untyped(&lv.ty) { want.cloned() } else { Some(lv.ty.clone()) };
+        let rwant = if is_untyped(&lv.ty) {
+            want.cloned()
+        } else {
+            Some(lv.ty.clone())
+        };
         let rv = self.expr(r, rwant.as_ref())?;
         let rv = self.load(rv);
         if is_untyped(&lv.ty) && !is_untyped(&rv.ty) {
@@ -317,7 +378,11 @@ impl Lowerer<'_, '_> {
         if !is_untyped(&lv.ty) && !is_untyped(&rv.ty) && lv.ty != rv.ty {
             return Err(self.err(
                 r,
-                format!("mismatched operand types `{}` and `{}`; convert one with `as`", lv.ty.rust(), rv.ty.rust()),
+                format!(
+                    "mismatched operand types `{}` and `{}`; convert one with `as`",
+                    lv.ty.rust(),
+                    rv.ty.rust()
+                ),
             ));
         }
         Ok((lv, rv))
@@ -358,7 +423,12 @@ impl Lowerer<'_, '_> {
             B::Ge(_) => (">=", Kind::Cmp),
             B::Shl(_) => ("<<", Kind::Shift),
             B::Shr(_) => (">>", Kind::Shift),
-            _ => return Err(self.err(b, "compound assignment cannot be used as a value; write it as its own statement")),
+            _ => {
+                return Err(self.err(
+                    b,
+                    "compound assignment cannot be used as a value; write it as its own statement",
+                ))
+            }
         };
         match kind {
             Kind::Arith | Kind::Bit => {
@@ -374,24 +444,45 @@ impl Lowerer<'_, '_> {
                 let op = if op == "^" && l.ty == Ty::Bool { "!=" } else { op };
                 let code = format!("{} {op} {}", l.operand(op, true), r.operand(op, false));
                 let ty = if is_untyped(&l.ty) { r.ty } else { l.ty };
-                Ok(Val { code, ty, prec: Prec::Binary(op) })
+                Ok(Val {
+                    code,
+                    ty,
+                    prec: Prec::Binary(op),
+                })
             }
             Kind::Logic => {
                 let l = self.typed(&b.left, Some(&Ty::Bool))?;
                 let r = self.typed(&b.right, Some(&Ty::Bool))?;
                 let code = format!("{} {op} {}", l.operand(op, true), r.operand(op, false));
-                Ok(Val { code, ty: Ty::Bool, prec: Prec::Binary(op) })
+                Ok(Val {
+                    code,
+                    ty: Ty::Bool,
+                    prec: Prec::Binary(op),
+                })
             }
             Kind::Cmp => {
                 let (l, r) = self.operands(&b.left, &b.right, None)?;
                 if is_untyped(&l.ty) {
-                    return Err(self.err(b, "cannot infer the integer type of this comparison; add a suffix (`0u32`, `0i32`)"));
+                    return Err(self.err(
+                        b,
+                        "cannot infer the integer type of this comparison; add a suffix (`0u32`, `0i32`)",
+                    ));
                 }
                 if !l.ty.is_scalar() {
-                    return Err(self.err(b, format!("`{op}` only compares u32/i32/f32/bool values, not `{}`; compare fields one by one", l.ty.rust())));
+                    return Err(self.err(
+                        b,
+                        format!(
+                            "`{op}` only compares u32/i32/f32/bool values, not `{}`; compare fields one by one",
+                            l.ty.rust()
+                        ),
+                    ));
                 }
                 let code = format!("{} {op} {}", l.operand(op, true), r.operand(op, false));
-                Ok(Val { code, ty: Ty::Bool, prec: Prec::Binary(op) })
+                Ok(Val {
+                    code,
+                    ty: Ty::Bool,
+                    prec: Prec::Binary(op),
+                })
             }
             Kind::Shift => {
                 let l = self.expr(&b.left, want.filter(|t| t.is_int()))?;
@@ -401,7 +492,11 @@ impl Lowerer<'_, '_> {
                 }
                 let r = self.shift_amount(&b.right)?;
                 let code = format!("{} {op} {}", l.operand(op, true), r.operand(op, false));
-                Ok(Val { code, ty: l.ty, prec: Prec::Binary(op) })
+                Ok(Val {
+                    code,
+                    ty: l.ty,
+                    prec: Prec::Binary(op),
+                })
             }
         }
     }
@@ -446,7 +541,10 @@ impl Lowerer<'_, '_> {
     }
 
     pub(super) fn type_scope(&self) -> TypeScope<'_> {
-        TypeScope { structs: &self.prog.struct_names, const_values: &self.prog.const_values }
+        TypeScope {
+            structs: &self.prog.struct_names,
+            const_values: &self.prog.const_values,
+        }
     }
 
     fn field(&mut self, f: &syn::ExprField) -> Result<Val> {
@@ -489,7 +587,10 @@ impl Lowerer<'_, '_> {
         }
         let idx = self.value(index_expr, Some(&Ty::U32))?;
         if !idx.ty.is_int() {
-            return Err(self.err(index_expr, format!("array indices must be u32 or i32, found `{}`", idx.ty.rust())));
+            return Err(self.err(
+                index_expr,
+                format!("array indices must be u32 or i32, found `{}`", idx.ty.rust()),
+            ));
         }
         Ok(Val::atom(format!("{}[{}]", base.tight(), idx.code), (**elem).clone()))
     }
@@ -524,7 +625,10 @@ impl Lowerer<'_, '_> {
             return Err(self.err(&c.func, msg));
         };
         if f.params.len() != c.args.len() {
-            return Err(self.err(c, format!("`{name}` takes {} arguments, {} given", f.params.len(), c.args.len())));
+            return Err(self.err(
+                c,
+                format!("`{name}` takes {} arguments, {} given", f.params.len(), c.args.len()),
+            ));
         }
         let mut args = Vec::new();
         for (arg, param) in c.args.iter().zip(&f.params) {
@@ -533,7 +637,10 @@ impl Lowerer<'_, '_> {
                 ty => args.push(self.typed(arg, Some(ty))?.code),
             }
         }
-        Ok(Val::atom(format!("{}({})", wgsl_ident(&name), args.join(", ")), f.ret.clone()))
+        Ok(Val::atom(
+            format!("{}({})", wgsl_ident(&name), args.join(", ")),
+            f.ret.clone(),
+        ))
     }
 
     /// An argument for a `&mut T` parameter: `&mut local` or a `&mut` parameter passed on.
@@ -557,13 +664,28 @@ impl Lowerer<'_, '_> {
             }
             syn::Expr::Reference(_) => return Err(self.err(arg, "this parameter is `&mut T`; pass `&mut x`")),
             syn::Expr::Path(p) => match p.path.get_ident().and_then(|id| self.lookup(&id.to_string())) {
-                Some(super::Local { wgsl, ty: Ty::Ptr(t), .. }) => (wgsl.clone(), (**t).clone()),
-                _ => return Err(self.err(arg, "this parameter is `&mut T`; pass `&mut x` for a `let mut` local `x`")),
+                Some(super::Local {
+                    wgsl, ty: Ty::Ptr(t), ..
+                }) => (wgsl.clone(), (**t).clone()),
+                _ => {
+                    return Err(self.err(
+                        arg,
+                        "this parameter is `&mut T`; pass `&mut x` for a `let mut` local `x`",
+                    ))
+                }
             },
-            _ => return Err(self.err(arg, "this parameter is `&mut T`; pass `&mut x` for a `let mut` local `x`")),
+            _ => {
+                return Err(self.err(
+                    arg,
+                    "this parameter is `&mut T`; pass `&mut x` for a `let mut` local `x`",
+                ))
+            }
         };
         if ty != *inner {
-            return Err(self.err(arg, format!("expected `&mut {}`, found `&mut {}`", inner.rust(), ty.rust())));
+            return Err(self.err(
+                arg,
+                format!("expected `&mut {}`, found `&mut {}`", inner.rust(), ty.rust()),
+            ));
         }
         Ok(code)
     }
@@ -644,7 +766,10 @@ impl Lowerer<'_, '_> {
             return Err(self.err(s, "`..base` in struct literals is not supported; list every field"));
         }
         let Some(name) = s.path.get_ident().map(|i| i.to_string()) else {
-            return Err(self.err(&s.path, "struct literals must name a struct defined in the kernel sources"));
+            return Err(self.err(
+                &s.path,
+                "struct literals must name a struct defined in the kernel sources",
+            ));
         };
         let prog = self.prog;
         let Some(def) = prog.structs.get(&name) else {
@@ -671,7 +796,10 @@ impl Lowerer<'_, '_> {
             };
             args.push(self.typed(e, Some(fty))?.code);
         }
-        Ok(Val::atom(format!("{}({})", wgsl_ident(&name), args.join(", ")), Ty::Struct(name)))
+        Ok(Val::atom(
+            format!("{}({})", wgsl_ident(&name), args.join(", ")),
+            Ty::Struct(name),
+        ))
     }
 
     fn array_lit(&mut self, a: &syn::ExprArray, want: Option<&Ty>) -> Result<Val> {
@@ -689,11 +817,20 @@ impl Lowerer<'_, '_> {
         }
         let elem_ty = match vals.iter().find(|v| !is_untyped(&v.ty)) {
             Some(v) => v.ty.clone(),
-            None => return Err(self.err(a, "cannot infer the element type of this array; add a suffix (`0u32`) or a type annotation")),
+            None => {
+                return Err(self.err(
+                    a,
+                    "cannot infer the element type of this array; add a suffix (`0u32`) or a type annotation",
+                ))
+            }
         };
         let mut codes = Vec::new();
         for (e, v) in a.elems.iter().zip(vals) {
-            let v = if is_untyped(&v.ty) { self.typed(e, Some(&elem_ty))? } else { v };
+            let v = if is_untyped(&v.ty) {
+                self.typed(e, Some(&elem_ty))?
+            } else {
+                v
+            };
             if v.ty != elem_ty {
                 return Err(self.err(e, format!("array elements must all be `{}`", elem_ty.rust())));
             }
@@ -719,7 +856,10 @@ impl Lowerer<'_, '_> {
             return Err(self.err(r, "repeat expressions with a non-zero value are limited to 256 elements; start from zeros (`[0u32; N]`) and fill in a loop"));
         }
         if !self.is_pure(&r.expr) {
-            return Err(self.err(&r.expr, "the repeated value must not have side effects; compute it into a local first"));
+            return Err(self.err(
+                &r.expr,
+                "the repeated value must not have side effects; compute it into a local first",
+            ));
         }
         let copies = vec![v.code; n as usize];
         Ok(Val::atom(format!("{}({})", ty.wgsl(), copies.join(", ")), ty))
@@ -764,10 +904,18 @@ impl Lowerer<'_, '_> {
             fn visit_expr(&mut self, e: &'ast syn::Expr) {
                 use syn::Expr as E;
                 match e {
-                    E::Assign(_) | E::Reference(_) | E::Macro(_) | E::Loop(_) | E::While(_) | E::ForLoop(_)
-                    | E::Match(_) | E::Return(_) | E::Break(_) | E::Continue(_) | E::Block(_) | E::Closure(_) => {
-                        self.pure = false
-                    }
+                    E::Assign(_)
+                    | E::Reference(_)
+                    | E::Macro(_)
+                    | E::Loop(_)
+                    | E::While(_)
+                    | E::ForLoop(_)
+                    | E::Match(_)
+                    | E::Return(_)
+                    | E::Break(_)
+                    | E::Continue(_)
+                    | E::Block(_)
+                    | E::Closure(_) => self.pure = false,
                     E::Binary(b) if is_compound(&b.op) => self.pure = false,
                     // Passing a `&mut` parameter on lets the callee write through it.
                     E::Call(c) => {
@@ -805,8 +953,16 @@ pub(crate) fn is_compound(op: &syn::BinOp) -> bool {
     use syn::BinOp as B;
     matches!(
         op,
-        B::AddAssign(_) | B::SubAssign(_) | B::MulAssign(_) | B::DivAssign(_) | B::RemAssign(_) | B::BitXorAssign(_)
-            | B::BitAndAssign(_) | B::BitOrAssign(_) | B::ShlAssign(_) | B::ShrAssign(_)
+        B::AddAssign(_)
+            | B::SubAssign(_)
+            | B::MulAssign(_)
+            | B::DivAssign(_)
+            | B::RemAssign(_)
+            | B::BitXorAssign(_)
+            | B::BitAndAssign(_)
+            | B::BitOrAssign(_)
+            | B::ShlAssign(_)
+            | B::ShrAssign(_)
     )
 }
 
@@ -823,7 +979,9 @@ fn is_zero(e: &syn::Expr) -> bool {
     match e {
         syn::Expr::Lit(l) => match &l.lit {
             syn::Lit::Int(i) => i.base10_digits() == "0",
-            syn::Lit::Float(f) => f.base10_parse::<f64>().is_ok_and(|v| v == 0.0 && !f.base10_digits().starts_with('-')),
+            syn::Lit::Float(f) => f
+                .base10_parse::<f64>()
+                .is_ok_and(|v| v == 0.0 && !f.base10_digits().starts_with('-')),
             syn::Lit::Bool(b) => !b.value,
             _ => false,
         },

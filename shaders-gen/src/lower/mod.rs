@@ -73,10 +73,22 @@ impl<'p, 'a> Lowerer<'p, 'a> {
     /// Declares a Rust local and returns its WGSL name. WGSL forbids redeclaring a name in
     /// the same scope (Rust shadowing does that), so every local gets a function-unique name.
     fn declare(&mut self, rust: &str, ty: Ty, var: bool, mutable: bool) -> String {
-        let base = if rust == "_" { "unused".to_string() } else { wgsl_ident(rust) };
+        let base = if rust == "_" {
+            "unused".to_string()
+        } else {
+            wgsl_ident(rust)
+        };
         let wgsl = self.fresh(&base);
         if let Some(scope) = self.scopes.last_mut() {
-            scope.insert(rust.to_string(), Local { wgsl: wgsl.clone(), ty, var, mutable });
+            scope.insert(
+                rust.to_string(),
+                Local {
+                    wgsl: wgsl.clone(),
+                    ty,
+                    var,
+                    mutable,
+                },
+            );
         }
         wgsl
     }
@@ -123,7 +135,11 @@ pub(crate) fn lower_fn(prog: &Program, name: &str) -> Result<String> {
             params.push(format!("{local}: {}", p.ty.wgsl()));
         }
     }
-    let ret = if f.ret == Ty::Unit { String::new() } else { format!(" -> {}", f.ret.wgsl()) };
+    let ret = if f.ret == Ty::Unit {
+        String::new()
+    } else {
+        format!(" -> {}", f.ret.wgsl())
+    };
     lw.line(&format!("fn {}({}){ret} {{", wgsl_ident(name), params.join(", ")));
     lw.indent += 1;
     for c in &copies {
@@ -146,7 +162,12 @@ pub(crate) fn lower_const(prog: &Program, name: &str) -> Result<String> {
     lw.in_const = true;
     let value = lw.typed(&c.item.expr, Some(&c.ty))?;
     let kind = if c.private { "var<private>" } else { "const" };
-    Ok(format!("{kind} {}: {} = {};\n", wgsl_ident(name), c.ty.wgsl(), value.code))
+    Ok(format!(
+        "{kind} {}: {} = {};\n",
+        wgsl_ident(name),
+        c.ty.wgsl(),
+        value.code
+    ))
 }
 
 /// Emits a struct declaration (fields in declaration order; all kernel types are 4-byte

@@ -38,7 +38,10 @@ impl Lowerer<'_, '_> {
             match s {
                 syn::Stmt::Local(l) => self.local(l)?,
                 syn::Stmt::Item(item) => {
-                    return Err(self.diag.node(item, "items inside functions are not supported; move it to module level"))
+                    return Err(self.diag.node(
+                        item,
+                        "items inside functions are not supported; move it to module level",
+                    ))
                 }
                 syn::Stmt::Macro(m) => return Err(self.diag.node(m, macro_message(&m.mac))),
                 syn::Stmt::Expr(e, None) if ret_pos && last => self.tail_return(e)?,
@@ -73,7 +76,9 @@ impl Lowerer<'_, '_> {
 
     fn no_label(&self, label: &Option<syn::Label>) -> Result<()> {
         match label {
-            Some(l) => Err(self.diag.node(l, "loop labels are not supported; use a `bool` flag and plain `break`")),
+            Some(l) => Err(self
+                .diag
+                .node(l, "loop labels are not supported; use a `bool` flag and plain `break`")),
             None => Ok(()),
         }
     }
@@ -119,16 +124,24 @@ impl Lowerer<'_, '_> {
             }
             E::Break(b) => {
                 if b.label.is_some() {
-                    return Err(self.diag.node(b, "loop labels are not supported; use a `bool` flag and plain `break`"));
+                    return Err(self
+                        .diag
+                        .node(b, "loop labels are not supported; use a `bool` flag and plain `break`"));
                 }
                 if b.expr.is_some() {
-                    return Err(self.diag.node(b, "`break value` is not supported; assign a `let mut` variable, then `break`"));
+                    return Err(self.diag.node(
+                        b,
+                        "`break value` is not supported; assign a `let mut` variable, then `break`",
+                    ));
                 }
                 self.emit_break(b)
             }
             E::Continue(c) => {
                 if c.label.is_some() {
-                    return Err(self.diag.node(c, "loop labels are not supported; use a `bool` flag and plain `continue`"));
+                    return Err(self.diag.node(
+                        c,
+                        "loop labels are not supported; use a `bool` flag and plain `continue`",
+                    ));
                 }
                 self.line("continue;");
                 Ok(())
@@ -149,7 +162,10 @@ impl Lowerer<'_, '_> {
             _ => {
                 // Lower it for its diagnostics; a side-effect-free statement is a mistake.
                 self.expr(e, None)?;
-                Err(self.diag.node(e, "this expression statement has no effect; remove it or assign it (`_ = value;`)"))
+                Err(self.diag.node(
+                    e,
+                    "this expression statement has no effect; remove it or assign it (`_ = value;`)",
+                ))
             }
         }
     }
@@ -202,11 +218,17 @@ impl Lowerer<'_, '_> {
             };
         }
         let syn::Expr::Path(p) = root else {
-            return Err(self.diag.node(e, "can only assign to variables, their fields and elements"));
+            return Err(self
+                .diag
+                .node(e, "can only assign to variables, their fields and elements"));
         };
         let name = p.path.get_ident().map(|i| i.to_string()).unwrap_or_default();
         let Some(local) = self.lookup(&name) else {
-            let what = if self.prog.consts.contains_key(&name) { "consts cannot be assigned" } else { "can only assign to local variables" };
+            let what = if self.prog.consts.contains_key(&name) {
+                "consts cannot be assigned"
+            } else {
+                "can only assign to local variables"
+            };
             return Err(self.diag.node(root, what));
         };
         let is_ptr = matches!(local.ty, Ty::Ptr(_));
@@ -215,7 +237,9 @@ impl Lowerer<'_, '_> {
                 return Err(self.diag.node(e, "assign through the reference: `*p = value;`"));
             }
         } else if !(local.var && local.mutable) {
-            return Err(self.diag.node(root, format!("cannot assign to `{name}`; declare it with `let mut`")));
+            return Err(self
+                .diag
+                .node(root, format!("cannot assign to `{name}`; declare it with `let mut`")));
         }
         let v = self.expr(e, None)?;
         Ok(self.load(v))
@@ -254,9 +278,15 @@ impl Lowerer<'_, '_> {
             _ => place.ty.is_int() || place.ty == Ty::Bool,
         };
         if !ok {
-            return Err(self.diag.node(b, format!("`{op}` is not defined for `{}`", place.ty.rust())));
+            return Err(self
+                .diag
+                .node(b, format!("`{op}` is not defined for `{}`", place.ty.rust())));
         }
-        let rhs = if op == "<<=" || op == ">>=" { self.shift_amount(&b.right)? } else { self.typed(&b.right, Some(&place.ty))? };
+        let rhs = if op == "<<=" || op == ">>=" {
+            self.shift_amount(&b.right)?
+        } else {
+            self.typed(&b.right, Some(&place.ty))?
+        };
         if op == "^=" && place.ty == Ty::Bool {
             // WGSL has no `^` on bool.
             self.line(&format!("{} = {} != {};", place.code, place.code, rhs.tight()));
@@ -272,12 +302,21 @@ impl Lowerer<'_, '_> {
             p => (p, None),
         };
         let (name, mutable) = match pat {
-            syn::Pat::Ident(pi) if pi.by_ref.is_none() && pi.subpat.is_none() => (pi.ident.to_string(), pi.mutability.is_some()),
+            syn::Pat::Ident(pi) if pi.by_ref.is_none() && pi.subpat.is_none() => {
+                (pi.ident.to_string(), pi.mutability.is_some())
+            }
             syn::Pat::Wild(_) => ("_".to_string(), false),
             syn::Pat::Tuple(_) | syn::Pat::TupleStruct(_) => {
-                return Err(self.diag.node(pat, "tuples are not supported; use a struct with named fields"))
+                return Err(self
+                    .diag
+                    .node(pat, "tuples are not supported; use a struct with named fields"))
             }
-            other => return Err(self.diag.node(other, "destructuring is not supported; bind a plain name (`let x = ...;`)")),
+            other => {
+                return Err(self.diag.node(
+                    other,
+                    "destructuring is not supported; bind a plain name (`let x = ...;`)",
+                ))
+            }
         };
         let ann_ty = match ann {
             Some(t) => Some(parse_ty(self.diag, &self.type_scope(), t)?),
@@ -285,7 +324,9 @@ impl Lowerer<'_, '_> {
         };
         let Some(init) = &l.init else {
             let Some(ty) = ann_ty else {
-                return Err(self.diag.node(l, format!("`let {name};` needs a type annotation (`let {name}: u32;`)")));
+                return Err(self
+                    .diag
+                    .node(l, format!("`let {name};` needs a type annotation (`let {name}: u32;`)")));
             };
             let wgsl = self.declare(&name, ty.clone(), true, true);
             self.line(&format!("var {wgsl}: {};", ty.wgsl()));
@@ -305,7 +346,10 @@ impl Lowerer<'_, '_> {
                     ));
                 }
                 if let Ty::Ptr(_) = v.ty {
-                    return Err(self.diag.node(&init.expr, "references cannot be stored in locals; use the `&mut` parameter directly"));
+                    return Err(self.diag.node(
+                        &init.expr,
+                        "references cannot be stored in locals; use the `&mut` parameter directly",
+                    ));
                 }
                 v
             }
@@ -370,7 +414,8 @@ impl Lowerer<'_, '_> {
             syn::Pat::Wild(_) => "_".to_string(),
             other => return Err(self.diag.node(other, "the loop variable must be a plain name")),
         };
-        let range_advice = "only `for i in a..b` and `for i in a..=b` are supported (no iterators); index arrays with `a[i as usize]`";
+        let range_advice =
+            "only `for i in a..b` and `for i in a..=b` are supported (no iterators); index arrays with `a[i as usize]`";
         let syn::Expr::Range(range) = &*f.expr else {
             return Err(self.diag.node(&*f.expr, range_advice));
         };
@@ -384,7 +429,10 @@ impl Lowerer<'_, '_> {
             e = self.typed(end, Some(&Ty::U32))?;
         }
         if !s.ty.is_int() {
-            return Err(self.diag.node(range, format!("range bounds must be u32 or i32, found `{}`", s.ty.rust())));
+            return Err(self.diag.node(
+                range,
+                format!("range bounds must be u32 or i32, found `{}`", s.ty.rust()),
+            ));
         }
         let ty = s.ty.clone();
         // Rust evaluates the end once; WGSL re-evaluates the condition, so anything that
@@ -401,8 +449,16 @@ impl Lowerer<'_, '_> {
         } else {
             e.code
         };
-        let cmp = if matches!(range.limits, syn::RangeLimits::Closed(_)) { "<=" } else { "<" };
-        self.line(&format!("for (var {var_name}: {} = {}; {var_name} {cmp} {end_code}; {var_name}++) {{", ty.wgsl(), s.code));
+        let cmp = if matches!(range.limits, syn::RangeLimits::Closed(_)) {
+            "<="
+        } else {
+            "<"
+        };
+        self.line(&format!(
+            "for (var {var_name}: {} = {}; {var_name} {cmp} {end_code}; {var_name}++) {{",
+            ty.wgsl(),
+            s.code
+        ));
         let r = self.loop_body(&f.body);
         self.scopes.pop();
         r?;
@@ -439,7 +495,10 @@ impl Lowerer<'_, '_> {
         if !scrut.ty.is_int() {
             return Err(self.diag.node(
                 &m.expr,
-                format!("`match` is only supported on u32/i32 values (it becomes a WGSL `switch`), not `{}`; use if/else", scrut.ty.rust()),
+                format!(
+                    "`match` is only supported on u32/i32 values (it becomes a WGSL `switch`), not `{}`; use if/else",
+                    scrut.ty.rust()
+                ),
             ));
         }
         let flag_at = self.out.len();
@@ -520,17 +579,40 @@ impl Lowerer<'_, '_> {
                 let name = p.path.get_ident().map(|i| i.to_string()).unwrap_or_default();
                 match self.prog.consts.get(&name) {
                     Some(c) if !c.private && c.ty == *ty => out.push(wgsl_ident(&name)),
-                    _ => return Err(self.diag.node(p, format!("match arms may name integer consts of type `{}`; `{name}` is not one", ty.rust()))),
+                    _ => {
+                        return Err(self.diag.node(
+                            p,
+                            format!(
+                                "match arms may name integer consts of type `{}`; `{name}` is not one",
+                                ty.rust()
+                            ),
+                        ))
+                    }
                 }
             }
             syn::Pat::Range(_) => {
-                return Err(self.diag.node(pat, "ranges in match arms are not supported; list the values (`1 | 2 | 3 =>`) or use if/else"))
+                return Err(self.diag.node(
+                    pat,
+                    "ranges in match arms are not supported; list the values (`1 | 2 | 3 =>`) or use if/else",
+                ))
             }
-            syn::Pat::Guard(_) => return Err(self.diag.node(pat, "match guards (`if`) are not supported; use if/else inside the arm")),
+            syn::Pat::Guard(_) => {
+                return Err(self
+                    .diag
+                    .node(pat, "match guards (`if`) are not supported; use if/else inside the arm"))
+            }
             syn::Pat::Ident(_) => {
-                return Err(self.diag.node(pat, "binding patterns are not supported; use `_` and refer to the matched value"))
+                return Err(self.diag.node(
+                    pat,
+                    "binding patterns are not supported; use `_` and refer to the matched value",
+                ))
             }
-            _ => return Err(self.diag.node(pat, "match arms support integer literals, integer consts, `|` and `_` only")),
+            _ => {
+                return Err(self.diag.node(
+                    pat,
+                    "match arms support integer literals, integer consts, `|` and `_` only",
+                ))
+            }
         }
         Ok(())
     }

@@ -1,0 +1,231 @@
+//! Constructs outside the kernel subset are rejected at the right place, with a message
+//! that says what to write instead.
+
+use rinshan_shaders_gen::{translate, Error, Source};
+
+fn reject(text: &str) -> Error {
+    let src = Source {
+        path: "kernels/k.rs".into(),
+        text: text.into(),
+    };
+    match translate(&[src], &[]) {
+        Ok(wgsl) => panic!("expected a rejection, got WGSL:\n{wgsl}"),
+        Err(e) => e,
+    }
+}
+
+#[track_caller]
+fn check(text: &str, line: usize, column: usize, advice: &str) {
+    let e = reject(text);
+    assert_eq!(
+        (e.file.as_str(), e.line, e.column),
+        ("kernels/k.rs", line, column),
+        "{e}"
+    );
+    assert!(e.message.contains(advice), "message should mention `{advice}`: {e}");
+}
+
+#[test]
+fn display_is_file_line_column_message() {
+    let e = reject("fn f() -> u64 {\n    0\n}\n");
+    assert_eq!(e.to_string(), format!("kernels/k.rs:1:11: {}", e.message));
+}
+
+#[test]
+fn heap_types() {
+    check(
+        "fn f(v: Vec<u32>) -> u32 {\n    0\n}\n",
+        1,
+        9,
+        "fixed-size array `[T; N]`",
+    );
+    check("struct S {\n    a: Box<u32>,\n}\n", 2, 8, "fixed-size array");
+}
+
+#[test]
+fn option_and_result() {
+    check("fn f(x: u32) -> Option<u32> {\n    x\n}\n", 1, 17, "status field");
+    check(
+        "fn f(x: u32) -> u32 {\n    let y = Some(x);\n    x\n}\n",
+        2,
+        13,
+        "status field",
+    );
+}
+
+#[test]
+fn wide_and_narrow_integers() {
+    check(
+        "fn f(x: u32) -> u32 {\n    let y: u64 = 1;\n    x\n}\n",
+        2,
+        12,
+        "use `u32`",
+    );
+    check("fn f(x: f64) -> u32 {\n    1\n}\n", 1, 9, "use `f32`");
+    check(
+        "fn f(x: u32) -> u32 {\n    let y = 1u8;\n    x\n}\n",
+        2,
+        13,
+        "`u32` or `i32` literal",
+    );
+}
+
+#[test]
+fn usize_outside_index() {
+    check(
+        "fn f(x: u32) -> u32 {\n    let n = x as usize;\n    x\n}\n",
+        2,
+        18,
+        "only allowed directly inside an index (`a[i as usize]`)",
+    );
+}
+
+#[test]
+fn iterators_and_unknown_methods() {
+    check(
+        "fn f(a: [u32; 4]) -> u32 {\n    let mut s = 0u32;\n    for x in a.iter() {\n        s += *x;\n    }\n    s\n}\n",
+        3,
+        14,
+        "for i in a..b",
+    );
+    check(
+        "fn f(x: f32) -> f32 {\n    x.sqrt()\n}\n",
+        2,
+        7,
+        "write a free function",
+    );
+}
+
+#[test]
+fn macros() {
+    check(
+        "fn f(x: u32) -> u32 {\n    assert!(x < 4);\n    x\n}\n",
+        2,
+        5,
+        "return a status value",
+    );
+    check(
+        "fn f(x: u32) -> u32 {\n    if x > 3 {\n        panic!(\"no\");\n    }\n    x\n}\n",
+        3,
+        9,
+        "cannot panic",
+    );
+}
+
+#[test]
+fn recursion_direct_and_indirect() {
+    check(
+        "fn f(x: u32) -> u32 {\n    if x == 0 {\n        return 0;\n    }\n    f(x - 1)\n}\n",
+        5,
+        5,
+        "rewrite it as a loop",
+    );
+    let e = reject(
+        "fn a(x: u32) -> u32 {\n    b(x)\n}\n\nfn b(x: u32) -> u32 {\n    if x > 0 { a(x - 1) } else { 0 }\n}\n",
+    );
+    assert_eq!((e.line, e.column), (6, 16), "{e}");
+    assert!(e.message.contains("a -> b -> a"), "{e}");
+}
+
+#[test]
+fn traits_impls_generics_closures() {
+    check(
+        "struct S {\n    a: u32,\n}\n\nimpl S {\n    fn get(&self) -> u32 {\n        self.a\n    }\n}\n",
+        5,
+        1,
+        "free functions",
+    );
+    check("trait T {}\n", 1, 1, "free functions");
+    check("fn id<T>(x: T) -> T {\n    x\n}\n", 1, 6, "concrete types");
+    check(
+        "fn f(x: u32) -> u32 {\n    let g = |y: u32| y + 1;\n    g(x)\n}\n",
+        2,
+        13,
+        "separate `fn`",
+    );
+}
+
+#[test]
+fn references() {
+    check("fn f(x: &u32) -> u32 {\n    *x\n}\n", 1, 9, "pass the value itself");
+    check(
+        "struct S {\n    a: u32,\n}\n\nfn inc(x: &mut u32) {\n    *x += 1;\n}\n\nfn f(s: S) -> u32 {\n    let mut t = s;\n    inc(&mut t.a);\n    t.a\n}\n",
+        11,
+        9,
+        "copy the value into a local (`let mut tmp = x.f;`), pass `&mut tmp`, then copy it back",
+    );
+}
+
+#[test]
+fn items_use_mod() {
+    check("use core::cmp::max;\n", 1, 1, "plain name");
+    check("mod inner {}\n", 1, 1, "separate `Source`");
+}
+
+#[test]
+fn loop_labels_and_tuples() {
+    check(
+        "fn f() -> u32 {\n    'outer: loop {\n        break 'outer;\n    }\n    0\n}\n",
+        2,
+        5,
+        "`bool` flag",
+    );
+    check(
+        "fn f(x: u32) -> u32 {\n    let (a, b) = (x, x);\n    a + b\n}\n",
+        2,
+        9,
+        "struct with named fields",
+    );
+    check(
+        "fn f(x: [u32; 4]) -> u32 {\n    let s = &x[1..3];\n    0\n}\n",
+        2,
+        13,
+        "pass values otherwise",
+    );
+    check(
+        "fn f(x: &[u32]) -> u32 {\n    x[0]\n}\n",
+        1,
+        9,
+        "fixed-size array `[T; N]`",
+    );
+}
+
+#[test]
+fn literals_and_inference() {
+    check("fn f() -> u32 {\n    4294967296\n}\n", 2, 5, "32-bit");
+    check("fn f() -> i32 {\n    2147483648i32\n}\n", 2, 5, "out of range");
+    check(
+        "fn f() -> u32 {\n    let mut x = 0;\n    x += 1u32;\n    x\n}\n",
+        2,
+        17,
+        "`0u32`",
+    );
+}
+
+#[test]
+fn if_as_value_needs_simple_branches() {
+    check(
+        "fn g(x: &mut u32) -> u32 {\n    *x += 1;\n    *x\n}\n\nfn f(c: bool) -> u32 {\n    let mut n = 0u32;\n    let v = if c { g(&mut n) } else { 1 };\n    v\n}\n",
+        8,
+        13,
+        "`let mut x: T = ...;`",
+    );
+}
+
+#[test]
+fn unknown_functions_and_reserved_intrinsic() {
+    check(
+        "fn f(x: u32) -> u32 {\n    helper(x)\n}\n",
+        2,
+        5,
+        "not defined in the kernel sources",
+    );
+    check("fn table(i: u32) -> u32 {\n    i\n}\n", 1, 4, "table intrinsic");
+}
+
+#[test]
+fn syntax_errors_are_located() {
+    let e = reject("fn f( -> u32 {\n    0\n}\n");
+    assert_eq!(e.line, 1, "{e}");
+    assert!(e.message.starts_with("syntax error"), "{e}");
+}

@@ -1,0 +1,187 @@
+//! The sample kernel translates to WGSL that naga validates (and lowers to SPIR-V), and the
+//! same file compiles and runs as native Rust.
+
+use rinshan_shaders_gen::{translate, validate_with_info, Entry, Source};
+
+const FIXTURE: &str = include_str!("fixtures/sample_kernel.rs");
+
+fn fixture_source() -> Source {
+    Source {
+        path: "tests/fixtures/sample_kernel.rs".into(),
+        text: FIXTURE.into(),
+    }
+}
+
+fn score_entry() -> Entry {
+    Entry {
+        name: "score_main".into(),
+        function: "score".into(),
+        input: "Input".into(),
+        output: "Output".into(),
+    }
+}
+
+fn translate_one(text: &str, entries: &[Entry]) -> String {
+    let src = Source {
+        path: "k.rs".into(),
+        text: text.into(),
+    };
+    translate(&[src], entries).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// Kernels reach Vulkan drivers through naga's SPIR-V backend; make sure it accepts them.
+fn assert_spirv(wgsl: &str) {
+    let (module, info) = validate_with_info(wgsl).unwrap_or_else(|e| panic!("{e}"));
+    naga::back::spv::write_vec(&module, &info, &naga::back::spv::Options::default(), None)
+        .unwrap_or_else(|e| panic!("SPIR-V backend: {e}"));
+}
+
+#[test]
+fn sample_kernel_snapshot() {
+    let wgsl = translate(&[fixture_source()], &[score_entry()]).unwrap_or_else(|e| panic!("{e}"));
+    assert_spirv(&wgsl);
+    insta::assert_snapshot!("sample_kernel", wgsl);
+}
+
+#[test]
+fn output_is_deterministic() {
+    let a = translate(&[fixture_source()], &[score_entry()]).unwrap_or_else(|e| panic!("{e}"));
+    let b = translate(&[fixture_source()], &[score_entry()]).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(a, b);
+}
+
+#[allow(dead_code, clippy::all)]
+mod native {
+    /// The runtime's table intrinsic, natively.
+    pub fn table(i: u32) -> u32 {
+        i * 3 + 1
+    }
+
+    include!("fixtures/sample_kernel.rs");
+}
+
+#[test]
+fn sample_kernel_runs_natively() {
+    let mut tiles = [0u32; 34];
+    tiles[0] = 2;
+    tiles[5] = 3;
+    tiles[30] = 1;
+    let out = native::score(native::Input {
+        tiles,
+        seat: 1,
+        flags: 6,
+        delta: -4,
+    });
+    assert_eq!(out.sum, 6);
+    assert_eq!(out.max, 3);
+    assert_eq!(out.pairs, 2 * 100 + 6);
+    // seat 1: tables 1..=4 -> 4, 7, 10, 13
+    assert_eq!(out.table_sum, 34);
+    assert_eq!(out.bits & 1, 0);
+    assert_eq!((out.bits >> 1) & 1, 1, "honors");
+}
+
+#[test]
+fn keywords_are_renamed_consistently() {
+    let wgsl = translate_one(
+        "struct Meta {\n    ptr: u32,\n    var: u32,\n}\n\nfn select(meta: Meta, target: u32) -> u32 {\n    let active = meta.ptr + target;\n    active + meta.var\n}\n",
+        &[],
+    );
+    assert!(
+        wgsl.contains("struct Meta {\n    ptr_: u32,\n    var_: u32,\n}"),
+        "{wgsl}"
+    );
+    assert!(
+        wgsl.contains("fn select_(meta_: Meta, target_: u32) -> u32 {"),
+        "{wgsl}"
+    );
+    assert!(wgsl.contains("let active_: u32 = meta_.ptr_ + target_;"), "{wgsl}");
+}
+
+#[test]
+fn shadowing_and_pointer_params() {
+    let wgsl = translate_one(
+        "fn inc(x: &mut u32) {\n    *x += 1;\n}\n\nfn twice(x: &mut u32) {\n    inc(x);\n    inc(x);\n}\n\nfn f(a: u32) -> u32 {\n    let a = a + 1;\n    let mut b = a;\n    twice(&mut b);\n    let a = b * 2;\n    a\n}\n",
+        &[],
+    );
+    assert!(wgsl.contains("let a_1: u32 = a + 1u;"), "{wgsl}");
+    assert!(wgsl.contains("twice(&b);"), "{wgsl}");
+    assert!(wgsl.contains("    inc(x);\n"), "{wgsl}");
+    assert!(wgsl.contains("let a_2: u32 = b * 2u;"), "{wgsl}");
+}
+
+#[test]
+fn break_inside_match_leaves_the_loop() {
+    let wgsl = translate_one(
+        "fn f(n: u32) -> u32 {\n    let mut i = 0u32;\n    loop {\n        match i {\n            5 => break,\n            _ => i += 1,\n        }\n    }\n    i + n\n}\n",
+        &[],
+    );
+    assert!(wgsl.contains("exit_loop = true;\n"), "{wgsl}");
+    assert!(wgsl.contains("if exit_loop {\n            break;\n        }"), "{wgsl}");
+}
+
+#[test]
+fn entries_get_distinct_bindings() {
+    let src = "#[derive(Clone, Copy)]\npub struct A {\n    x: u32,\n}\n\npub fn one(a: A) -> A {\n    A { x: a.x + table(0) }\n}\n\npub fn two(a: A) -> A {\n    A { x: a.x * 2 }\n}\n";
+    let entry = |name: &str, function: &str| Entry {
+        name: name.into(),
+        function: function.into(),
+        input: "A".into(),
+        output: "A".into(),
+    };
+    let wgsl = translate_one(src, &[entry("first", "one"), entry("second", "two")]);
+    for needle in [
+        "@group(0) @binding(0) var<storage, read> tables: array<u32>;",
+        "@group(0) @binding(1) var<storage, read> first_in: array<A>;",
+        "@group(0) @binding(2) var<storage, read_write> first_out: array<A>;",
+        "@group(0) @binding(3) var<storage, read> second_in: array<A>;",
+        "@group(0) @binding(4) var<storage, read_write> second_out: array<A>;",
+    ] {
+        assert!(wgsl.contains(needle), "missing {needle}:\n{wgsl}");
+    }
+    assert_spirv(&wgsl);
+}
+
+#[test]
+fn entry_structs_must_be_host_shareable() {
+    let src = Source {
+        path: "k.rs".into(),
+        text: "pub struct A {\n    ok: bool,\n}\n\npub fn one(a: A) -> A {\n    a\n}\n".into(),
+    };
+    let e = translate(
+        &[src],
+        &[Entry {
+            name: "e".into(),
+            function: "one".into(),
+            input: "A".into(),
+            output: "A".into(),
+        }],
+    )
+    .unwrap_err();
+    assert_eq!((e.line, e.column), (5, 8), "{e}");
+    assert!(e.message.contains("use a u32"), "{e}");
+}
+
+#[test]
+fn several_sources_form_one_module() {
+    let a = Source {
+        path: "a.rs".into(),
+        text: "const N: usize = 4;\npub struct P {\n    v: [i32; N],\n}\n".into(),
+    };
+    let b = Source {
+        path: "b.rs".into(),
+        text: "pub fn neg_sum(p: P) -> P {\n    let mut out = P { v: [0; N] };\n    for i in 0..4 {\n        out.v[i as usize] = -p.v[i as usize] + i32::MIN.max(-5);\n    }\n    out\n}\n".into(),
+    };
+    let wgsl = translate(
+        &[a, b],
+        &[Entry {
+            name: "k".into(),
+            function: "neg_sum".into(),
+            input: "P".into(),
+            output: "P".into(),
+        }],
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    assert!(wgsl.contains("var out: P = P(array<i32, 4>());"), "{wgsl}");
+    assert_spirv(&wgsl);
+}
