@@ -266,10 +266,13 @@ fn check_variant(c: &mut Checker<'_>, vf: &VariantFile, features: &[Feature]) ->
                     "option `{k}` has the name of a feature; conditions could not tell them apart, rename the option"
                 ),
             );
-        } else if VARIANT_FIELDS.contains(&k.as_str()) {
+        } else if VARIANT_FIELDS.contains(&k.as_str()) || k.starts_with("yaku_") || k.starts_with("action_") {
             c.variant_err(
                 at,
-                format!("option `{k}` would clash with the variant constant of the same name; rename it"),
+                format!(
+                    "option `{k}` would clash with a generated constant (`{}`); rename it",
+                    k.to_ascii_uppercase()
+                ),
             );
         }
     }

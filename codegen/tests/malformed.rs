@@ -500,3 +500,21 @@ fn feature_of_unsupported_type() {
         &["`suits`", "`u8`", "`bool` or `u32`"],
     );
 }
+
+#[test]
+fn option_names_must_not_clash_with_generated_consts() {
+    let from = "open_tanyao = true";
+    let to = "open_tanyao = true\nyaku_riichi = true";
+    let v = replace_once(&sources("red").0, from, to);
+    let Err(errors) = load_variant_edit("red", from, to) else {
+        panic!("accepted")
+    };
+    // Also unused by any condition; the clash is what matters here.
+    assert_diag(
+        &errors[0],
+        &variant_path("red"),
+        line_of(&v, "yaku_riichi"),
+        1,
+        &["`YAKU_RIICHI`", "rename"],
+    );
+}
