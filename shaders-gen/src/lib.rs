@@ -2,9 +2,28 @@
 //! naga.
 //!
 //! Kernel sources are ordinary Rust (they also compile natively) restricted to what maps
-//! directly onto WGSL: `const`, `struct` and `fn` items over u32/i32/f32/bool, fixed arrays
-//! and structs; see the crate README section in `docs/` or the tests for the exact subset.
-//! Anything outside it is rejected with a located [`Error`] saying what to write instead.
+//! directly onto WGSL. Anything outside the subset is rejected with a located [`Error`]
+//! saying what to write instead.
+//!
+//! - Items: `const`, `struct` (named fields) and `fn`; attributes `derive`, `doc`, `allow`,
+//!   `inline`, `repr` are ignored. Items are emitted in source order.
+//! - Types: `u32`, `i32`, `f32`, `bool`, `[T; N]`, kernel structs, and `&mut T` parameters
+//!   (`ptr<function, T>`). `usize` only as the type of a const (array lengths) and in
+//!   `a[i as usize]`, where the cast is dropped.
+//! - Statements: `let` / `let mut` (type from the annotation or the value), assignment and
+//!   compound assignment, `if`/`else`, `while`, `loop`, `for i in a..b` / `a..=b`, `match` on
+//!   u32/i32 literals and consts (a WGSL `switch`; `break` in an arm still leaves the loop),
+//!   `break`, `continue`, `return`, tail expressions.
+//! - Expressions: literals, arithmetic/bit/comparison/logical operators, `as` between
+//!   u32/i32/f32 (and from bool), field access, indexing, struct and array literals,
+//!   `[v; N]`, calls, `if`/`else` with simple branches (WGSL `select`), the methods `min`,
+//!   `max`, `count_ones`, `trailing_zeros`, `leading_zeros`, `wrapping_add/sub/mul`, `abs`,
+//!   `clone`, the consts `u32::MAX/MIN`, `i32::MAX/MIN`, and the `table(i)` intrinsic
+//!   (reads the `tables` storage buffer).
+//!
+//! Code generation choices (see the modules for why): consts holding arrays become
+//! `var<private>`, parameters and `let`s holding arrays are kept in `var`s, Rust names that
+//! are WGSL reserved words get a `_` suffix, shadowed locals get `_1`, `_2`... suffixes.
 
 mod diag;
 mod entry;

@@ -185,3 +185,24 @@ fn several_sources_form_one_module() {
     assert!(wgsl.contains("var out: P = P(array<i32, 4>());"), "{wgsl}");
     assert_spirv(&wgsl);
 }
+
+#[allow(dead_code, clippy::all)]
+mod native_constructs {
+    include!("fixtures/constructs.rs");
+}
+
+#[test]
+fn constructs_snapshot_and_native() {
+    let src = Source {
+        path: "tests/fixtures/constructs.rs".into(),
+        text: include_str!("fixtures/constructs.rs").into(),
+    };
+    let wgsl = translate(&[src], &[]).unwrap_or_else(|e| panic!("{e}"));
+    assert_spirv(&wgsl);
+    insta::assert_snapshot!("constructs", wgsl);
+
+    assert_eq!(native_constructs::pick(-1), 1);
+    assert_eq!(native_constructs::pick(2), 4);
+    let s = native_constructs::S { a: [1, 2, 3], f: 0.5 };
+    assert!(native_constructs::misc(s, 4).is_finite());
+}

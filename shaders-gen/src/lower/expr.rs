@@ -208,9 +208,15 @@ impl Lowerer<'_, '_> {
                         ))
                     }
                 };
-                let value = i
-                    .base10_parse::<u128>()
+                // Negative literal patterns (`-1 =>`) arrive as one negative literal.
+                let signed = i
+                    .base10_parse::<i128>()
                     .map_err(|_| self.err(i, "integer literal out of range"))?;
+                let (negated, sign) = if signed < 0 { (true, "-") } else { (negated, "") };
+                if signed < 0 && ty == Ty::U32 {
+                    return Err(self.err(i, "a `u32` cannot be negative"));
+                }
+                let value = signed.unsigned_abs();
                 let max: u128 = match ty {
                     Ty::U32 | Ty::IntLit => u32::MAX.into(),
                     Ty::I32 if negated => 1 << 31,
@@ -226,13 +232,17 @@ impl Lowerer<'_, '_> {
                         ),
                     ));
                 }
+                if sign == "-" && ty == Ty::I32 && value == 1 << 31 {
+                    return Ok(Val::atom("i32(-2147483648)".into(), Ty::I32));
+                }
                 let code = match ty {
                     Ty::U32 => format!("{value}u"),
-                    Ty::I32 => format!("{value}i"),
-                    Ty::F32 => format!("{value}.0f"),
-                    _ => value.to_string(),
+                    Ty::I32 => format!("{sign}{value}i"),
+                    Ty::F32 => format!("{sign}{value}.0f"),
+                    _ => format!("{sign}{value}"),
                 };
-                Ok(Val::atom(code, ty))
+                let prec = if sign.is_empty() { Prec::Atom } else { Prec::Unary };
+                Ok(Val { code, ty, prec })
             }
             syn::Lit::Float(f) => {
                 match f.suffix() {
@@ -914,7 +924,6 @@ impl Lowerer<'_, '_> {
                     | E::Return(_)
                     | E::Break(_)
                     | E::Continue(_)
-                    | E::Block(_)
                     | E::Closure(_) => self.pure = false,
                     E::Binary(b) if is_compound(&b.op) => self.pure = false,
                     // Passing a `&mut` parameter on lets the callee write through it.
