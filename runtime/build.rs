@@ -148,11 +148,14 @@ fn main() {
         let _ = writeln!(enum_src, "            Variant::{} => {:?},", camel(v), v);
     }
     enum_src.push_str("        }\n    }\n}\n");
-    enum_src.push_str("#[macro_export]\n#[doc(hidden)]\nmacro_rules! with_variant {\n    ($v:expr, $m:ident => $body:expr) => {\n        match $v {\n");
-    for v in &variants {
-        let _ = writeln!(enum_src, "            $crate::Variant::{} => {{ use $crate::generated::{v} as $m; $body }}", camel(v));
-    }
-    enum_src.push_str("        }\n    };\n}\n");
     modules.push_str(&enum_src);
     write(&out.join("generated.rs"), modules);
+
+    // Included at the crate root before the modules that use it (textual macro scope).
+    let mut dispatch = String::from("/// Runs `$body` with `$m` bound to the generated module of variant `$v`.\nmacro_rules! with_variant {\n    ($v:expr, $m:ident => $body:expr) => {\n        match $v {\n");
+    for v in &variants {
+        let _ = writeln!(dispatch, "            $crate::Variant::{} => {{ use $crate::generated::{v} as $m; $body }}", camel(v));
+    }
+    dispatch.push_str("        }\n    };\n}\n");
+    write(&out.join("dispatch.rs"), dispatch);
 }

@@ -9,7 +9,7 @@ use std::sync::mpsc;
 use wgpu::util::DeviceExt;
 
 use crate::hand::{SCORE_IN_WORDS, SCORE_OUT_WORDS, SHANTEN_IN_WORDS, SHANTEN_OUT_WORDS};
-use crate::{tables, with_variant, Variant};
+use crate::{tables, Variant};
 
 const WORKGROUP: usize = 64;
 const MAX_GROUPS: usize = 65_535;
@@ -87,6 +87,7 @@ impl Gpu {
             power_preference: wgpu::PowerPreference::HighPerformance,
             force_fallback_adapter: false,
             compatible_surface: None,
+            ..Default::default()
         }))
         .map_err(|e| GpuError::NoAdapter(e.to_string()))?;
         let info = adapter.get_info();

@@ -4,7 +4,7 @@
 use rayon::prelude::*;
 
 use crate::notation::{Meld, MeldKind, Tile};
-use crate::{with_variant, Variant};
+use crate::Variant;
 
 /// Shanten of a concealed hand: the number of tiles away from tenpai (`-1` = complete).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

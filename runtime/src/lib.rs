@@ -8,6 +8,8 @@
 //! * [`hand`]     — shanten and hand scoring on the CPU, one hand or a batch
 //! * [`gpu`]      — the same kernels on a GPU through wgpu
 
+include!(concat!(env!("OUT_DIR"), "/dispatch.rs"));
+
 pub mod tables;
 
 #[allow(missing_docs)]

@@ -1,1 +1,34 @@
-//! Test-only crate: see tests/.
+//! Shared helpers for rinshan's test suite: where the shared oracle data lives, and a GPU that
+//! skips politely on machines without one (unless `RINSHAN_REQUIRE_GPU=1`, as in CI).
+
+use std::path::PathBuf;
+
+/// `../shared/data` beside the repository (the oracle data: Tenhou logs, shanten cases).
+pub fn shared_data() -> PathBuf {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..");
+    for candidate in [root.join("../shared/data"), root.join("shared/data")] {
+        if candidate.is_dir() {
+            return candidate;
+        }
+    }
+    panic!("shared data not found beside the repository (expected ../shared/data)");
+}
+
+/// This crate's own data files (`tests/data`).
+pub fn test_data() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("data")
+}
+
+/// The GPU backend, or `None` (with a note on stderr) where no adapter exists and none is required.
+pub fn gpu_or_skip(test: &str) -> Option<rinshan::gpu::Gpu> {
+    match rinshan::gpu::Gpu::new() {
+        Ok(g) => Some(g),
+        Err(e) if std::env::var("RINSHAN_REQUIRE_GPU").is_ok_and(|v| v == "1") => {
+            panic!("{test}: RINSHAN_REQUIRE_GPU=1 but {e}")
+        }
+        Err(e) => {
+            eprintln!("{test}: skipped: {e}");
+            None
+        }
+    }
+}

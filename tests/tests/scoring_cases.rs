@@ -1,0 +1,143 @@
+//! Hand-scoring cases whose expected values were worked out from the rules (tests/data/scoring_cases.toml).
+
+use std::collections::BTreeMap;
+
+use rinshan::hand::{score, Payment, Win, WinContext};
+use rinshan::notation::{parse_meld, parse_tile, parse_tiles, parse_wind};
+use rinshan::Variant;
+use rinshan_tests::test_data;
+use serde::Deserialize;
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Case {
+    pub name: String,
+    pub hand: String,
+    pub win: String,
+    #[serde(default)]
+    pub tsumo: bool,
+    #[serde(default)]
+    pub riichi: bool,
+    #[serde(default)]
+    pub double_riichi: bool,
+    #[serde(default)]
+    pub ippatsu: bool,
+    #[serde(default)]
+    pub haitei: bool,
+    #[serde(default)]
+    pub houtei: bool,
+    #[serde(default)]
+    pub rinshan: bool,
+    #[serde(default)]
+    pub chankan: bool,
+    #[serde(default)]
+    pub tenhou: bool,
+    #[serde(default)]
+    pub chiihou: bool,
+    #[serde(default)]
+    pub dealer: bool,
+    pub round_wind: Option<String>,
+    pub seat_wind: Option<String>,
+    #[serde(default)]
+    pub melds: Vec<String>,
+    #[serde(default)]
+    pub dora: Vec<String>,
+    #[serde(default)]
+    pub ura: Vec<String>,
+    #[serde(default)]
+    pub honba: u32,
+    #[serde(default)]
+    pub sticks: u32,
+    pub variant: Option<String>,
+    pub han: u32,
+    pub fu: u32,
+    pub yakuman: u32,
+    pub yaku: BTreeMap<String, u32>,
+    pub ron: Option<u32>,
+    pub dealer_pays: Option<u32>,
+    pub others_pay: Option<u32>,
+}
+
+#[derive(Deserialize)]
+struct File {
+    case: Vec<Case>,
+}
+
+pub fn load_cases() -> Vec<Case> {
+    let path = test_data().join("scoring_cases.toml");
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let file: File = toml::from_str(&text).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    file.case
+}
+
+pub fn to_win(c: &Case) -> (Variant, Win) {
+    let variant = Variant::from_name(c.variant.as_deref().unwrap_or("red")).expect("variant");
+    let tiles = parse_tiles(&c.hand).unwrap_or_else(|e| panic!("{}: {e}", c.name));
+    let (win, _) = parse_tile(&c.win).unwrap_or_else(|e| panic!("{}: {e}", c.name));
+    let melds: Vec<_> = c.melds.iter().map(|m| parse_meld(m).unwrap_or_else(|e| panic!("{}: {e}", c.name))).collect();
+    let aka = tiles.red() + melds.iter().map(|m| m.red).sum::<u8>();
+    let wind = |w: &Option<String>, default: u8| w.as_deref().map_or(default, |s| parse_wind(s).expect("wind"));
+    let indicators = |v: &Vec<String>| -> Vec<u8> {
+        v.iter().flat_map(|s| parse_tiles(s).expect("indicator").tiles.into_iter().map(|t| t.0)).collect()
+    };
+    let seat_wind = wind(&c.seat_wind, if c.dealer { 0 } else { 1 });
+    let context = WinContext {
+        tsumo: c.tsumo,
+        riichi: c.riichi || c.double_riichi,
+        double_riichi: c.double_riichi,
+        ippatsu: c.ippatsu,
+        haitei: c.haitei,
+        houtei: c.houtei,
+        rinshan: c.rinshan,
+        chankan: c.chankan,
+        tenhou: c.tenhou,
+        chiihou: c.chiihou,
+        dealer: c.dealer,
+        round_wind: wind(&c.round_wind, 0),
+        seat_wind,
+        dora: indicators(&c.dora),
+        ura: indicators(&c.ura),
+        honba: c.honba,
+        sticks: c.sticks,
+    };
+    (variant, Win { hand: tiles.counts(), win, melds, aka, context })
+}
+
+#[test]
+fn every_case_scores_as_the_rules_say() {
+    let cases = load_cases();
+    assert!(cases.len() >= 60, "at least 60 cases, found {}", cases.len());
+    let mut failures = Vec::new();
+    for c in &cases {
+        let (variant, win) = to_win(c);
+        let s = match score(variant, &win) {
+            Ok(s) => s,
+            Err(e) => {
+                failures.push(format!("{}: {e}", c.name));
+                continue;
+            }
+        };
+        let yaku: BTreeMap<String, u32> = s.yaku.iter().map(|y| (y.name.to_string(), y.han)).collect();
+        let (ron, dealer_pays, others_pay) = match s.payment {
+            Payment::Ron { discarder } => (Some(discarder), None, None),
+            Payment::Tsumo { dealer, others } => (None, dealer, Some(others)),
+        };
+        let expected_dealer_pays = if c.dealer { None } else { c.dealer_pays };
+        let got = (s.han, s.fu, s.yakuman, &yaku, ron, dealer_pays, others_pay);
+        let want = (c.han, c.fu, c.yakuman, &c.yaku, c.ron, expected_dealer_pays, c.others_pay);
+        if got != want {
+            failures.push(format!("{}:\n    expected {want:?}\n    got      {got:?}", c.name));
+        }
+    }
+    assert!(failures.is_empty(), "{} of {} cases differ:\n{}", failures.len(), cases.len(), failures.join("\n"));
+}
+
+#[test]
+fn cases_cover_every_yaku_of_the_spec() {
+    let cases = load_cases();
+    let covered: std::collections::BTreeSet<&str> =
+        cases.iter().flat_map(|c| c.yaku.keys().map(String::as_str)).collect();
+    let names = rinshan::generated::red::host::YAKU_NAMES;
+    let missing: Vec<&&str> = names.iter().filter(|n| !covered.contains(**n)).collect();
+    assert!(missing.is_empty(), "yaku without a scoring case: {missing:?}");
+}
