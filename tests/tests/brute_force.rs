@@ -12,8 +12,8 @@ use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
-use rinshan::hand::{score, Payment, Score, ScoreError, Win};
-use rinshan::notation::{tile_name, MeldKind, Tile};
+use rinshan::hand::{score, Payment, Score, ScoreError, Win, WinContext};
+use rinshan::notation::{parse_meld, parse_tile, parse_tiles, tile_name, MeldKind, Tile};
 use rinshan::random::{random_win, Rng};
 use rinshan::Variant;
 use rinshan_codegen::expr::{eval, Value};
@@ -206,7 +206,11 @@ fn split_into_sets(counts: &mut [u8; 34], acc: &mut Vec<Set>, out: &mut Vec<Vec<
     let tile = t as Tile;
     if counts[t] >= 3 {
         counts[t] -= 3;
-        acc.push(Set { shape: Shape::Triplet, tile, called: None });
+        acc.push(Set {
+            shape: Shape::Triplet,
+            tile,
+            called: None,
+        });
         split_into_sets(counts, acc, out);
         acc.pop();
         counts[t] += 3;
@@ -215,7 +219,11 @@ fn split_into_sets(counts: &mut [u8; 34], acc: &mut Vec<Set>, out: &mut Vec<Vec<
         for k in t..t + 3 {
             counts[k] -= 1;
         }
-        acc.push(Set { shape: Shape::Run, tile, called: None });
+        acc.push(Set {
+            shape: Shape::Run,
+            tile,
+            called: None,
+        });
         split_into_sets(counts, acc, out);
         acc.pop();
         for k in t..t + 3 {
@@ -246,7 +254,11 @@ fn meld_set(kind: MeldKind, tile: Tile) -> Set {
         MeldKind::Pon => Shape::Triplet,
         MeldKind::Kan | MeldKind::Ankan | MeldKind::Kakan => Shape::Quad,
     };
-    Set { shape, tile, called: Some(kind) }
+    Set {
+        shape,
+        tile,
+        called: Some(kind),
+    }
 }
 
 /// What the oracle makes of a hand.
@@ -293,7 +305,11 @@ impl Oracle {
         // The oracle must know every feature the spec knows (a new field would otherwise go unseen).
         let f = Features::default();
         for feature in &oracle.spec.features {
-            assert!(f.get(&feature.name).is_some(), "the oracle does not compute feature `{}`", feature.name);
+            assert!(
+                f.get(&feature.name).is_some(),
+                "the oracle does not compute feature `{}`",
+                feature.name
+            );
         }
         oracle
     }
@@ -314,7 +330,8 @@ impl Oracle {
             .yaku
             .iter()
             .map(|y| {
-                eval(&y.condition, &|name| self.lookup(f, name)).as_bool() && (f.concealed || y.han_open > 0 || y.yakuman > 0)
+                eval(&y.condition, &|name| self.lookup(f, name)).as_bool()
+                    && (f.concealed || y.han_open > 0 || y.yakuman > 0)
             })
             .collect();
         let mut kept = held.clone();
@@ -339,7 +356,13 @@ impl Oracle {
             if !v.multiple_yakuman {
                 total = total.min(1);
             }
-            return Some(Judged { han: 0, fu: 0, yakuman: total, base: 8000 * total, yaku });
+            return Some(Judged {
+                han: 0,
+                fu: 0,
+                yakuman: total,
+                base: 8000 * total,
+                yaku,
+            });
         }
         let mut han = 0;
         for i in (0..n).filter(|&i| kept[i]) {
@@ -351,7 +374,12 @@ impl Oracle {
         if han == 0 {
             return None;
         }
-        let count = |indicators: &[Tile]| indicators.iter().map(|&i| u32::from(all[dora_of(i) as usize])).sum::<u32>();
+        let count = |indicators: &[Tile]| {
+            indicators
+                .iter()
+                .map(|&i| u32::from(all[dora_of(i) as usize]))
+                .sum::<u32>()
+        };
         let dora = count(&win.context.dora);
         let ura = if f.riichi { count(&win.context.ura) } else { 0 };
         let aka = if v.red_fives { u32::from(win.aka) } else { 0 };
@@ -392,7 +420,13 @@ impl Oracle {
                 raw
             }
         };
-        Some(Judged { han, fu, yakuman: 0, base, yaku })
+        Some(Judged {
+            han,
+            fu,
+            yakuman: 0,
+            base,
+            yaku,
+        })
     }
 
     /// Scores `win`: the best readings (all of those tied for best) and the number of readings, or
@@ -430,7 +464,9 @@ impl Oracle {
         common.honors_only = tiles.iter().all(|&t| is_honor(t));
         common.green_only = tiles.iter().all(|&t| is_green(t));
         common.has_honors = tiles.iter().any(|&t| is_honor(t));
-        common.suits = (0..3).filter(|&s| tiles.iter().any(|&t| !is_honor(t) && t / 9 == s)).count() as u32;
+        common.suits = (0..3)
+            .filter(|&s| tiles.iter().any(|&t| !is_honor(t) && t / 9 == s))
+            .count() as u32;
         if win.melds.is_empty() && common.suits == 1 && !common.has_honors {
             let s = (tiles[0] / 9 * 9) as usize;
             let need = [3, 1, 1, 1, 1, 1, 1, 1, 3];
@@ -482,7 +518,12 @@ impl Oracle {
         if melds.is_empty() && (0..34).filter(|&t| hand[t] == 2).count() == 7 {
             readings += 1;
             complete = true;
-            let f = Features { standard: false, seven_pairs: true, pair_wait: true, ..common };
+            let f = Features {
+                standard: false,
+                seven_pairs: true,
+                pair_wait: true,
+                ..common
+            };
             consider(self.judge(win, &all, &f, 0, Some(25)));
         }
         // Thirteen orphans.
@@ -494,7 +535,12 @@ impl Oracle {
             let mut before = *hand;
             before[w as usize] -= 1;
             let thirteen_wait = orphans.iter().all(|&t| before[t as usize] == 1);
-            let f = Features { thirteen_orphans: true, thirteen_wait, pair_wait: thirteen_wait, ..common };
+            let f = Features {
+                thirteen_orphans: true,
+                thirteen_wait,
+                pair_wait: thirteen_wait,
+                ..common
+            };
             consider(self.judge(win, &all, &f, 0, Some(0)));
         }
         let result = if !best.is_empty() {
@@ -513,7 +559,10 @@ fn standard_reading(win: &Win, common: &Features, pair: Tile, sets: &[Set], slot
     let c = &win.context;
     let w = win.win;
     let ron = !c.tsumo;
-    let mut f = Features { standard: true, ..*common };
+    let mut f = Features {
+        standard: true,
+        ..*common
+    };
     let seat = 27 + c.seat_wind;
     let round = 27 + c.round_wind;
     let mut fu = 20;
@@ -521,7 +570,8 @@ fn standard_reading(win: &Win, common: &Features, pair: Tile, sets: &[Set], slot
         fu += 10;
     }
     // A set counts as concealed unless it was called, or is the triplet that a ron completed.
-    let ron_triplet = |s: &Set| ron && slot == Slot::Triplet && s.called.is_none() && s.shape == Shape::Triplet && s.tile == w;
+    let ron_triplet =
+        |s: &Set| ron && slot == Slot::Triplet && s.called.is_none() && s.shape == Shape::Triplet && s.tile == w;
     let is_concealed = |s: &Set| match s.called {
         None => !ron_triplet(s),
         Some(kind) => kind == MeldKind::Ankan,
@@ -619,11 +669,23 @@ fn payment(spec: &Spec, win: &Win, base: u32) -> (Payment, u32) {
         let honba = c.honba * v.honba_tsumo_points;
         if c.dealer {
             let each = ceil100(2 * base) + honba;
-            (Payment::Tsumo { dealer: None, others: each }, 3 * each + sticks)
+            (
+                Payment::Tsumo {
+                    dealer: None,
+                    others: each,
+                },
+                3 * each + sticks,
+            )
         } else {
             let dealer = ceil100(2 * base) + honba;
             let others = ceil100(base) + honba;
-            (Payment::Tsumo { dealer: Some(dealer), others }, dealer + 2 * others + sticks)
+            (
+                Payment::Tsumo {
+                    dealer: Some(dealer),
+                    others,
+                },
+                dealer + 2 * others + sticks,
+            )
         }
     } else {
         let ron = ceil100(base * if c.dealer { 6 } else { 4 }) + c.honba * v.honba_ron_points;
@@ -663,9 +725,20 @@ fn describe(win: &Win) -> String {
         }
         write!(s, " {kind}:{}", notation(&counts)).unwrap();
     }
-    write!(s, " win {} {}", tile_name(win.win), if c.tsumo { "tsumo" } else { "ron" }).unwrap();
+    write!(
+        s,
+        " win {} {}",
+        tile_name(win.win),
+        if c.tsumo { "tsumo" } else { "ron" }
+    )
+    .unwrap();
     let winds = ["E", "S", "W", "N"];
-    write!(s, " round {} seat {}", winds[c.round_wind as usize], winds[c.seat_wind as usize]).unwrap();
+    write!(
+        s,
+        " round {} seat {}",
+        winds[c.round_wind as usize], winds[c.seat_wind as usize]
+    )
+    .unwrap();
     for (flag, name) in [
         (c.riichi, "riichi"),
         (c.double_riichi, "double_riichi"),
@@ -682,8 +755,16 @@ fn describe(win: &Win) -> String {
         }
     }
     let names = |ts: &[Tile]| ts.iter().map(|&t| tile_name(t)).collect::<Vec<_>>().join(",");
-    write!(s, " dora [{}] ura [{}] aka {} honba {} sticks {}", names(&c.dora), names(&c.ura), win.aka, c.honba, c.sticks)
-        .unwrap();
+    write!(
+        s,
+        " dora [{}] ura [{}] aka {} honba {} sticks {}",
+        names(&c.dora),
+        names(&c.ura),
+        win.aka,
+        c.honba,
+        c.sticks
+    )
+    .unwrap();
     s
 }
 
@@ -696,12 +777,21 @@ fn kind(r: &Result<impl Sized, ScoreError>) -> &'static str {
     }
 }
 
-/// Why the kernel's score differs from the oracle's, or `None` when they agree.
-fn compare(oracle: &Oracle, win: &Win, expected: &Result<Vec<Judged>, ScoreError>, got: &Result<Score, ScoreError>) -> Option<String> {
+/// Why the kernel's score differs from the oracle's, as (kind of difference, details), or `None`
+/// when they agree. Among readings tied for best (same base, han and fu) any yaku list is accepted.
+fn compare(
+    oracle: &Oracle,
+    win: &Win,
+    expected: &Result<Vec<Judged>, ScoreError>,
+    got: &Result<Score, ScoreError>,
+) -> Option<(String, String)> {
     let (best, s) = match (expected, got) {
         (Ok(best), Ok(s)) => (best, s),
         _ if kind(expected) == kind(got) => return None,
-        _ => return Some(format!("oracle {expected:?}\n    rinshan {got:?}")),
+        _ => {
+            let what = format!("oracle {} / rinshan {}", kind(expected), kind(got));
+            return Some((what, format!("oracle {expected:?}\n    rinshan {got:?}")));
+        }
     };
     let yaku: BTreeMap<String, u32> = s.yaku.iter().map(|y| (y.name.to_string(), y.han)).collect();
     let j = &best[0];
@@ -712,21 +802,21 @@ fn compare(oracle: &Oracle, win: &Win, expected: &Result<Vec<Judged>, ScoreError
     if same {
         return None;
     }
-    Some(format!(
-        "oracle han {} fu {} yakuman {} base {} {pay:?} gain {gain} yaku {:?}{}\n    rinshan han {} fu {} yakuman {} base {} {:?} gain {} yaku {:?}",
-        j.han,
-        j.fu,
-        j.yakuman,
-        j.base,
-        j.yaku,
-        if best.len() > 1 { format!(" (or, tied: {:?})", best[1..].iter().map(|b| &b.yaku).collect::<Vec<_>>()) } else { String::new() },
-        s.han,
-        s.fu,
-        s.yakuman,
-        s.base,
-        s.payment,
-        s.gain,
-        yaku
+    let tied = if best.len() > 1 {
+        format!(
+            " (or, tied: {:?})",
+            best[1..].iter().map(|b| &b.yaku).collect::<Vec<_>>()
+        )
+    } else {
+        String::new()
+    };
+    Some((
+        "different score".to_string(),
+        format!(
+            "oracle han {} fu {} yakuman {} base {} {pay:?} gain {gain} yaku {:?}{tied}\n    \
+             rinshan han {} fu {} yakuman {} base {} {:?} gain {} yaku {:?}",
+            j.han, j.fu, j.yakuman, j.base, j.yaku, s.han, s.fu, s.yakuman, s.base, s.payment, s.gain, yaku
+        ),
     ))
 }
 
@@ -745,8 +835,8 @@ fn check_random_wins(variant_name: &str, seeds: std::ops::Range<u64>) -> Stats {
     let oracle = Oracle::new(variant_name);
     let variant = Variant::from_name(variant_name).expect("variant");
     let mut stats = Stats::default();
-    let mut mismatches = Vec::new();
-    let mut n_mismatches = 0;
+    // Kind of difference -> (number of hands, the first few of them).
+    let mut mismatches: BTreeMap<String, (usize, Vec<String>)> = BTreeMap::new();
     for seed in seeds {
         let win = random_win(&mut Rng::new(seed));
         let (expected, readings) = oracle.score(&win);
@@ -764,23 +854,33 @@ fn check_random_wins(variant_name: &str, seeds: std::ops::Range<u64>) -> Stats {
             Err(ScoreError::NoYaku) => stats.no_yaku += 1,
             Err(_) => stats.not_complete += 1,
         }
-        if let Some(why) = compare(&oracle, &win, &expected, &got) {
-            n_mismatches += 1;
-            if mismatches.len() < 10 {
-                mismatches.push(format!("seed {seed}: {}\n    {why}", describe(&win)));
+        if let Some((what, why)) = compare(&oracle, &win, &expected, &got) {
+            let entry = mismatches.entry(what).or_default();
+            entry.0 += 1;
+            if entry.1.len() < 5 {
+                entry.1.push(format!("seed {seed}: {}\n    {why}", describe(&win)));
             }
         }
     }
-    let unseen: Vec<&str> =
-        oracle.spec.yaku.iter().map(|y| y.name.as_str()).filter(|n| !stats.seen_yaku.contains_key(*n)).collect();
+    let unseen: Vec<&str> = oracle
+        .spec
+        .yaku
+        .iter()
+        .map(|y| y.name.as_str())
+        .filter(|n| !stats.seen_yaku.contains_key(*n))
+        .collect();
     eprintln!(
         "{variant_name}: {} wins ({} yakuman, {} with several readings, {} with tied best readings), {} without yaku, {} not complete; yaku never seen: {unseen:?}",
         stats.wins, stats.yakuman, stats.multi_reading_wins, stats.ties, stats.no_yaku, stats.not_complete
     );
+    let report: Vec<String> = mismatches
+        .iter()
+        .map(|(what, (n, first))| format!("{n} hands: {what}; the first ones:\n{}", first.join("\n")))
+        .collect();
     assert!(
         mismatches.is_empty(),
-        "{n_mismatches} hands scored differently by rinshan and the brute-force oracle ({variant_name}); the first ones:\n{}",
-        mismatches.join("\n")
+        "rinshan and the brute-force oracle disagree ({variant_name}):\n{}",
+        report.join("\n")
     );
     stats
 }
@@ -788,14 +888,124 @@ fn check_random_wins(variant_name: &str, seeds: std::ops::Range<u64>) -> Stats {
 #[test]
 fn brute_force_agrees_on_100000_random_wins() {
     let stats = check_random_wins("red", 0..100_000);
-    assert!(stats.multi_reading_wins > 1000, "too few wins with several readings: {stats:?}");
-    assert!(stats.wins > 50_000 && stats.no_yaku > 1000 && stats.yakuman > 100, "{stats:?}");
+    assert!(
+        stats.multi_reading_wins > 1000,
+        "too few wins with several readings: {stats:?}"
+    );
+    assert!(
+        stats.wins > 50_000 && stats.no_yaku > 1000 && stats.yakuman > 100,
+        "{stats:?}"
+    );
     assert!(stats.seen_yaku.contains_key("aka"), "{stats:?}");
 }
 
 #[test]
 fn brute_force_agrees_on_20000_random_no_red_wins() {
     let stats = check_random_wins("no_red", 1 << 40..(1 << 40) + 20_000);
-    assert!(stats.multi_reading_wins > 200, "too few wins with several readings: {stats:?}");
+    assert!(
+        stats.multi_reading_wins > 200,
+        "too few wins with several readings: {stats:?}"
+    );
     assert!(!stats.seen_yaku.contains_key("aka"), "{stats:?}");
+}
+
+/// A hand picked by hand: (concealed tiles with the winning one, winning tile, melds, tsumo, riichi,
+/// round wind, seat wind), and what the rules make of it: Ok((han, fu, yakuman)) or the error.
+type Picked = (
+    &'static str,
+    &'static str,
+    &'static [&'static str],
+    bool,
+    bool,
+    u8,
+    u8,
+    Result<(u32, u32, u32), ScoreError>,
+);
+
+/// Worked out by hand from the rules, and reaching the yakuman random hands rarely make.
+const PICKED: [Picked; 11] = [
+    // menzen tsumo + pinfu: 20 fu flat.
+    ("123456m234p678s55p", "4m", &[], true, false, 0, 1, Ok((2, 20, 0))),
+    // chiitoitsu: 25 fu.
+    ("1133m5577p22s66s77z", "2s", &[], false, false, 0, 1, Ok((2, 25, 0))),
+    // riichi, dealer, double-East pair 4 + closed ron 10 + kanchan 2 = 36 -> 40 fu.
+    ("123m456p789s345s11z", "8s", &[], false, true, 0, 0, Ok((1, 40, 0))),
+    // tanyao; the triplet completed by ron counts open: 20 + 10 + 4 + 4 + 2 = 40 fu, no sanankou.
+    ("222m444p666s345m88m", "6s", &[], false, false, 0, 1, Ok((1, 40, 0))),
+    // junsei chuuren (double).
+    ("11123455678999m", "5m", &[], false, false, 0, 1, Ok((0, 0, 2))),
+    // chuuren: before the win 1112345778999m, not the nine-sided wait.
+    ("11123456778999m", "6m", &[], false, false, 0, 1, Ok((0, 0, 1))),
+    // daisuushi (double) + suuankou tanki (double).
+    ("111222333444z55m", "5m", &[], true, false, 0, 1, Ok((0, 0, 4))),
+    // shousuushi.
+    ("11122233344z123m", "3m", &[], false, false, 0, 1, Ok((0, 0, 1))),
+    // chinroutou (the ron on 999s leaves three concealed triplets: no suuankou).
+    ("111999m111p99911s", "9s", &[], false, false, 0, 1, Ok((0, 0, 1))),
+    // kokushi with the thirteen-sided wait (double).
+    ("19m19p19s12345677z", "7z", &[], false, false, 0, 1, Ok((0, 0, 2))),
+    // open, complete, no yaku.
+    (
+        "456p789s234s55p",
+        "2s",
+        &["chi:123m"],
+        false,
+        false,
+        0,
+        1,
+        Err(ScoreError::NoYaku),
+    ),
+];
+
+fn picked_win(p: &Picked) -> Win {
+    let (hand, win, melds, tsumo, riichi, round_wind, seat_wind, _) = *p;
+    let tiles = parse_tiles(hand).unwrap();
+    let melds: Vec<_> = melds.iter().map(|m| parse_meld(m).unwrap()).collect();
+    let context = WinContext {
+        tsumo,
+        riichi,
+        dealer: seat_wind == 0,
+        round_wind,
+        seat_wind,
+        ..WinContext::default()
+    };
+    Win {
+        hand: tiles.counts(),
+        win: parse_tile(win).unwrap().0,
+        melds,
+        aka: 0,
+        context,
+    }
+}
+
+#[test]
+fn oracle_matches_hand_worked_values() {
+    let oracle = Oracle::new("red");
+    for p in &PICKED {
+        let win = picked_win(p);
+        let got = oracle
+            .score(&win)
+            .0
+            .map(|best| (best[0].han, best[0].fu, best[0].yakuman));
+        assert_eq!(got, p.7, "oracle on {}", describe(&win));
+    }
+}
+
+#[test]
+fn brute_force_agrees_on_hand_picked_wins() {
+    let oracle = Oracle::new("red");
+    let variant = Variant::from_name("red").unwrap();
+    let mut mismatches = Vec::new();
+    for p in &PICKED {
+        let win = picked_win(p);
+        let expected = oracle.score(&win).0;
+        if let Some((what, why)) = compare(&oracle, &win, &expected, &score(variant, &win)) {
+            mismatches.push(format!("{}: {what}\n    {why}", describe(&win)));
+        }
+    }
+    assert!(
+        mismatches.is_empty(),
+        "rinshan and the brute-force oracle disagree:\n{}",
+        mismatches.join("\n")
+    );
 }
