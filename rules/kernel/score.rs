@@ -524,9 +524,20 @@ fn judge(inp: ScoreInput, h: HandInfo, f: Features, fu: u32, fixed_fu: u32) -> J
     j
 }
 
+// A win beats a complete hand without yaku, which beats no reading at all.
+fn status_rank(status: u32) -> u32 {
+    if status == STATUS_WIN {
+        return 2u32;
+    }
+    if status == STATUS_NO_YAKU {
+        return 1u32;
+    }
+    0u32
+}
+
 fn better(a: Judged, b: Judged) -> bool {
     if a.status != b.status {
-        return a.status < b.status;
+        return status_rank(a.status) > status_rank(b.status);
     }
     if a.base != b.base {
         return a.base > b.base;

@@ -68,6 +68,19 @@ impl Kernel {
     }
 }
 
+fn request_adapter(backends: wgpu::Backends) -> Result<wgpu::Adapter, GpuError> {
+    let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
+    desc.backends = backends;
+    let instance = wgpu::Instance::new(desc);
+    pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
+        power_preference: wgpu::PowerPreference::HighPerformance,
+        force_fallback_adapter: false,
+        compatible_surface: None,
+        ..Default::default()
+    }))
+    .map_err(|e| GpuError::NoAdapter(e.to_string()))
+}
+
 /// A GPU device with the tables uploaded once and one pipeline per (variant, kernel), made on first use.
 pub struct Gpu {
     device: wgpu::Device,
@@ -80,16 +93,11 @@ pub struct Gpu {
 impl Gpu {
     /// Opens the first adapter wgpu offers (a real GPU first, else a software one).
     pub fn new() -> Result<Gpu, GpuError> {
-        let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
-        desc.backends = wgpu::Backends::from_env().unwrap_or(wgpu::Backends::all());
-        let instance = wgpu::Instance::new(desc);
-        let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
-            power_preference: wgpu::PowerPreference::HighPerformance,
-            force_fallback_adapter: false,
-            compatible_surface: None,
-            ..Default::default()
-        }))
-        .map_err(|e| GpuError::NoAdapter(e.to_string()))?;
+        // GL is only a fallback: probing it first prints EGL/Wayland noise on headless machines.
+        let adapter = match wgpu::Backends::from_env() {
+            Some(backends) => request_adapter(backends),
+            None => request_adapter(wgpu::Backends::PRIMARY).or_else(|_| request_adapter(wgpu::Backends::GL)),
+        }?;
         let info = adapter.get_info();
         let mut limits = wgpu::Limits::default();
         let available = adapter.limits();
