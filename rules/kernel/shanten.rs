@@ -55,40 +55,41 @@ fn shanten_normal(hand: [u32; 34], tiles: u32) -> i32 {
     let mut acc: [u32; 10] = group_costs(T_SUIT_COST, suit_code(hand, 0u32));
     acc = combine_costs(acc, group_costs(T_SUIT_COST, suit_code(hand, 1u32)));
     acc = combine_costs(acc, group_costs(T_SUIT_COST, suit_code(hand, 2u32)));
-    acc = combine_costs(acc, group_costs(T_HONOR_COST, honor_code(hand)));
-    (acc[(sets * 2u32 + 1u32) as usize] as i32) - 1i32
+    // Only one entry of the last combination is needed: `sets` sets and the pair in all.
+    let honors: [u32; 10] = group_costs(T_HONOR_COST, honor_code(hand));
+    let mut best: u32 = 255u32;
+    for m in 0u32..sets + 1u32 {
+        for h in 0u32..2u32 {
+            let v: u32 = acc[(m * 2u32 + h) as usize] + honors[((sets - m) * 2u32 + 1u32 - h) as usize];
+            best = best.min(v);
+        }
+    }
+    (best as i32) - 1i32
 }
 
-fn shanten_chiitoitsu(hand: [u32; 34]) -> i32 {
+// Seven pairs and thirteen orphans in one pass over the hand.
+fn shanten_pairs_and_orphans(hand: [u32; 34]) -> [i32; 2] {
     let mut pairs: i32 = 0i32;
     let mut kinds: i32 = 0i32;
+    let mut orphan_kinds: i32 = 0i32;
+    let mut orphan_pair: i32 = 0i32;
     for t in 0u32..N_TYPES {
-        if hand[t as usize] >= 2u32 {
-            pairs += 1i32;
-        }
-        if hand[t as usize] >= 1u32 {
+        let c: u32 = hand[t as usize];
+        if c >= 1u32 {
             kinds += 1i32;
-        }
-    }
-    let mut missing_kinds: i32 = 7i32 - kinds;
-    if missing_kinds < 0i32 {
-        missing_kinds = 0i32;
-    }
-    6i32 - pairs.min(7i32) + missing_kinds
-}
-
-fn shanten_kokushi(hand: [u32; 34]) -> i32 {
-    let mut kinds: i32 = 0i32;
-    let mut pair: i32 = 0i32;
-    for t in 0u32..N_TYPES {
-        if is_terminal_or_honor(t) && hand[t as usize] >= 1u32 {
-            kinds += 1i32;
-            if hand[t as usize] >= 2u32 {
-                pair = 1i32;
+            if c >= 2u32 {
+                pairs += 1i32;
+            }
+            if is_terminal_or_honor(t) {
+                orphan_kinds += 1i32;
+                if c >= 2u32 {
+                    orphan_pair = 1i32;
+                }
             }
         }
     }
-    13i32 - kinds - pair
+    let missing_kinds: i32 = (7i32 - kinds).max(0i32);
+    [6i32 - pairs.min(7i32) + missing_kinds, 13i32 - orphan_kinds - orphan_pair]
 }
 
 pub fn shanten(inp: ShantenInput) -> ShantenOutput {
@@ -100,8 +101,9 @@ pub fn shanten(inp: ShantenInput) -> ShantenOutput {
     let mut chiitoitsu: i32 = SHANTEN_NOT_APPLICABLE;
     let mut kokushi: i32 = SHANTEN_NOT_APPLICABLE;
     if tiles >= 13u32 {
-        chiitoitsu = shanten_chiitoitsu(inp.hand);
-        kokushi = shanten_kokushi(inp.hand);
+        let special: [i32; 2] = shanten_pairs_and_orphans(inp.hand);
+        chiitoitsu = special[0];
+        kokushi = special[1];
     }
     ShantenOutput {
         shanten: normal.min(chiitoitsu).min(kokushi),
