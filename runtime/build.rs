@@ -7,11 +7,7 @@ use std::process::exit;
 
 use rinshan_shaders_gen::{Entry, Source};
 
-/// The kernel entry points every variant exposes to the GPU backend.
-const ENTRIES: [(&str, &str, &str, &str); 2] = [
-    ("shanten_main", "shanten", "ShantenInput", "ShantenOutput"),
-    ("score_main", "score_hand", "ScoreInput", "ScoreOutput"),
-];
+include!("src/entries.rs");
 
 fn fail(message: impl std::fmt::Display) -> ! {
     eprintln!("error: {message}");

@@ -4,6 +4,7 @@
 //! so parity is a comparison of words.
 
 use std::collections::HashMap;
+use std::hash::{Hash, Hasher};
 use std::sync::mpsc;
 
 use wgpu::util::DeviceExt;
@@ -87,7 +88,8 @@ pub struct Gpu {
     queue: wgpu::Queue,
     info: wgpu::AdapterInfo,
     tables: wgpu::Buffer,
-    pipelines: HashMap<(Variant, Kernel), (wgpu::ComputePipeline, wgpu::BindGroupLayout)>,
+    // Keyed by a hash of the WGSL source, so custom modules (a spec compiled at run time) work too.
+    pipelines: HashMap<(u64, Kernel), (wgpu::ComputePipeline, wgpu::BindGroupLayout)>,
 }
 
 impl Gpu {
@@ -123,13 +125,14 @@ impl Gpu {
         format!("{} ({:?}, {:?})", self.info.name, self.info.backend, self.info.device_type)
     }
 
-    fn pipeline(&mut self, variant: Variant, kernel: Kernel) -> &(wgpu::ComputePipeline, wgpu::BindGroupLayout) {
+    fn pipeline(&mut self, wgsl: &str, kernel: Kernel) -> &(wgpu::ComputePipeline, wgpu::BindGroupLayout) {
         let device = &self.device;
-        self.pipelines.entry((variant, kernel)).or_insert_with(|| {
-            let source = with_variant!(variant, v => v::WGSL);
+        let mut hasher = std::collections::hash_map::DefaultHasher::new();
+        wgsl.hash(&mut hasher);
+        self.pipelines.entry((hasher.finish(), kernel)).or_insert_with(|| {
             let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-                label: Some(variant.name()),
-                source: wgpu::ShaderSource::Wgsl(source.into()),
+                label: Some("rinshan kernels"),
+                source: wgpu::ShaderSource::Wgsl(wgsl.to_string().into()),
             });
             let storage = |binding: u32, read_only: bool| wgpu::BindGroupLayoutEntry {
                 binding,
@@ -165,6 +168,12 @@ impl Gpu {
 
     /// Runs `kernel` of `variant` over `inputs` (whole records of raw words) and reads back the outputs.
     pub fn run(&mut self, variant: Variant, kernel: Kernel, inputs: &[u32]) -> Result<Vec<u32>, GpuError> {
+        self.run_wgsl(with_variant!(variant, v => v::WGSL), kernel, inputs)
+    }
+
+    /// As [`Gpu::run`] with WGSL translated elsewhere, e.g. from a spec edited at run time through
+    /// `rinshan-codegen` and `rinshan-shaders-gen`; it must have the same entry points and bindings.
+    pub fn run_wgsl(&mut self, wgsl: &str, kernel: Kernel, inputs: &[u32]) -> Result<Vec<u32>, GpuError> {
         let (in_words, out_words) = kernel.words();
         if inputs.len() % in_words != 0 {
             return Err(GpuError::BadInput(format!("{} words is not a whole number of {in_words}-word records", inputs.len())));
@@ -173,12 +182,12 @@ impl Gpu {
         let mut outputs = Vec::with_capacity(n * out_words);
         // One dispatch covers at most MAX_GROUPS workgroups; bigger batches go in chunks.
         for chunk in inputs.chunks(in_words * WORKGROUP * MAX_GROUPS) {
-            outputs.extend(self.run_chunk(variant, kernel, chunk)?);
+            outputs.extend(self.run_chunk(wgsl, kernel, chunk)?);
         }
         Ok(outputs)
     }
 
-    fn run_chunk(&mut self, variant: Variant, kernel: Kernel, inputs: &[u32]) -> Result<Vec<u32>, GpuError> {
+    fn run_chunk(&mut self, wgsl: &str, kernel: Kernel, inputs: &[u32]) -> Result<Vec<u32>, GpuError> {
         let (in_words, out_words) = kernel.words();
         let n = inputs.len() / in_words;
         if n == 0 {
@@ -204,7 +213,7 @@ impl Gpu {
             mapped_at_creation: false,
         });
         let tables = self.tables.clone();
-        let (pipeline, layout) = self.pipeline(variant, kernel).clone();
+        let (pipeline, layout) = self.pipeline(wgsl, kernel).clone();
         let bind_group = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("rinshan bindings"),
             layout: &layout,

@@ -17,6 +17,7 @@ pub mod generated {
     include!(concat!(env!("OUT_DIR"), "/generated.rs"));
 }
 
+pub mod entries;
 pub mod gpu;
 pub mod hand;
 pub mod notation;

@@ -141,3 +141,20 @@ fn cases_cover_every_yaku_of_the_spec() {
     let missing: Vec<&&str> = names.iter().filter(|n| !covered.contains(**n)).collect();
     assert!(missing.is_empty(), "yaku without a scoring case: {missing:?}");
 }
+
+#[test]
+fn every_case_is_identical_on_the_gpu() {
+    let Some(mut gpu) = rinshan_tests::gpu_or_skip("scoring cases on the gpu") else { return };
+    let cases = load_cases();
+    for &variant in Variant::ALL {
+        let chosen: Vec<_> = cases.iter().map(to_win).filter(|(v, _)| *v == variant).map(|(_, w)| w).collect();
+        if chosen.is_empty() {
+            continue;
+        }
+        let inputs: Vec<u32> = chosen.iter().flat_map(|w| rinshan::hand::score_input(w).expect("consistent")).collect();
+        let mut cpu = vec![0u32; chosen.len() * rinshan::hand::SCORE_OUT_WORDS];
+        rinshan::hand::score_batch(variant, &inputs, &mut cpu);
+        let out = gpu.run(variant, rinshan::gpu::Kernel::Score, &inputs).expect("gpu run");
+        assert_eq!(out, cpu, "{variant}");
+    }
+}
