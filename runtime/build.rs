@@ -50,7 +50,8 @@ fn camel(name: &str) -> String {
 }
 
 fn main() {
-    let manifest = PathBuf::from(std::env::var("CARGO_MANIFEST_DIR").unwrap_or_else(|_| fail("CARGO_MANIFEST_DIR unset")));
+    let manifest =
+        PathBuf::from(std::env::var("CARGO_MANIFEST_DIR").unwrap_or_else(|_| fail("CARGO_MANIFEST_DIR unset")));
     let out = PathBuf::from(std::env::var("OUT_DIR").unwrap_or_else(|_| fail("OUT_DIR unset")));
     let rules = manifest.join("..").join("rules");
     println!("cargo:rerun-if-changed={}", rules.display());
@@ -90,10 +91,19 @@ fn main() {
         write(&out.join(format!("{variant}_host.rs")), &generated.host_rust);
 
         let mut sources = vec![
-            Source { path: consts_file.display().to_string(), text: generated.kernel_rust.clone() },
-            Source { path: out.join("table_consts.rs").display().to_string(), text: table_consts.clone() },
+            Source {
+                path: consts_file.display().to_string(),
+                text: generated.kernel_rust.clone(),
+            },
+            Source {
+                path: out.join("table_consts.rs").display().to_string(),
+                text: table_consts.clone(),
+            },
         ];
-        sources.extend(kernel.iter().map(|(p, t)| Source { path: p.display().to_string(), text: t.clone() }));
+        sources.extend(kernel.iter().map(|(p, t)| Source {
+            path: p.display().to_string(),
+            text: t.clone(),
+        }));
         let entries: Vec<Entry> = ENTRIES
             .iter()
             .map(|(name, function, input, output)| Entry {
@@ -111,10 +121,19 @@ fn main() {
 
         let mut module = String::new();
         let _ = writeln!(module, "pub mod {variant} {{");
-        let _ = writeln!(module, "    #![allow(dead_code, clippy::all, unused_parens, unused_variables)]");
+        let _ = writeln!(
+            module,
+            "    #![allow(dead_code, clippy::all, unused_parens, unused_variables)]"
+        );
         let _ = writeln!(module, "    use crate::tables::table;");
-        let _ = writeln!(module, "    include!(concat!(env!(\"OUT_DIR\"), \"/{variant}_consts.rs\"));");
-        let _ = writeln!(module, "    include!(concat!(env!(\"OUT_DIR\"), \"/table_consts.rs\"));");
+        let _ = writeln!(
+            module,
+            "    include!(concat!(env!(\"OUT_DIR\"), \"/{variant}_consts.rs\"));"
+        );
+        let _ = writeln!(
+            module,
+            "    include!(concat!(env!(\"OUT_DIR\"), \"/table_consts.rs\"));"
+        );
         for (path, _) in &kernel {
             let _ = writeln!(module, "    include!({:?});", path.display().to_string());
         }
@@ -124,8 +143,14 @@ fn main() {
                 let _ = writeln!(module, "    unsafe impl bytemuck::Pod for {ty} {{}}");
             }
         }
-        let _ = writeln!(module, "    pub mod host {{ include!(concat!(env!(\"OUT_DIR\"), \"/{variant}_host.rs\")); }}");
-        let _ = writeln!(module, "    pub const WGSL: &str = include_str!(concat!(env!(\"OUT_DIR\"), \"/{variant}.wgsl\"));");
+        let _ = writeln!(
+            module,
+            "    pub mod host {{ include!(concat!(env!(\"OUT_DIR\"), \"/{variant}_host.rs\")); }}"
+        );
+        let _ = writeln!(
+            module,
+            "    pub const WGSL: &str = include_str!(concat!(env!(\"OUT_DIR\"), \"/{variant}.wgsl\"));"
+        );
         let _ = writeln!(module, "}}");
         modules.push_str(&module);
     }
@@ -150,7 +175,11 @@ fn main() {
     // Included at the crate root before the modules that use it (textual macro scope).
     let mut dispatch = String::from("/// Runs `$body` with `$m` bound to the generated module of variant `$v`.\nmacro_rules! with_variant {\n    ($v:expr, $m:ident => $body:expr) => {\n        match $v {\n");
     for v in &variants {
-        let _ = writeln!(dispatch, "            $crate::Variant::{} => {{ use $crate::generated::{v} as $m; $body }}", camel(v));
+        let _ = writeln!(
+            dispatch,
+            "            $crate::Variant::{} => {{ use $crate::generated::{v} as $m; $body }}",
+            camel(v)
+        );
     }
     dispatch.push_str("        }\n    };\n}\n");
     write(&out.join("dispatch.rs"), dispatch);

@@ -105,7 +105,9 @@ impl Gpu {
         let available = adapter.limits();
         limits.max_storage_buffer_binding_size = available.max_storage_buffer_binding_size;
         limits.max_buffer_size = available.max_buffer_size;
-        limits.max_storage_buffers_per_shader_stage = available.max_storage_buffers_per_shader_stage.max(limits.max_storage_buffers_per_shader_stage);
+        limits.max_storage_buffers_per_shader_stage = available
+            .max_storage_buffers_per_shader_stage
+            .max(limits.max_storage_buffers_per_shader_stage);
         let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
             label: Some("rinshan"),
             required_limits: limits,
@@ -117,12 +119,21 @@ impl Gpu {
             contents: tables::bytes(),
             usage: wgpu::BufferUsages::STORAGE,
         });
-        Ok(Gpu { device, queue, info, tables, pipelines: HashMap::new() })
+        Ok(Gpu {
+            device,
+            queue,
+            info,
+            tables,
+            pipelines: HashMap::new(),
+        })
     }
 
     /// The adapter's name and backend, e.g. `llvmpipe (LLVM 15.0.6, 256 bits) (Vulkan)`.
     pub fn adapter(&self) -> String {
-        format!("{} ({:?}, {:?})", self.info.name, self.info.backend, self.info.device_type)
+        format!(
+            "{} ({:?}, {:?})",
+            self.info.name, self.info.backend, self.info.device_type
+        )
     }
 
     fn pipeline(&mut self, wgsl: &str, kernel: Kernel) -> &(wgpu::ComputePipeline, wgpu::BindGroupLayout) {
@@ -175,8 +186,11 @@ impl Gpu {
     /// `rinshan-codegen` and `rinshan-shaders-gen`; it must have the same entry points and bindings.
     pub fn run_wgsl(&mut self, wgsl: &str, kernel: Kernel, inputs: &[u32]) -> Result<Vec<u32>, GpuError> {
         let (in_words, out_words) = kernel.words();
-        if inputs.len() % in_words != 0 {
-            return Err(GpuError::BadInput(format!("{} words is not a whole number of {in_words}-word records", inputs.len())));
+        if !inputs.len().is_multiple_of(in_words) {
+            return Err(GpuError::BadInput(format!(
+                "{} words is not a whole number of {in_words}-word records",
+                inputs.len()
+            )));
         }
         let n = inputs.len() / in_words;
         let mut outputs = Vec::with_capacity(n * out_words);
@@ -218,14 +232,28 @@ impl Gpu {
             label: Some("rinshan bindings"),
             layout: &layout,
             entries: &[
-                wgpu::BindGroupEntry { binding: 0, resource: tables.as_entire_binding() },
-                wgpu::BindGroupEntry { binding: input, resource: input_buffer.as_entire_binding() },
-                wgpu::BindGroupEntry { binding: output, resource: output_buffer.as_entire_binding() },
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: tables.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: input,
+                    resource: input_buffer.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: output,
+                    resource: output_buffer.as_entire_binding(),
+                },
             ],
         });
-        let mut encoder = self.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("rinshan") });
+        let mut encoder = self
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("rinshan") });
         {
-            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some(kernel.entry()), timestamp_writes: None });
+            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                label: Some(kernel.entry()),
+                timestamp_writes: None,
+            });
             pass.set_pipeline(&pipeline);
             pass.set_bind_group(0, &bind_group, &[]);
             pass.dispatch_workgroups(n.div_ceil(WORKGROUP) as u32, 1, 1);
@@ -244,7 +272,9 @@ impl Gpu {
             Ok(Err(e)) => return Err(GpuError::Readback(e.to_string())),
             Err(e) => return Err(GpuError::Readback(e.to_string())),
         }
-        let view = readback.get_mapped_range(..).map_err(|e| GpuError::Readback(format!("{e:?}")))?;
+        let view = readback
+            .get_mapped_range(..)
+            .map_err(|e| GpuError::Readback(format!("{e:?}")))?;
         let words: Vec<u32> = bytemuck::cast_slice(&view).to_vec();
         drop(view);
         readback.unmap();

@@ -42,7 +42,12 @@ pub fn shanten_input(counts: &[u8; 34]) -> [u32; SHANTEN_IN_WORDS] {
 pub fn decode_shanten(words: &[u32]) -> Shanten {
     let get = |i: usize| words[i] as i32;
     let opt = |x: i32| (x != NOT_APPLICABLE).then_some(x);
-    Shanten { shanten: get(0), normal: get(1), chiitoitsu: opt(get(2)), kokushi: opt(get(3)) }
+    Shanten {
+        shanten: get(0),
+        normal: get(1),
+        chiitoitsu: opt(get(2)),
+        kokushi: opt(get(3)),
+    }
 }
 
 /// Shanten of one hand of 1 to 14 concealed tiles (counts per type, each at most 4).
@@ -126,7 +131,9 @@ impl std::fmt::Display for ScoreError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             ScoreError::BadInput(m) => write!(f, "invalid hand: {m}"),
-            ScoreError::NotComplete => f.write_str("not a winning hand: the tiles do not form four sets and a pair, seven pairs or thirteen orphans"),
+            ScoreError::NotComplete => f.write_str(
+                "not a winning hand: the tiles do not form four sets and a pair, seven pairs or thirteen orphans",
+            ),
             ScoreError::NoYaku => f.write_str("the hand is complete but has no yaku (dora alone do not count)"),
         }
     }
@@ -144,9 +151,14 @@ pub struct Yaku {
 /// Who pays what, in points, honba included and riichi sticks excluded.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Payment {
-    Ron { discarder: u32 },
+    Ron {
+        discarder: u32,
+    },
     /// `dealer` is `None` when the dealer is the winner (then all three pay `others`).
-    Tsumo { dealer: Option<u32>, others: u32 },
+    Tsumo {
+        dealer: Option<u32>,
+        others: u32,
+    },
 }
 
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -202,7 +214,11 @@ pub fn score_input(win: &Win) -> Result<[u32; SCORE_IN_WORDS], ScoreError> {
         }
     }
     if let Some(t) = all.iter().position(|&n| n > 4) {
-        return Err(bad(format!("{} copies of {}: there are only 4", all[t], crate::notation::tile_name(t as u8))));
+        return Err(bad(format!(
+            "{} copies of {}: there are only 4",
+            all[t],
+            crate::notation::tile_name(t as u8)
+        )));
     }
     let concealed: usize = win.hand.iter().map(|&n| n as usize).sum();
     if concealed + 3 * win.melds.len() != 14 {
@@ -215,17 +231,32 @@ pub fn score_input(win: &Win) -> Result<[u32; SCORE_IN_WORDS], ScoreError> {
     if win.aka > fives.min(3) {
         return Err(bad(format!("{} red fives but only {fives} fives", win.aka)));
     }
-    let flags = [c.tsumo, c.riichi, c.double_riichi, c.ippatsu, c.haitei, c.houtei, c.rinshan, c.chankan, c.tenhou, c.chiihou, c.dealer];
+    let flags = [
+        c.tsumo,
+        c.riichi,
+        c.double_riichi,
+        c.ippatsu,
+        c.haitei,
+        c.houtei,
+        c.rinshan,
+        c.chankan,
+        c.tenhou,
+        c.chiihou,
+        c.dealer,
+    ];
     let mut w = [0u32; SCORE_IN_WORDS];
-    for t in 0..34 {
-        w[t] = u32::from(win.hand[t]);
+    for (word, &count) in w.iter_mut().zip(&win.hand) {
+        *word = u32::from(count);
     }
     w[34] = u32::from(win.win);
     for (i, m) in win.melds.iter().enumerate() {
         w[35 + i] = meld_word(m);
     }
     w[39] = win.melds.len() as u32;
-    w[40] = flags.iter().enumerate().fold(0, |acc, (i, &f)| acc | (u32::from(f) << i));
+    w[40] = flags
+        .iter()
+        .enumerate()
+        .fold(0, |acc, (i, &f)| acc | (u32::from(f) << i));
     w[41] = u32::from(c.round_wind);
     w[42] = u32::from(c.seat_wind);
     for (i, &t) in c.dora.iter().enumerate() {
@@ -276,9 +307,20 @@ pub fn decode_score(variant: Variant, w: &[u32]) -> Result<Score, ScoreError> {
     let payment = if w[10] > 0 {
         Payment::Ron { discarder: w[10] }
     } else {
-        Payment::Tsumo { dealer: (w[11] > 0).then_some(w[11]), others: w[12] }
+        Payment::Tsumo {
+            dealer: (w[11] > 0).then_some(w[11]),
+            others: w[12],
+        }
     };
-    Ok(Score { han, fu, yakuman, yaku, base, payment, gain: w[13] })
+    Ok(Score {
+        han,
+        fu,
+        yakuman,
+        yaku,
+        base,
+        payment,
+        gain: w[13],
+    })
 }
 
 /// Runs the scoring kernel over `inputs` (SCORE_IN_WORDS each) into `outputs`, on the calling thread.

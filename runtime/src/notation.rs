@@ -18,7 +18,13 @@ pub struct NotationError {
 
 impl fmt::Display for NotationError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "in `{}` at character {}: {}", self.input, self.position + 1, self.message)
+        write!(
+            f,
+            "in `{}` at character {}: {}",
+            self.input,
+            self.position + 1,
+            self.message
+        )
     }
 }
 
@@ -47,7 +53,11 @@ impl Tiles {
 }
 
 fn err(input: &str, position: usize, message: impl Into<String>) -> NotationError {
-    NotationError { input: input.to_string(), position, message: message.into() }
+    NotationError {
+        input: input.to_string(),
+        position,
+        message: message.into(),
+    }
 }
 
 /// Parses a run of tiles such as `123m0p77z`.
@@ -59,13 +69,21 @@ pub fn parse_tiles(input: &str) -> Result<Tiles, NotationError> {
             '0'..='9' => pending.push((i, ch as u8 - b'0')),
             'm' | 'p' | 's' | 'z' => {
                 if pending.is_empty() {
-                    return Err(err(input, i, format!("suit letter `{ch}` has no digits before it (write e.g. `123{ch}`)")));
+                    return Err(err(
+                        input,
+                        i,
+                        format!("suit letter `{ch}` has no digits before it (write e.g. `123{ch}`)"),
+                    ));
                 }
                 for &(pos, d) in &pending {
                     let tile = match ch {
                         'z' => {
                             if !(1..=7).contains(&d) {
-                                return Err(err(input, pos, format!("honor `{d}z` does not exist: honors are 1z-7z (E S W N white green red)")));
+                                return Err(err(
+                                    input,
+                                    pos,
+                                    format!("honor `{d}z` does not exist: honors are 1z-7z (E S W N white green red)"),
+                                ));
                             }
                             (27 + d - 1, false)
                         }
@@ -87,15 +105,27 @@ pub fn parse_tiles(input: &str) -> Result<Tiles, NotationError> {
                 pending.clear();
             }
             c if c.is_whitespace() => {
-                return Err(err(input, i, "unexpected space: write tiles without spaces, e.g. `123m456p`"));
+                return Err(err(
+                    input,
+                    i,
+                    "unexpected space: write tiles without spaces, e.g. `123m456p`",
+                ));
             }
             c => {
-                return Err(err(input, i, format!("unexpected `{c}`: expected a digit or a suit letter m, p, s, z")));
+                return Err(err(
+                    input,
+                    i,
+                    format!("unexpected `{c}`: expected a digit or a suit letter m, p, s, z"),
+                ));
             }
         }
     }
     if let Some(&(pos, _)) = pending.first() {
-        return Err(err(input, pos, "digits without a suit letter: end them with m, p, s or z"));
+        return Err(err(
+            input,
+            pos,
+            "digits without a suit letter: end them with m, p, s or z",
+        ));
     }
     if tiles.is_empty() {
         return Err(err(input, 0, "no tiles"));
@@ -148,7 +178,11 @@ impl Meld {
 /// Parses `chi:123m`, `pon:555z`, `kan:2222p`, `ankan:1111s` or `kakan:3333m`.
 pub fn parse_meld(input: &str) -> Result<Meld, NotationError> {
     let Some((kind, tiles_src)) = input.split_once(':') else {
-        return Err(err(input, 0, "a meld is `kind:tiles`, e.g. `pon:555z`, `chi:123m`, `ankan:1111s`"));
+        return Err(err(
+            input,
+            0,
+            "a meld is `kind:tiles`, e.g. `pon:555z`, `chi:123m`, `ankan:1111s`",
+        ));
     };
     let kind = match kind {
         "chi" => MeldKind::Chi,
@@ -157,7 +191,11 @@ pub fn parse_meld(input: &str) -> Result<Meld, NotationError> {
         "ankan" => MeldKind::Ankan,
         "kakan" | "shouminkan" => MeldKind::Kakan,
         other => {
-            return Err(err(input, 0, format!("unknown meld kind `{other}`: use chi, pon, kan (open), ankan (closed) or kakan (added)")));
+            return Err(err(
+                input,
+                0,
+                format!("unknown meld kind `{other}`: use chi, pon, kan (open), ankan (closed) or kakan (added)"),
+            ));
         }
     };
     let at = kind_len(input);
@@ -165,19 +203,44 @@ pub fn parse_meld(input: &str) -> Result<Meld, NotationError> {
     let mut types: Vec<Tile> = tiles.tiles.iter().map(|t| t.0).collect();
     types.sort_unstable();
     let red = tiles.red();
-    let want = if kind == MeldKind::Chi || kind == MeldKind::Pon { 3 } else { 4 };
+    let want = if kind == MeldKind::Chi || kind == MeldKind::Pon {
+        3
+    } else {
+        4
+    };
     if types.len() != want {
-        return Err(err(input, at, format!("a {} has {want} tiles, found {}", kind_name(kind), types.len())));
+        return Err(err(
+            input,
+            at,
+            format!("a {} has {want} tiles, found {}", kind_name(kind), types.len()),
+        ));
     }
     if kind == MeldKind::Chi {
         let run = types[0] < 27 && types[0] % 9 <= 6 && types[1] == types[0] + 1 && types[2] == types[0] + 2;
         if !run {
-            return Err(err(input, at, "a chi is three consecutive numbers of one suit, e.g. `chi:345p`"));
+            return Err(err(
+                input,
+                at,
+                "a chi is three consecutive numbers of one suit, e.g. `chi:345p`",
+            ));
         }
     } else if types.iter().any(|&t| t != types[0]) {
-        return Err(err(input, at, format!("a {} is {want} identical tiles, e.g. `{}:{}`", kind_name(kind), kind_name(kind), "5".repeat(want) + "z")));
+        return Err(err(
+            input,
+            at,
+            format!(
+                "a {} is {want} identical tiles, e.g. `{}:{}`",
+                kind_name(kind),
+                kind_name(kind),
+                "5".repeat(want) + "z"
+            ),
+        ));
     }
-    Ok(Meld { kind, tile: types[0], red })
+    Ok(Meld {
+        kind,
+        tile: types[0],
+        red,
+    })
 }
 
 fn kind_len(input: &str) -> usize {
@@ -221,7 +284,10 @@ mod tests {
     #[test]
     fn reads_suits_honors_and_red_fives() {
         let t = parse_tiles("120m9p77z").unwrap();
-        assert_eq!(t.tiles, vec![(0, false), (1, false), (4, true), (17, false), (33, false), (33, false)]);
+        assert_eq!(
+            t.tiles,
+            vec![(0, false), (1, false), (4, true), (17, false), (33, false), (33, false)]
+        );
         assert_eq!(t.red(), 1);
         assert_eq!(t.counts()[33], 2);
     }
@@ -236,14 +302,31 @@ mod tests {
 
     #[test]
     fn reads_and_checks_melds() {
-        assert_eq!(parse_meld("chi:312m").unwrap(), Meld { kind: MeldKind::Chi, tile: 0, red: 0 });
-        assert_eq!(parse_meld("pon:550p").unwrap(), Meld { kind: MeldKind::Pon, tile: 13, red: 1 });
+        assert_eq!(
+            parse_meld("chi:312m").unwrap(),
+            Meld {
+                kind: MeldKind::Chi,
+                tile: 0,
+                red: 0
+            }
+        );
+        assert_eq!(
+            parse_meld("pon:550p").unwrap(),
+            Meld {
+                kind: MeldKind::Pon,
+                tile: 13,
+                red: 1
+            }
+        );
         assert_eq!(parse_meld("ankan:1111s").unwrap().kind, MeldKind::Ankan);
         assert!(parse_meld("chi:135m").is_err());
         assert!(parse_meld("chi:123z").is_err());
         assert!(parse_meld("pon:556m").is_err());
         assert!(parse_meld("kan:555m").is_err());
-        assert!(parse_meld("hold:555m").unwrap_err().message.contains("unknown meld kind"));
+        assert!(parse_meld("hold:555m")
+            .unwrap_err()
+            .message
+            .contains("unknown meld kind"));
         assert_eq!(parse_meld("pon:55m").unwrap_err().position, 4);
     }
 }

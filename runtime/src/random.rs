@@ -23,7 +23,7 @@ impl Rng {
 
     /// Uniform in 0..n (n > 0), without modulo bias.
     pub fn below(&mut self, n: u32) -> u32 {
-        ((self.next_u64() >> 32) * u64::from(n) >> 32) as u32
+        (((self.next_u64() >> 32) * u64::from(n)) >> 32) as u32
     }
 
     pub fn chance(&mut self, percent: u32) -> bool {
@@ -80,13 +80,29 @@ fn try_random_win(rng: &mut Rng) -> Option<Win> {
         for k in 0..4 {
             let suit = one_suit.unwrap_or_else(|| rng.below(3));
             let run = rng.chance(60);
-            let tile = if run { (suit * 9 + rng.below(7)) as Tile } else if one_suit.is_some() { (suit * 9 + rng.below(9)) as Tile } else { rng.below(34) as Tile };
-            let tiles: Vec<Tile> = if run { vec![tile, tile + 1, tile + 2] } else { vec![tile; 3] };
+            let tile = if run {
+                (suit * 9 + rng.below(7)) as Tile
+            } else if one_suit.is_some() {
+                (suit * 9 + rng.below(9)) as Tile
+            } else {
+                rng.below(34) as Tile
+            };
+            let tiles: Vec<Tile> = if run {
+                vec![tile, tile + 1, tile + 2]
+            } else {
+                vec![tile; 3]
+            };
             if k < n_melds {
                 let kind = if run {
                     MeldKind::Chi
                 } else {
-                    [MeldKind::Pon, MeldKind::Pon, MeldKind::Kan, MeldKind::Ankan, MeldKind::Kakan][rng.below(5) as usize]
+                    [
+                        MeldKind::Pon,
+                        MeldKind::Pon,
+                        MeldKind::Kan,
+                        MeldKind::Ankan,
+                        MeldKind::Kakan,
+                    ][rng.below(5) as usize]
                 };
                 melds.push(Meld { kind, tile, red: 0 });
             } else {
@@ -110,9 +126,13 @@ fn try_random_win(rng: &mut Rng) -> Option<Win> {
     if all.iter().any(|&n| n > 4) {
         return None;
     }
-    let concealed: Vec<Tile> = (0..34u8).flat_map(|t| std::iter::repeat_n(t, hand[t as usize] as usize)).collect();
+    let concealed: Vec<Tile> = (0..34u8)
+        .flat_map(|t| std::iter::repeat_n(t, hand[t as usize] as usize))
+        .collect();
     let win = concealed[rng.below(concealed.len() as u32) as usize];
-    let has_kan = melds.iter().any(|m| matches!(m.kind, MeldKind::Kan | MeldKind::Ankan | MeldKind::Kakan));
+    let has_kan = melds
+        .iter()
+        .any(|m| matches!(m.kind, MeldKind::Kan | MeldKind::Ankan | MeldKind::Kakan));
     let closed = melds.iter().all(|m| m.kind == MeldKind::Ankan);
     let dealer = rng.chance(25);
     let tsumo = rng.chance(45);
@@ -154,5 +174,11 @@ fn try_random_win(rng: &mut Rng) -> Option<Win> {
     }
     let fives = [all[4], all[13], all[22]];
     let aka = fives.iter().filter(|&&n| n > 0 && rng.chance(50)).count() as u8;
-    Some(Win { hand, win, melds, aka, context: c })
+    Some(Win {
+        hand,
+        win,
+        melds,
+        aka,
+        context: c,
+    })
 }

@@ -3,7 +3,10 @@
 use std::process::{Command, Output};
 
 fn rinshan(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_rinshan")).args(args).output().expect("run rinshan")
+    Command::new(env!("CARGO_BIN_EXE_rinshan"))
+        .args(args)
+        .output()
+        .expect("run rinshan")
 }
 
 fn json(out: &Output) -> serde_json::Value {
@@ -14,7 +17,10 @@ fn json(out: &Output) -> serde_json::Value {
 #[test]
 fn shanten_json_reports_every_form() {
     let v = json(&rinshan(&["shanten", "19m19p19s1234567z", "--json"]));
-    assert_eq!(v, serde_json::json!({"shanten": 0, "normal": 8, "chiitoitsu": 6, "kokushi": 0}));
+    assert_eq!(
+        v,
+        serde_json::json!({"shanten": 0, "normal": 8, "chiitoitsu": 6, "kokushi": 0})
+    );
     let v = json(&rinshan(&["shanten", "123m456p789s11222z", "--json"]));
     assert_eq!(v["shanten"], -1);
 }
@@ -29,13 +35,31 @@ fn shanten_plain_prints_the_number() {
 #[test]
 fn score_tsumo_json_has_yaku_and_payments() {
     // riichi, menzen tsumo, pinfu, tanyao + dora 4m (indicator 3m): 5 han mangan, 2000/4000.
-    let v = json(&rinshan(&["score", "234567m234p456s66s", "--win", "6s", "--tsumo", "--riichi", "--dora", "3m", "--json"]));
+    let v = json(&rinshan(&[
+        "score",
+        "234567m234p456s66s",
+        "--win",
+        "6s",
+        "--tsumo",
+        "--riichi",
+        "--dora",
+        "3m",
+        "--json",
+    ]));
     assert_eq!(v["han"], 5);
     assert_eq!(v["fu"], 20);
     assert_eq!(v["yakuman"], 0);
-    let names: Vec<&str> = v["yaku"].as_array().unwrap().iter().map(|y| y["name"].as_str().unwrap()).collect();
+    let names: Vec<&str> = v["yaku"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|y| y["name"].as_str().unwrap())
+        .collect();
     assert_eq!(names, ["riichi", "menzen_tsumo", "pinfu", "tanyao", "dora"]);
-    assert_eq!(v["points"], serde_json::json!({"dealer_pays": 4000, "others_pay": 2000, "total": 8000}));
+    assert_eq!(
+        v["points"],
+        serde_json::json!({"dealer_pays": 4000, "others_pay": 2000, "total": 8000})
+    );
 }
 
 #[test]
@@ -44,12 +68,27 @@ fn score_ron_with_melds_honba_and_sticks() {
     // fu 20 + 4 (open honor triplet) + 2 (dragon pair) + 2 (tanki) = 28 -> 30; 2 han 30 fu dealer
     // ron 2900 + 300 honba; the winner also takes 2 sticks.
     let v = json(&rinshan(&[
-        "score", "123p789s5z", "--win", "5z", "--meld", "chi:123m", "--meld", "pon:666z", "--dealer", "--honba", "1",
-        "--sticks", "2", "--json",
+        "score",
+        "123p789s5z",
+        "--win",
+        "5z",
+        "--meld",
+        "chi:123m",
+        "--meld",
+        "pon:666z",
+        "--dealer",
+        "--honba",
+        "1",
+        "--sticks",
+        "2",
+        "--json",
     ]));
     assert_eq!(v["han"], 2);
     assert_eq!(v["fu"], 30);
-    assert_eq!(v["yaku"], serde_json::json!([{"name": "yakuhai_green", "han": 1}, {"name": "chanta", "han": 1}]));
+    assert_eq!(
+        v["yaku"],
+        serde_json::json!([{"name": "yakuhai_green", "han": 1}, {"name": "chanta", "han": 1}])
+    );
     assert_eq!(v["points"], serde_json::json!({"ron": 3200, "total": 5200}));
 }
 
@@ -60,7 +99,11 @@ fn variant_changes_red_five_value() {
     let mut no_red_args = args.to_vec();
     no_red_args.extend(["--variant", "no-red"]);
     let no_red = json(&rinshan(&no_red_args));
-    assert_eq!(red["han"].as_u64().unwrap(), no_red["han"].as_u64().unwrap() + 1, "aka counts only with red fives");
+    assert_eq!(
+        red["han"].as_u64().unwrap(),
+        no_red["han"].as_u64().unwrap() + 1,
+        "aka counts only with red fives"
+    );
 }
 
 #[test]
@@ -71,9 +114,18 @@ fn malformed_hands_exit_with_2_and_say_why() {
         (vec!["shanten", "11111m"], "only 4"),
         (vec!["score", "123m", "--win", "1m"], "concealed tiles"),
         (vec!["score", "234567m234p456s66s", "--win", "9z"], "1z-7z"),
-        (vec!["score", "234567m234p456s66s", "--win", "6s", "--meld", "pon:123m"], "identical"),
-        (vec!["score", "234567m234p456s66s", "--win", "6s", "--variant", "mystery"], "unknown variant"),
-        (vec!["score", "234567m234p456s66s", "--win", "6s", "--houtei", "--tsumo"], "houtei"),
+        (
+            vec!["score", "234567m234p456s66s", "--win", "6s", "--meld", "pon:123m"],
+            "identical",
+        ),
+        (
+            vec!["score", "234567m234p456s66s", "--win", "6s", "--variant", "mystery"],
+            "unknown variant",
+        ),
+        (
+            vec!["score", "234567m234p456s66s", "--win", "6s", "--houtei", "--tsumo"],
+            "houtei",
+        ),
     ] {
         let out = rinshan(&args);
         assert_eq!(out.status.code(), Some(2), "{args:?}");
@@ -88,7 +140,9 @@ fn hands_that_do_not_win_exit_with_1() {
     assert_eq!(out.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&out.stderr).contains("not a winning hand"));
     // Complete but open without a yaku.
-    let out = rinshan(&["score", "22m123s", "--win", "3s", "--meld", "chi:789m", "--meld", "chi:456p", "--meld", "pon:666p"]);
+    let out = rinshan(&[
+        "score", "22m123s", "--win", "3s", "--meld", "chi:789m", "--meld", "chi:456p", "--meld", "pon:666p",
+    ]);
     assert_eq!(out.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&out.stderr).contains("no yaku"));
 }

@@ -7,6 +7,7 @@
 //! the doc comments of `rules/kernel/features.rs`, evaluates the yaku conditions of
 //! `rules/yaku.toml` with the codegen's interpreter, and counts fu, points and payments by Tenhou's
 //! rules (the variant's `[scoring]` options read from the spec).
+#![allow(clippy::needless_range_loop)] // index loops mirror the rules text in this oracle
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -28,7 +29,7 @@ fn is_honor(t: Tile) -> bool {
 }
 
 fn is_terminal_or_honor(t: Tile) -> bool {
-    is_honor(t) || t % 9 == 0 || t % 9 == 8
+    is_honor(t) || t.is_multiple_of(9) || t % 9 == 8
 }
 
 fn is_dragon(t: Tile) -> bool {

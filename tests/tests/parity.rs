@@ -17,7 +17,9 @@ fn first_difference(cpu: &[u32], gpu: &[u32], record: usize) -> Option<(usize, V
 
 #[test]
 fn shanten_is_identical_on_cpu_and_gpu() {
-    let Some(mut gpu) = gpu_or_skip("shanten parity") else { return };
+    let Some(mut gpu) = gpu_or_skip("shanten parity") else {
+        return;
+    };
     let mut rng = Rng::new(11);
     let inputs: Vec<u32> = (0..HANDS)
         .flat_map(|i| hand::shanten_input(&random_hand(&mut rng, [14, 13, 11, 10, 8, 7, 5, 4, 2, 1][i % 10])))
@@ -26,12 +28,18 @@ fn shanten_is_identical_on_cpu_and_gpu() {
     hand::shanten_batch_par(Variant::Red, &inputs, &mut cpu);
     let out = gpu.run(Variant::Red, Kernel::Shanten, &inputs).expect("gpu run");
     assert_eq!(out.len(), cpu.len());
-    assert_eq!(first_difference(&cpu, &out, SHANTEN_OUT_WORDS), None, "first differing hand (index, cpu, gpu)");
+    assert_eq!(
+        first_difference(&cpu, &out, SHANTEN_OUT_WORDS),
+        None,
+        "first differing hand (index, cpu, gpu)"
+    );
 }
 
 #[test]
 fn scoring_is_identical_on_cpu_and_gpu() {
-    let Some(mut gpu) = gpu_or_skip("scoring parity") else { return };
+    let Some(mut gpu) = gpu_or_skip("scoring parity") else {
+        return;
+    };
     for (seed, &variant) in Variant::ALL.iter().enumerate() {
         let mut rng = Rng::new(100 + seed as u64);
         let mut inputs = Vec::with_capacity(HANDS * hand::SCORE_IN_WORDS);
@@ -43,18 +51,30 @@ fn scoring_is_identical_on_cpu_and_gpu() {
         let wins = cpu.chunks(SCORE_OUT_WORDS).filter(|o| o[0] == 0).count();
         assert!(wins > HANDS / 2, "{variant}: most random wins have a yaku ({wins})");
         let out = gpu.run(variant, Kernel::Score, &inputs).expect("gpu run");
-        assert_eq!(first_difference(&cpu, &out, SCORE_OUT_WORDS), None, "{variant}: first differing hand");
+        assert_eq!(
+            first_difference(&cpu, &out, SCORE_OUT_WORDS),
+            None,
+            "{variant}: first differing hand"
+        );
     }
 }
 
 #[test]
 fn garbage_score_inputs_are_rejected_identically() {
-    let Some(mut gpu) = gpu_or_skip("bad input parity") else { return };
+    let Some(mut gpu) = gpu_or_skip("bad input parity") else {
+        return;
+    };
     let mut rng = Rng::new(5);
     let n = 20_000;
     // Random words: the kernel must reject them (status 3) or judge them the same way on both sides.
     let inputs: Vec<u32> = (0..n * hand::SCORE_IN_WORDS)
-        .map(|i| if i % hand::SCORE_IN_WORDS < 34 { rng.below(3) } else { rng.below(40) })
+        .map(|i| {
+            if i % hand::SCORE_IN_WORDS < 34 {
+                rng.below(3)
+            } else {
+                rng.below(40)
+            }
+        })
         .collect();
     let mut cpu = vec![0u32; n * SCORE_OUT_WORDS];
     hand::score_batch(Variant::Red, &inputs, &mut cpu);

@@ -29,8 +29,14 @@ fn compile(variant: &str, variant_text: &str, yaku_text: &str) -> String {
     let generated = rinshan_codegen::generate(&spec);
     let tables = rinshan_codegen::tables::build();
     let mut sources = vec![
-        Source { path: "generated.rs".into(), text: generated.kernel_rust },
-        Source { path: "table_consts.rs".into(), text: tables.kernel_consts() },
+        Source {
+            path: "generated.rs".into(),
+            text: generated.kernel_rust,
+        },
+        Source {
+            path: "table_consts.rs".into(),
+            text: tables.kernel_consts(),
+        },
     ];
     let mut kernel: Vec<PathBuf> = std::fs::read_dir(rules().join("kernel"))
         .expect("kernel dir")
@@ -38,7 +44,10 @@ fn compile(variant: &str, variant_text: &str, yaku_text: &str) -> String {
         .filter(|p| p.extension().is_some_and(|x| x == "rs"))
         .collect();
     kernel.sort();
-    sources.extend(kernel.iter().map(|p| Source { path: p.display().to_string(), text: read(p) }));
+    sources.extend(kernel.iter().map(|p| Source {
+        path: p.display().to_string(),
+        text: read(p),
+    }));
     let entries: Vec<Entry> = rinshan::entries::ENTRIES
         .iter()
         .map(|(name, function, input, output)| Entry {
@@ -54,7 +63,11 @@ fn compile(variant: &str, variant_text: &str, yaku_text: &str) -> String {
 fn win(hand: &str, win: &str, melds: &[&str], tsumo: bool) -> Win {
     let tiles = parse_tiles(hand).expect("hand");
     let w = parse_tiles(win).expect("win").tiles[0].0;
-    let mut c = hand::WinContext { tsumo, seat_wind: 1, ..Default::default() };
+    let mut c = hand::WinContext {
+        tsumo,
+        seat_wind: 1,
+        ..Default::default()
+    };
     c.dealer = false;
     Win {
         hand: tiles.counts(),
@@ -67,14 +80,19 @@ fn win(hand: &str, win: &str, melds: &[&str], tsumo: bool) -> Win {
 
 /// (status, han, yakuman) of each hand under a WGSL module.
 fn judge(gpu: &mut rinshan::gpu::Gpu, wgsl: &str, wins: &[Win]) -> Vec<(u32, u32, u32)> {
-    let inputs: Vec<u32> = wins.iter().flat_map(|w| hand::score_input(w).expect("consistent")).collect();
+    let inputs: Vec<u32> = wins
+        .iter()
+        .flat_map(|w| hand::score_input(w).expect("consistent"))
+        .collect();
     let out = gpu.run_wgsl(wgsl, Kernel::Score, &inputs).expect("gpu run");
     out.chunks(hand::SCORE_OUT_WORDS).map(|o| (o[0], o[1], o[3])).collect()
 }
 
 #[test]
 fn edited_specs_change_results_on_the_gpu() {
-    let Some(mut gpu) = gpu_or_skip("rules as data") else { return };
+    let Some(mut gpu) = gpu_or_skip("rules as data") else {
+        return;
+    };
     let variant_text = read(&rules().join("variants/red.toml"));
     let yaku_text = read(&rules().join("yaku.toml"));
     let hands = [
@@ -90,7 +108,10 @@ fn edited_specs_change_results_on_the_gpu() {
     let stock = compile("red", &variant_text, &yaku_text);
     // The first line names the source paths, which differ between build.rs and this test.
     let body = |w: &str| w.split_once('\n').map(|(_, rest)| rest.to_string()).unwrap_or_default();
-    assert!(body(&stock) == body(rinshan::generated::red::WGSL), "run-time compilation reproduces the built module");
+    assert!(
+        body(&stock) == body(rinshan::generated::red::WGSL),
+        "run-time compilation reproduces the built module"
+    );
     let stock_results = judge(&mut gpu, rinshan::generated::red::WGSL, &hands);
     assert_eq!(stock_results, vec![(0, 2, 0), (0, 1, 0), (0, 1 + 3 + 1 + 6, 0)]);
 

@@ -74,11 +74,17 @@ pub fn to_win(c: &Case) -> (Variant, Win) {
     let variant = Variant::from_name(c.variant.as_deref().unwrap_or("red")).expect("variant");
     let tiles = parse_tiles(&c.hand).unwrap_or_else(|e| panic!("{}: {e}", c.name));
     let (win, _) = parse_tile(&c.win).unwrap_or_else(|e| panic!("{}: {e}", c.name));
-    let melds: Vec<_> = c.melds.iter().map(|m| parse_meld(m).unwrap_or_else(|e| panic!("{}: {e}", c.name))).collect();
+    let melds: Vec<_> = c
+        .melds
+        .iter()
+        .map(|m| parse_meld(m).unwrap_or_else(|e| panic!("{}: {e}", c.name)))
+        .collect();
     let aka = tiles.red() + melds.iter().map(|m| m.red).sum::<u8>();
     let wind = |w: &Option<String>, default: u8| w.as_deref().map_or(default, |s| parse_wind(s).expect("wind"));
     let indicators = |v: &Vec<String>| -> Vec<u8> {
-        v.iter().flat_map(|s| parse_tiles(s).expect("indicator").tiles.into_iter().map(|t| t.0)).collect()
+        v.iter()
+            .flat_map(|s| parse_tiles(s).expect("indicator").tiles.into_iter().map(|t| t.0))
+            .collect()
     };
     let seat_wind = wind(&c.seat_wind, if c.dealer { 0 } else { 1 });
     let context = WinContext {
@@ -100,7 +106,16 @@ pub fn to_win(c: &Case) -> (Variant, Win) {
         honba: c.honba,
         sticks: c.sticks,
     };
-    (variant, Win { hand: tiles.counts(), win, melds, aka, context })
+    (
+        variant,
+        Win {
+            hand: tiles.counts(),
+            win,
+            melds,
+            aka,
+            context,
+        },
+    )
 }
 
 #[test]
@@ -124,12 +139,26 @@ fn every_case_scores_as_the_rules_say() {
         };
         let expected_dealer_pays = if c.dealer { None } else { c.dealer_pays };
         let got = (s.han, s.fu, s.yakuman, &yaku, ron, dealer_pays, others_pay);
-        let want = (c.han, c.fu, c.yakuman, &c.yaku, c.ron, expected_dealer_pays, c.others_pay);
+        let want = (
+            c.han,
+            c.fu,
+            c.yakuman,
+            &c.yaku,
+            c.ron,
+            expected_dealer_pays,
+            c.others_pay,
+        );
         if got != want {
             failures.push(format!("{}:\n    expected {want:?}\n    got      {got:?}", c.name));
         }
     }
-    assert!(failures.is_empty(), "{} of {} cases differ:\n{}", failures.len(), cases.len(), failures.join("\n"));
+    assert!(
+        failures.is_empty(),
+        "{} of {} cases differ:\n{}",
+        failures.len(),
+        cases.len(),
+        failures.join("\n")
+    );
 }
 
 #[test]
@@ -144,14 +173,24 @@ fn cases_cover_every_yaku_of_the_spec() {
 
 #[test]
 fn every_case_is_identical_on_the_gpu() {
-    let Some(mut gpu) = rinshan_tests::gpu_or_skip("scoring cases on the gpu") else { return };
+    let Some(mut gpu) = rinshan_tests::gpu_or_skip("scoring cases on the gpu") else {
+        return;
+    };
     let cases = load_cases();
     for &variant in Variant::ALL {
-        let chosen: Vec<_> = cases.iter().map(to_win).filter(|(v, _)| *v == variant).map(|(_, w)| w).collect();
+        let chosen: Vec<_> = cases
+            .iter()
+            .map(to_win)
+            .filter(|(v, _)| *v == variant)
+            .map(|(_, w)| w)
+            .collect();
         if chosen.is_empty() {
             continue;
         }
-        let inputs: Vec<u32> = chosen.iter().flat_map(|w| rinshan::hand::score_input(w).expect("consistent")).collect();
+        let inputs: Vec<u32> = chosen
+            .iter()
+            .flat_map(|w| rinshan::hand::score_input(w).expect("consistent"))
+            .collect();
         let mut cpu = vec![0u32; chosen.len() * rinshan::hand::SCORE_OUT_WORDS];
         rinshan::hand::score_batch(variant, &inputs, &mut cpu);
         let out = gpu.run(variant, rinshan::gpu::Kernel::Score, &inputs).expect("gpu run");

@@ -8,7 +8,12 @@ use rinshan_tests::shared_data;
 fn cases() -> Vec<([u8; 34], [i32; 3], String)> {
     let dir = shared_data().join("shanten");
     let mut out = Vec::new();
-    for name in ["p_normal_10000.txt", "p_hon_10000.txt", "p_tin_10000.txt", "p_koku_10000.txt"] {
+    for name in [
+        "p_normal_10000.txt",
+        "p_hon_10000.txt",
+        "p_tin_10000.txt",
+        "p_koku_10000.txt",
+    ] {
         let text = std::fs::read_to_string(dir.join(name)).unwrap_or_else(|e| panic!("{name}: {e}"));
         for (i, line) in text.lines().enumerate() {
             let nums: Vec<i32> = line.split_whitespace().map(|x| x.parse().expect("integer")).collect();
@@ -32,11 +37,24 @@ fn agrees_with_all_40000_cases() {
         let s = shanten(counts);
         let got = [s.normal, s.kokushi.unwrap_or(99), s.chiitoitsu.unwrap_or(99)];
         if got != [*normal, *kokushi, *chiitoitsu] {
-            wrong.push(format!("{at}: expected {:?}, got {:?}", [normal, kokushi, chiitoitsu], got));
+            wrong.push(format!(
+                "{at}: expected {:?}, got {:?}",
+                [normal, kokushi, chiitoitsu],
+                got
+            ));
         }
-        assert_eq!(s.shanten, got.into_iter().min().unwrap_or(99), "{at}: overall = min of the three");
+        assert_eq!(
+            s.shanten,
+            got.into_iter().min().unwrap_or(99),
+            "{at}: overall = min of the three"
+        );
     }
-    assert!(wrong.is_empty(), "{} disagreements, first: {:?}", wrong.len(), &wrong[..wrong.len().min(5)]);
+    assert!(
+        wrong.is_empty(),
+        "{} disagreements, first: {:?}",
+        wrong.len(),
+        &wrong[..wrong.len().min(5)]
+    );
 }
 
 #[test]

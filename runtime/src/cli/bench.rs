@@ -39,13 +39,21 @@ fn row(name: &str, per_s: f64, baseline: f64) {
 }
 
 pub fn run(what: What) -> Result<(), CliError> {
-    let What::Hands { hands, seed, variant, no_gpu } = what;
-    let variant = Variant::from_name(&variant).ok_or_else(|| CliError::input(format!("unknown variant `{variant}`")))?;
+    let What::Hands {
+        hands,
+        seed,
+        variant,
+        no_gpu,
+    } = what;
+    let variant =
+        Variant::from_name(&variant).ok_or_else(|| CliError::input(format!("unknown variant `{variant}`")))?;
     if hands == 0 {
         return Err(CliError::input("--hands must be positive"));
     }
     let mut rng = Rng::new(seed);
-    let counts: Vec<[u8; 34]> = (0..hands).map(|i| random_hand(&mut rng, if i % 2 == 0 { 14 } else { 13 })).collect();
+    let counts: Vec<[u8; 34]> = (0..hands)
+        .map(|i| random_hand(&mut rng, if i % 2 == 0 { 14 } else { 13 }))
+        .collect();
     let shanten_in: Vec<u32> = counts.iter().flat_map(hand::shanten_input).collect();
     let wins: Vec<_> = (0..hands).map(|_| random_win(&mut rng)).collect();
     let score_in: Vec<u32> = wins
@@ -65,10 +73,20 @@ pub fn run(what: What) -> Result<(), CliError> {
     });
     row("xiangting, 1 thread", base, base);
     let mut out = vec![0u32; hands * SHANTEN_OUT_WORDS];
-    row("rinshan cpu, 1 thread", rate(hands, || hand::shanten_batch(variant, &shanten_in, &mut out)), base);
+    row(
+        "rinshan cpu, 1 thread",
+        rate(hands, || hand::shanten_batch(variant, &shanten_in, &mut out)),
+        base,
+    );
     let one_thread = out.clone();
-    row(&format!("rinshan cpu, {threads} threads"), rate(hands, || hand::shanten_batch_par(variant, &shanten_in, &mut out)), base);
-    let disagree = (0..hands).filter(|&i| out[i * SHANTEN_OUT_WORDS] as i32 != i32::from(xt[i]) - 1).count();
+    row(
+        &format!("rinshan cpu, {threads} threads"),
+        rate(hands, || hand::shanten_batch_par(variant, &shanten_in, &mut out)),
+        base,
+    );
+    let disagree = (0..hands)
+        .filter(|&i| out[i * SHANTEN_OUT_WORDS] as i32 != i32::from(xt[i]) - 1)
+        .count();
     println!("  agreement with xiangting: {}/{hands} hands", hands - disagree);
 
     let mut gpu = if no_gpu {
@@ -83,7 +101,9 @@ pub fn run(what: What) -> Result<(), CliError> {
         }
     };
     if let Some(g) = gpu.as_mut() {
-        let warm = g.run(variant, Kernel::Shanten, &shanten_in[..SHANTEN_IN_WORDS]).map_err(CliError::failure)?;
+        let warm = g
+            .run(variant, Kernel::Shanten, &shanten_in[..SHANTEN_IN_WORDS])
+            .map_err(CliError::failure)?;
         drop(warm);
         let mut res = Ok(Vec::new());
         let r = rate(hands, || res = g.run(variant, Kernel::Shanten, &shanten_in));
@@ -97,9 +117,14 @@ pub fn run(what: What) -> Result<(), CliError> {
     let base = rate(hands, || hand::score_batch(variant, &score_in, &mut out));
     row("rinshan cpu, 1 thread", base, base);
     let one_thread = out.clone();
-    row(&format!("rinshan cpu, {threads} threads"), rate(hands, || hand::score_batch_par(variant, &score_in, &mut out)), base);
+    row(
+        &format!("rinshan cpu, {threads} threads"),
+        rate(hands, || hand::score_batch_par(variant, &score_in, &mut out)),
+        base,
+    );
     if let Some(g) = gpu.as_mut() {
-        g.run(variant, Kernel::Score, &score_in[..SCORE_IN_WORDS]).map_err(CliError::failure)?;
+        g.run(variant, Kernel::Score, &score_in[..SCORE_IN_WORDS])
+            .map_err(CliError::failure)?;
         let mut res = Ok(Vec::new());
         let r = rate(hands, || res = g.run(variant, Kernel::Score, &score_in));
         let gpu_out = res.map_err(CliError::failure)?;

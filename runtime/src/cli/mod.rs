@@ -14,16 +14,26 @@ pub struct CliError {
 
 impl CliError {
     pub fn input(message: impl std::fmt::Display) -> CliError {
-        CliError { message: message.to_string(), code: 2 }
+        CliError {
+            message: message.to_string(),
+            code: 2,
+        }
     }
 
     pub fn failure(message: impl std::fmt::Display) -> CliError {
-        CliError { message: message.to_string(), code: 1 }
+        CliError {
+            message: message.to_string(),
+            code: 1,
+        }
     }
 }
 
 #[derive(Parser)]
-#[command(name = "rinshan", version, about = "Vectorized Riichi Mahjong whose rules are data: hand calculator and benchmarks")]
+#[command(
+    name = "rinshan",
+    version,
+    about = "Vectorized Riichi Mahjong whose rules are data: hand calculator and benchmarks"
+)]
 pub struct Cli {
     #[command(subcommand)]
     command: Command,

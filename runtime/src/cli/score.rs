@@ -71,18 +71,31 @@ pub struct Args {
 fn indicators(src: &Option<String>) -> Result<Vec<Tile>, CliError> {
     match src {
         None => Ok(Vec::new()),
-        Some(s) => Ok(parse_tiles(s).map_err(CliError::input)?.tiles.iter().map(|t| t.0).collect()),
+        Some(s) => Ok(parse_tiles(s)
+            .map_err(CliError::input)?
+            .tiles
+            .iter()
+            .map(|t| t.0)
+            .collect()),
     }
 }
 
 fn build_win(args: &Args) -> Result<(Variant, Win), CliError> {
     let variant = Variant::from_name(&args.variant).ok_or_else(|| {
         let names: Vec<String> = Variant::ALL.iter().map(|v| v.to_string()).collect();
-        CliError::input(format!("unknown variant `{}`: choose one of {}", args.variant, names.join(", ")))
+        CliError::input(format!(
+            "unknown variant `{}`: choose one of {}",
+            args.variant,
+            names.join(", ")
+        ))
     })?;
     let tiles = parse_tiles(&args.hand).map_err(CliError::input)?;
     let (win_tile, win_red) = parse_tile(&args.win).map_err(CliError::input)?;
-    let melds = args.melds.iter().map(|m| parse_meld(m).map_err(CliError::input)).collect::<Result<Vec<_>, _>>()?;
+    let melds = args
+        .melds
+        .iter()
+        .map(|m| parse_meld(m).map_err(CliError::input))
+        .collect::<Result<Vec<_>, _>>()?;
     let mut hand = tiles.counts();
     let mut red = tiles.red() + melds.iter().map(|m| m.red).sum::<u8>();
     let concealed = tiles.tiles.len();
@@ -95,7 +108,10 @@ fn build_win(args: &Args) -> Result<(Variant, Win), CliError> {
             melds.len()
         )));
     } else if hand[win_tile as usize] == 0 {
-        return Err(CliError::input(format!("the hand has 14 tiles but not the winning tile {}", args.win)));
+        return Err(CliError::input(format!(
+            "the hand has 14 tiles but not the winning tile {}",
+            args.win
+        )));
     }
     let round_wind = parse_wind(&args.round_wind).map_err(CliError::input)?;
     let seat_wind = match &args.seat_wind {
@@ -104,7 +120,9 @@ fn build_win(args: &Args) -> Result<(Variant, Win), CliError> {
         None => 1,
     };
     if args.dealer && seat_wind != 0 {
-        return Err(CliError::input("the dealer's seat wind is East: drop --seat-wind or --dealer"));
+        return Err(CliError::input(
+            "the dealer's seat wind is East: drop --seat-wind or --dealer",
+        ));
     }
     let context = WinContext {
         tsumo: args.tsumo,
@@ -126,7 +144,16 @@ fn build_win(args: &Args) -> Result<(Variant, Win), CliError> {
         sticks: args.sticks,
     };
     check_context(&context, &melds)?;
-    Ok((variant, Win { hand, win: win_tile, melds, aka: red, context }))
+    Ok((
+        variant,
+        Win {
+            hand,
+            win: win_tile,
+            melds,
+            aka: red,
+            context,
+        },
+    ))
 }
 
 /// Circumstances that contradict each other are input errors, not silently scored.
@@ -139,10 +166,19 @@ fn check_context(c: &WinContext, melds: &[rinshan::notation::Meld]) -> Result<()
         (c.haitei && !c.tsumo, "haitei is a tsumo win: add --tsumo"),
         (c.houtei && c.tsumo, "houtei is a ron win: drop --tsumo"),
         (c.rinshan && !c.tsumo, "rinshan is a tsumo win: add --tsumo"),
-        (c.rinshan && !melds.iter().any(|m| m.kind != MeldKind::Chi && m.kind != MeldKind::Pon), "rinshan needs a kan among the melds"),
+        (
+            c.rinshan && !melds.iter().any(|m| m.kind != MeldKind::Chi && m.kind != MeldKind::Pon),
+            "rinshan needs a kan among the melds",
+        ),
         (c.chankan && c.tsumo, "chankan is a ron win: drop --tsumo"),
-        ((c.tenhou || c.chiihou) && (!c.tsumo || !melds.is_empty()), "tenhou and chiihou are tsumo wins without melds"),
-        ((c.tenhou && !c.dealer) || (c.chiihou && c.dealer), "tenhou is the dealer's, chiihou a non-dealer's"),
+        (
+            (c.tenhou || c.chiihou) && (!c.tsumo || !melds.is_empty()),
+            "tenhou and chiihou are tsumo wins without melds",
+        ),
+        (
+            (c.tenhou && !c.dealer) || (c.chiihou && c.dealer),
+            "tenhou is the dealer's, chiihou a non-dealer's",
+        ),
     ];
     match rules.iter().find(|(bad, _)| *bad) {
         Some((_, message)) => Err(CliError::input(message)),
@@ -158,10 +194,17 @@ pub fn run(args: Args) -> Result<(), CliError> {
         Err(e) => return Err(CliError::failure(e)),
     };
     if args.json {
-        let yaku: Vec<_> = score.yaku.iter().map(|y| serde_json::json!({"name": y.name, "han": y.han})).collect();
+        let yaku: Vec<_> = score
+            .yaku
+            .iter()
+            .map(|y| serde_json::json!({"name": y.name, "han": y.han}))
+            .collect();
         let points = match score.payment {
             Payment::Ron { discarder } => serde_json::json!({ "ron": discarder, "total": score.gain }),
-            Payment::Tsumo { dealer: Some(d), others } => serde_json::json!({ "dealer_pays": d, "others_pay": others, "total": score.gain }),
+            Payment::Tsumo {
+                dealer: Some(d),
+                others,
+            } => serde_json::json!({ "dealer_pays": d, "others_pay": others, "total": score.gain }),
             Payment::Tsumo { dealer: None, others } => serde_json::json!({ "others_pay": others, "total": score.gain }),
         };
         let v = serde_json::json!({
@@ -179,10 +222,17 @@ pub fn run(args: Args) -> Result<(), CliError> {
         let unit = if score.yakuman > 0 { "yakuman" } else { "han" };
         println!("  {:<20} {} {unit}", y.name, y.han);
     }
-    let value = if score.yakuman > 0 { format!("{} x yakuman", score.yakuman) } else { format!("{} han {} fu", score.han, score.fu) };
+    let value = if score.yakuman > 0 {
+        format!("{} x yakuman", score.yakuman)
+    } else {
+        format!("{} han {} fu", score.han, score.fu)
+    };
     let pay = match score.payment {
         Payment::Ron { discarder } => format!("ron {discarder}"),
-        Payment::Tsumo { dealer: Some(d), others } => format!("tsumo {others}/{d}"),
+        Payment::Tsumo {
+            dealer: Some(d),
+            others,
+        } => format!("tsumo {others}/{d}"),
         Payment::Tsumo { dealer: None, others } => format!("tsumo {others} all"),
     };
     println!("{value}: {pay} (winner gains {})", score.gain);

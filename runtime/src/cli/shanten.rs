@@ -16,7 +16,11 @@ pub fn run(args: Args) -> Result<(), CliError> {
     let tiles = parse_tiles(&args.hand).map_err(CliError::input)?;
     let counts = tiles.counts();
     if let Some(t) = counts.iter().position(|&n| n > 4) {
-        return Err(CliError::input(format!("{} copies of {}: there are only 4", counts[t], rinshan::notation::tile_name(t as u8))));
+        return Err(CliError::input(format!(
+            "{} copies of {}: there are only 4",
+            counts[t],
+            rinshan::notation::tile_name(t as u8)
+        )));
     }
     let n = tiles.tiles.len();
     if n > 14 || n % 3 == 0 {
@@ -36,7 +40,12 @@ pub fn run(args: Args) -> Result<(), CliError> {
     } else {
         let part = |x: Option<i32>| x.map_or("-".to_string(), |v| v.to_string());
         println!("{}", s.shanten);
-        eprintln!("normal {}, chiitoitsu {}, kokushi {}", s.normal, part(s.chiitoitsu), part(s.kokushi));
+        eprintln!(
+            "normal {}, chiitoitsu {}, kokushi {}",
+            s.normal,
+            part(s.chiitoitsu),
+            part(s.kokushi)
+        );
     }
     Ok(())
 }
