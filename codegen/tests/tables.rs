@@ -5,7 +5,9 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::sync::OnceLock;
 use std::time::Instant;
 
-use rinshan_codegen::tables::{self, cost_d, decomp, honor_code, suit_code, Tables, HONOR_CODES, SUIT_CODES};
+use rinshan_codegen::tables::{
+    self, cost_d, decomp, honor_code, pack_costs, suit_code, CostRow, Tables, HONOR_CODES, SUIT_CODES,
+};
 
 fn tables() -> &'static Tables {
     static T: OnceLock<Tables> = OnceLock::new();
@@ -172,13 +174,13 @@ fn check_costs<const N: usize>(
     shapes: &[[u8; N]],
     samples: &[[u8; N]],
     code_of: impl Fn(&[u8; N]) -> usize,
-    words_of: impl Fn(usize) -> [u32; 2],
+    word_of: impl Fn(usize) -> u32,
 ) {
     for m in 0..=4 {
         for h in 0..=1 {
             let ts = targets(shapes, m, h);
             for c in samples {
-                let got = cost_d(words_of(code_of(c)), m, h);
+                let got = cost_d(word_of(code_of(c)), m, h);
                 assert_eq!(got, brute_d(&ts, c), "D({m},{h}) of {c:?}");
             }
         }
@@ -192,7 +194,7 @@ fn suit_costs_match_brute_force() {
     let mut samples = sample_suits(&mut rng, SAMPLES);
     // Every suit of at most 3 tiles too: the small cases are where off-by-ones hide.
     samples.extend((0..SUIT_CODES).map(decode::<9>).filter(|c| c.iter().sum::<u8>() <= 3));
-    check_costs(&suit_shapes(), &samples, suit_code, |c| t.suit_cost_words(c));
+    check_costs(&suit_shapes(), &samples, suit_code, |c| t.suit_cost_word(c));
 }
 
 #[test]
@@ -214,7 +216,7 @@ fn honor_costs_match_brute_force() {
             }
         })
         .collect();
-    check_costs(&honor_shapes(), &samples, honor_code, |c| t.honor_cost_words(c));
+    check_costs(&honor_shapes(), &samples, honor_code, |c| t.honor_cost_word(c));
 }
 
 #[test]
@@ -225,7 +227,7 @@ fn complete_suits_cost_nothing() {
         for d in t.decomps_of(code).chunks_exact(2) {
             let pair = usize::from(d[0] & 15 != decomp::NO_PAIR);
             let n = (d[0] >> decomp::W0_NSETS_SHIFT & 7) as usize;
-            assert_eq!(cost_d(t.suit_cost_words(code), n, pair), 0, "code {code}");
+            assert_eq!(cost_d(t.suit_cost_word(code), n, pair), 0, "code {code}");
         }
     }
 }
@@ -347,8 +349,57 @@ fn reference_completeness_statistics() {
     assert_eq!(by_distinct.range(5..).count(), 0, "{by_distinct:?}");
 }
 
-fn d_row(words: [u32; 2]) -> [[u32; 5]; 2] {
-    [0, 1].map(|h| [0, 1, 2, 3, 4].map(|m| cost_d(words, m, h)))
+/// The proof that one word per code is enough: on every code, D(0, 0) is 0, each set increment
+/// D(m, 0) - D(m-1, 0) is in 0..=3 and each pair increment D(m, 1) - D(m, 0) in 0..=2, so the row
+/// packs, decodes back to itself, and is exactly the table's word.
+fn check_packing(rows: &[CostRow], word_of: impl Fn(usize) -> u32) {
+    for (code, row) in rows.iter().enumerate() {
+        assert_eq!(row[0], 0, "code {code}: D(0, 0) = {row:?}");
+        for m in 0..5 {
+            if m > 0 {
+                let inc = i32::from(row[2 * m]) - i32::from(row[2 * m - 2]);
+                assert!(
+                    (0..=3).contains(&inc),
+                    "code {code}: set increment {inc} at m = {m}: {row:?}"
+                );
+            }
+            let inc = i32::from(row[2 * m + 1]) - i32::from(row[2 * m]);
+            assert!(
+                (0..=2).contains(&inc),
+                "code {code}: pair increment {inc} at m = {m}: {row:?}"
+            );
+        }
+        let word = pack_costs(row).expect("an in-range row packs");
+        assert!(word < 1 << 18, "code {code}: {word:#x} uses more than 18 bits");
+        assert_eq!(word, word_of(code), "code {code}: table word");
+        for m in 0..5 {
+            for h in 0..2 {
+                assert_eq!(cost_d(word, m, h), u32::from(row[2 * m + h]), "code {code}: D({m},{h})");
+            }
+        }
+    }
+}
+
+#[test]
+fn cost_increments_fit_two_bits_for_every_code() {
+    let t = tables();
+    let suits = tables::suit_cost_rows();
+    assert_eq!(suits.len(), SUIT_CODES);
+    check_packing(&suits, |c| t.suit_cost_word(c));
+    let honors = tables::honor_cost_rows();
+    assert_eq!(honors.len(), HONOR_CODES);
+    check_packing(&honors, |c| t.honor_cost_word(c));
+    // Out-of-range rows are refused rather than wrapped.
+    assert_eq!(pack_costs(&[0, 3, 4, 7, 8, 11, 12, 15, 16, 19]), None);
+    assert_eq!(pack_costs(&[1, 3, 3, 5, 6, 8, 9, 11, 12, 14]), None);
+    assert_eq!(
+        pack_costs(&[0, 2, 3, 5, 6, 8, 9, 11, 12, 14]),
+        Some(0b10_10_10_10_10_11_11_11_11)
+    );
+}
+
+fn d_row(word: u32) -> [[u32; 5]; 2] {
+    [0, 1].map(|h| [0, 1, 2, 3, 4].map(|m| cost_d(word, m, h)))
 }
 
 fn suit(tiles: &str) -> [u8; 9] {
@@ -362,7 +413,7 @@ fn suit(tiles: &str) -> [u8; 9] {
 #[test]
 fn hand_checked_values() {
     let t = tables();
-    let row = |c: &[u8; 9]| d_row(t.suit_cost_words(suit_code(c)));
+    let row = |c: &[u8; 9]| d_row(t.suit_cost_word(suit_code(c)));
     assert_eq!(row(&[0; 9]), [[0, 3, 6, 9, 12], [2, 5, 8, 11, 14]]);
     assert_eq!(row(&suit("1")), [[0, 2, 5, 8, 11], [1, 4, 7, 10, 13]]);
     // Four 1s: a triplet and a pair of 1s would need five, so one of them is built elsewhere.
@@ -371,14 +422,14 @@ fn hand_checked_values() {
     // 111 234 567 999 leaves 8 and 9 unused.
     assert_eq!(row(&suit("11123456789999"))[0][4], 0);
     assert_eq!(row(&suit("147"))[0], [0, 2, 4, 6, 9]);
-    assert_eq!(d_row(t.honor_cost_words(0)), [[0, 3, 6, 9, 12], [2, 5, 8, 11, 14]]);
+    assert_eq!(d_row(t.honor_cost_word(0)), [[0, 3, 6, 9, 12], [2, 5, 8, 11, 14]]);
     assert_eq!(
-        d_row(t.honor_cost_words(honor_code(&[4, 0, 0, 0, 0, 0, 0]))),
+        d_row(t.honor_cost_word(honor_code(&[4, 0, 0, 0, 0, 0, 0]))),
         [[0, 0, 3, 6, 9], [0, 2, 5, 8, 11]]
     );
-    assert_eq!(d_row(t.honor_cost_words(honor_code(&[3, 3, 3, 3, 2, 0, 0])))[1][4], 0);
+    assert_eq!(d_row(t.honor_cost_word(honor_code(&[3, 3, 3, 3, 2, 0, 0])))[1][4], 0);
     // Four singles grow into triplets (2 each) and a fifth into the pair (1).
-    assert_eq!(d_row(t.honor_cost_words(honor_code(&[1, 1, 1, 1, 1, 1, 1])))[1][4], 9);
+    assert_eq!(d_row(t.honor_cost_word(honor_code(&[1, 1, 1, 1, 1, 1, 1])))[1][4], 9);
 
     assert_eq!(suit_code(&suit("123")), 5usize.pow(8) + 5usize.pow(7) + 5usize.pow(6));
     assert_eq!(suit_code(&suit("9")), 1);
@@ -411,8 +462,8 @@ fn hand_checked_values() {
 fn layout_and_exports() {
     let t = tables();
     assert_eq!(t.suit_cost, 0);
-    assert_eq!(t.honor_cost as usize, 2 * SUIT_CODES);
-    assert_eq!(t.decomp_index as usize, 2 * SUIT_CODES + 2 * HONOR_CODES);
+    assert_eq!(t.honor_cost as usize, SUIT_CODES);
+    assert_eq!(t.decomp_index as usize, SUIT_CODES + HONOR_CODES);
     assert_eq!(t.decomps as usize, t.decomp_index as usize + SUIT_CODES);
     assert_eq!(t.words.len(), t.decomps as usize + 2 * t.n_decomps as usize);
     assert_eq!(
@@ -448,8 +499,8 @@ fn region_hashes_are_pinned() {
     assert_eq!(
         got,
         [
-            ("suit_cost", 0x6dff_ebe4_2941_9109),
-            ("honor_cost", 0x712c_9837_4b7b_1e38),
+            ("suit_cost", 0x5927_4ac1_8f49_ddde),
+            ("honor_cost", 0x0c37_c429_6d29_9aaf),
             ("decomp_index", 0x3c6c_3388_ab75_fba0),
             ("decomps", 0x473f_b73d_ba79_a3b0),
         ]

@@ -20,18 +20,23 @@ pub struct ShantenOutput {
 // Reported for chiitoitsu and kokushi when the hand has too few tiles for them (it has melds).
 const SHANTEN_NOT_APPLICABLE: i32 = 99;
 
-// Costs of one group, index m * 2 + h; unpacked from two table words of 4-bit fields.
-fn group_costs(base: u32, code: u32) -> [u32; 10] {
-    let w0: u32 = table(base + code * 2u32);
-    let w1: u32 = table(base + code * 2u32 + 1u32);
+// Costs of one group, index m * 2 + h, decoded from its packed table word: bits 2(m-1)..2m hold
+// D(m, 0) - D(m-1, 0) for m = 1..4 (D(0, 0) is 0) and bits 8+2m..10+2m hold D(m, 1) - D(m, 0).
+fn group_costs(w: u32) -> [u32; 10] {
     let mut c: [u32; 10] = [0u32; 10];
+    let mut d: u32 = 0u32;
     for m in 0u32..5u32 {
-        c[(m * 2u32) as usize] = (w0 >> (m * 4u32)) & 15u32;
-        c[(m * 2u32 + 1u32) as usize] = (w1 >> (m * 4u32)) & 15u32;
+        if m > 0u32 {
+            d += (w >> (m * 2u32 - 2u32)) & 3u32;
+        }
+        c[(m * 2u32) as usize] = d;
+        c[(m * 2u32 + 1u32) as usize] = d + ((w >> (m * 2u32 + 8u32)) & 3u32);
     }
     c
 }
 
+// Min-plus combination of two groups' costs: out[m * 2 + h] is the cheapest split of m sets and
+// h pairs between them.
 fn combine_costs(a: [u32; 10], b: [u32; 10]) -> [u32; 10] {
     let mut out: [u32; 10] = [255u32; 10];
     for m1 in 0u32..5u32 {
@@ -40,9 +45,7 @@ fn combine_costs(a: [u32; 10], b: [u32; 10]) -> [u32; 10] {
                 for h2 in 0u32..2u32 - h1 {
                     let i: u32 = (m1 + m2) * 2u32 + h1 + h2;
                     let v: u32 = a[(m1 * 2u32 + h1) as usize] + b[(m2 * 2u32 + h2) as usize];
-                    if v < out[i as usize] {
-                        out[i as usize] = v;
-                    }
+                    out[i as usize] = out[i as usize].min(v);
                 }
             }
         }
@@ -52,44 +55,50 @@ fn combine_costs(a: [u32; 10], b: [u32; 10]) -> [u32; 10] {
 
 fn shanten_normal(hand: [u32; 34], tiles: u32) -> i32 {
     let sets: u32 = tiles / 3u32;
-    let mut acc: [u32; 10] = group_costs(T_SUIT_COST, suit_code(hand, 0u32));
-    acc = combine_costs(acc, group_costs(T_SUIT_COST, suit_code(hand, 1u32)));
-    acc = combine_costs(acc, group_costs(T_SUIT_COST, suit_code(hand, 2u32)));
-    // Only one entry of the last combination is needed: `sets` sets and the pair in all.
-    let honors: [u32; 10] = group_costs(T_HONOR_COST, honor_code(hand));
+    // All four loads first, so their cache misses overlap.
+    let w0: u32 = table(T_SUIT_COST + suit_code(hand, 0u32));
+    let w1: u32 = table(T_SUIT_COST + suit_code(hand, 1u32));
+    let w2: u32 = table(T_SUIT_COST + suit_code(hand, 2u32));
+    let w3: u32 = table(T_HONOR_COST + honor_code(hand));
+    // Two independent pairs, then only the entries of the final combination that are needed:
+    // `sets` sets and the pair in all.
+    let a: [u32; 10] = combine_costs(group_costs(w0), group_costs(w1));
+    let b: [u32; 10] = combine_costs(group_costs(w2), group_costs(w3));
     let mut best: u32 = 255u32;
     for m in 0u32..sets + 1u32 {
-        for h in 0u32..2u32 {
-            let v: u32 = acc[(m * 2u32 + h) as usize] + honors[((sets - m) * 2u32 + 1u32 - h) as usize];
-            best = best.min(v);
-        }
+        let j: u32 = (sets - m) * 2u32;
+        let v: u32 =
+            (a[(m * 2u32) as usize] + b[(j + 1u32) as usize]).min(a[(m * 2u32 + 1u32) as usize] + b[j as usize]);
+        best = best.min(v);
     }
     (best as i32) - 1i32
 }
 
-// Seven pairs and thirteen orphans in one pass over the hand.
-fn shanten_pairs_and_orphans(hand: [u32; 34]) -> [i32; 2] {
-    let mut pairs: i32 = 0i32;
-    let mut kinds: i32 = 0i32;
-    let mut orphan_kinds: i32 = 0i32;
-    let mut orphan_pair: i32 = 0i32;
-    for t in 0u32..N_TYPES {
+// Kinds held (at most one per type) and of those, kinds held twice or more; straight-line counting
+// with no branch on the (random) counts.
+fn kinds_and_pairs(hand: [u32; 34], first: u32, last: u32) -> [u32; 2] {
+    let mut kinds: u32 = 0u32;
+    let mut pairs: u32 = 0u32;
+    for t in first..last {
         let c: u32 = hand[t as usize];
-        if c >= 1u32 {
-            kinds += 1i32;
-            if c >= 2u32 {
-                pairs += 1i32;
-            }
-            if is_terminal_or_honor(t) {
-                orphan_kinds += 1i32;
-                if c >= 2u32 {
-                    orphan_pair = 1i32;
-                }
-            }
-        }
+        kinds += c.min(1u32);
+        pairs += (c >> 1u32).min(1u32);
     }
-    let missing_kinds: i32 = (7i32 - kinds).max(0i32);
-    [6i32 - pairs.min(7i32) + missing_kinds, 13i32 - orphan_kinds - orphan_pair]
+    [kinds, pairs]
+}
+
+// Thirteen orphans: kinds of terminal and honor tiles held, plus one if any of them is a pair.
+fn shanten_orphans(hand: [u32; 34]) -> i32 {
+    let honors: [u32; 2] = kinds_and_pairs(hand, FIRST_HONOR, N_TYPES);
+    let mut kinds: u32 = honors[0];
+    let mut pairs: u32 = honors[1];
+    for s in 0u32..3u32 {
+        let low: u32 = hand[(s * 9u32) as usize];
+        let high: u32 = hand[(s * 9u32 + 8u32) as usize];
+        kinds += low.min(1u32) + high.min(1u32);
+        pairs += (low >> 1u32).min(1u32) + (high >> 1u32).min(1u32);
+    }
+    13i32 - (kinds as i32) - (pairs.min(1u32) as i32)
 }
 
 pub fn shanten(inp: ShantenInput) -> ShantenOutput {
@@ -101,9 +110,11 @@ pub fn shanten(inp: ShantenInput) -> ShantenOutput {
     let mut chiitoitsu: i32 = SHANTEN_NOT_APPLICABLE;
     let mut kokushi: i32 = SHANTEN_NOT_APPLICABLE;
     if tiles >= 13u32 {
-        let special: [i32; 2] = shanten_pairs_and_orphans(inp.hand);
-        chiitoitsu = special[0];
-        kokushi = special[1];
+        let kp: [u32; 2] = kinds_and_pairs(inp.hand, 0u32, N_TYPES);
+        let kinds: i32 = kp[0] as i32;
+        let pairs: i32 = kp[1] as i32;
+        chiitoitsu = 6i32 - pairs.min(7i32) + (7i32 - kinds).max(0i32);
+        kokushi = shanten_orphans(inp.hand);
     }
     ShantenOutput {
         shanten: normal.min(chiitoitsu).min(kokushi),

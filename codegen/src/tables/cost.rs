@@ -15,8 +15,17 @@ use super::code::{digit_sums, encode, place, pow5};
 
 /// Sets a hand can need from one suit: a complete hand has four.
 pub(crate) const MAX_SETS: usize = 4;
-/// Bits per D value in a packed word: D(4, 1) of an empty suit is 14.
-pub(crate) const D_BITS: usize = 4;
+/// Bits per increment in a packed word.
+const INC_BITS: usize = 2;
+/// Bit of the first pair increment, D(0, 1) - D(0, 0); the set increments sit below it.
+pub(crate) const PAIR_INC_SHIFT: usize = INC_BITS * MAX_SETS;
+/// Largest set increment D(m, 0) - D(m - 1, 0).
+pub(crate) const MAX_SET_INC: u8 = 3;
+/// Largest pair increment D(m, 1) - D(m, 0).
+pub(crate) const MAX_PAIR_INC: u8 = 2;
+
+/// D(m, h) of one code at index `2m + h`.
+pub type CostRow = [u8; 2 * (MAX_SETS + 1)];
 
 /// Set shapes of a number suit: runs first, then triplets.
 pub(crate) fn suit_sets() -> Vec<[u8; 9]> {
@@ -44,10 +53,9 @@ pub(crate) fn honor_sets() -> Vec<[u8; 7]> {
         .collect()
 }
 
-/// Packs D into `out`, two words per code: word `h` holds D(m, h) at bits `4m..4m + 4`.
-pub(crate) fn build<const N: usize>(sets: &[[u8; N]], out: &mut [u32]) {
+/// D(m, h) of every code, unpacked.
+pub(crate) fn rows<const N: usize>(sets: &[[u8; N]]) -> Vec<CostRow> {
     let len = pow5(N);
-    assert_eq!(out.len(), 2 * len);
     let sums = digit_sums(len);
     let combos: Vec<(usize, usize)> = (0..=MAX_SETS)
         .flat_map(|m| [(m, 0), (m, 1)])
@@ -65,12 +73,54 @@ pub(crate) fn build<const N: usize>(sets: &[[u8; N]], out: &mut [u32]) {
             .map(|h| h.join().expect("cost column thread panicked"))
             .collect()
     });
-    // D(0, 0) is 0 everywhere, so starting from zeroed words leaves it in place.
-    out.fill(0);
+    // D(0, 0) is 0 everywhere, so starting from zeroed rows leaves it in place.
+    let mut rows = vec![[0u8; 2 * (MAX_SETS + 1)]; len];
     for (&(m, h), col) in combos.iter().zip(&columns) {
-        for (pair, &d) in out.chunks_exact_mut(2).zip(col) {
-            pair[h] |= u32::from(d) << (D_BITS * m);
+        for (row, &d) in rows.iter_mut().zip(col) {
+            row[2 * m + h] = d;
         }
+    }
+    rows
+}
+
+/// Packs a row into one word: bits `2(m-1)..2m` hold D(m, 0) - D(m-1, 0) for m = 1..=4 and bits
+/// `8 + 2m..10 + 2m` hold D(m, 1) - D(m, 0) for m = 0..=4 (D(0, 0) is 0). `None` if the row is not
+/// of that shape: D(0, 0) != 0, or an increment outside 0..=3 (sets) or 0..=2 (pair).
+pub fn pack(row: &CostRow) -> Option<u32> {
+    if row[0] != 0 {
+        return None;
+    }
+    let mut word = 0u32;
+    for m in 0..=MAX_SETS {
+        if m > 0 {
+            let inc = row[2 * m].checked_sub(row[2 * (m - 1)]).filter(|&i| i <= MAX_SET_INC)?;
+            word |= u32::from(inc) << (INC_BITS * (m - 1));
+        }
+        let inc = row[2 * m + 1].checked_sub(row[2 * m]).filter(|&i| i <= MAX_PAIR_INC)?;
+        word |= u32::from(inc) << (PAIR_INC_SHIFT + INC_BITS * m);
+    }
+    Some(word)
+}
+
+/// D(m, h) out of a packed word (prefix sums of the increments).
+pub fn unpack(word: u32, m: usize, h: usize) -> u32 {
+    let field = |shift: usize| word >> shift & ((1 << INC_BITS) - 1);
+    let sets: u32 = (1..=m).map(|k| field(INC_BITS * (k - 1))).sum();
+    sets + if h == 1 {
+        field(PAIR_INC_SHIFT + INC_BITS * m)
+    } else {
+        0
+    }
+}
+
+/// Packs every row into `out`, one word per code. Panics if a row does not pack: the ranges are a
+/// theorem (dropping a set or the pair from a target never costs a tile; adding one costs at most
+/// its size, and some shape always fits), and this check, run on every code at every build, is its
+/// proof.
+pub(crate) fn build<const N: usize>(sets: &[[u8; N]], out: &mut [u32]) {
+    assert_eq!(out.len(), pow5(N));
+    for (code, (row, word)) in rows::<N>(sets).iter().zip(out.iter_mut()).enumerate() {
+        *word = pack(row).unwrap_or_else(|| panic!("code {code}: cost row {row:?} does not pack"));
     }
 }
 

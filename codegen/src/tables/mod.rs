@@ -5,18 +5,21 @@
 //!
 //! | region | words per entry | content |
 //! |---|---|---|
-//! | `suit_cost` | 2 per suit code | D(m, 0) at bits `4m..4m+4` in word 0, D(m, 1) in word 1 |
-//! | `honor_cost` | 2 per honor code | the same for honors (triplets and pairs only) |
+//! | `suit_cost` | 1 per suit code | D as increments: D(m, 0) - D(m-1, 0) at bits `2(m-1)..2m` (m = 1..=4), D(m, 1) - D(m, 0) at bits `8+2m..10+2m` (m = 0..=4) |
+//! | `honor_cost` | 1 per honor code | the same for honors (triplets and pairs only) |
 //! | `decomp_index` | 1 per suit code | `(first << 4) \| count` into `decomps` |
 //! | `decomps` | 2 per decomposition | word 0: pair and sets; word 1: yaku bits (see [`decomp`]) |
 //!
 //! D is exact (see the `cost` module), so per-suit costs can be combined exactly by the shanten kernel.
+//! D(0, 0) is always 0 and every increment fits 2 bits (checked on every code at every build), so a
+//! row of ten costs packs into one word: half the bytes of two 4-bit-field words, and one load.
 
 mod code;
 mod cost;
 pub mod decomp;
 
 pub use code::{honor_code, suit_code, HONOR_CODES, SUIT_CODES};
+pub use cost::{pack as pack_costs, CostRow};
 
 /// Bits of the count field in a `decomp_index` word.
 pub const INDEX_COUNT_BITS: u32 = 4;
@@ -39,8 +42,8 @@ pub fn build() -> Tables {
     let n_decomps = decomps.len();
 
     let suit_cost = 0;
-    let honor_cost = suit_cost + 2 * SUIT_CODES;
-    let decomp_index = honor_cost + 2 * HONOR_CODES;
+    let honor_cost = suit_cost + SUIT_CODES;
+    let decomp_index = honor_cost + HONOR_CODES;
     let decomps_at = decomp_index + SUIT_CODES;
     let mut words = vec![0u32; decomps_at + 2 * n_decomps];
 
@@ -95,14 +98,14 @@ impl Tables {
             .collect()
     }
 
-    /// The two cost words of a suit code.
-    pub fn suit_cost_words(&self, code: usize) -> [u32; 2] {
-        self.pair_at(self.suit_cost as usize + 2 * code)
+    /// The packed cost word of a suit code.
+    pub fn suit_cost_word(&self, code: usize) -> u32 {
+        self.words[self.suit_cost as usize + code]
     }
 
-    /// The two cost words of an honor code.
-    pub fn honor_cost_words(&self, code: usize) -> [u32; 2] {
-        self.pair_at(self.honor_cost as usize + 2 * code)
+    /// The packed cost word of an honor code.
+    pub fn honor_cost_word(&self, code: usize) -> u32 {
+        self.words[self.honor_cost as usize + code]
     }
 
     /// The `decomps` words (two per decomposition) of a suit code; empty if it is incomplete.
@@ -113,23 +116,29 @@ impl Tables {
         &self.words[self.decomps as usize + 2 * first..][..2 * count]
     }
 
-    fn pair_at(&self, at: usize) -> [u32; 2] {
-        [self.words[at], self.words[at + 1]]
-    }
-
     fn regions(&self) -> [(&'static str, u32, usize); 4] {
         [
-            ("suit_cost", self.suit_cost, 2 * SUIT_CODES),
-            ("honor_cost", self.honor_cost, 2 * HONOR_CODES),
+            ("suit_cost", self.suit_cost, SUIT_CODES),
+            ("honor_cost", self.honor_cost, HONOR_CODES),
             ("decomp_index", self.decomp_index, SUIT_CODES),
             ("decomps", self.decomps, 2 * self.n_decomps as usize),
         ]
     }
 }
 
-/// D(m, h) out of a pair of cost words.
-pub fn cost_d(words: [u32; 2], m: usize, h: usize) -> u32 {
-    words[h] >> (cost::D_BITS * m) & 0xf
+/// D(m, h) out of a packed cost word.
+pub fn cost_d(word: u32, m: usize, h: usize) -> u32 {
+    cost::unpack(word, m, h)
+}
+
+/// D(m, h) of every suit code, unpacked (what `suit_cost` packs), for checks.
+pub fn suit_cost_rows() -> Vec<CostRow> {
+    cost::rows::<9>(&cost::suit_sets())
+}
+
+/// D(m, h) of every honor code, unpacked (what `honor_cost` packs), for checks.
+pub fn honor_cost_rows() -> Vec<CostRow> {
+    cost::rows::<7>(&cost::honor_sets())
 }
 
 fn fnv1a(words: &[u32]) -> u64 {
