@@ -137,11 +137,12 @@ fn main() {
         for (path, _) in &kernel {
             let _ = writeln!(module, "    include!({:?});", path.display().to_string());
         }
-        for (_, _, input, output) in ENTRIES {
-            for ty in [input, output] {
-                let _ = writeln!(module, "    unsafe impl bytemuck::Zeroable for {ty} {{}}");
-                let _ = writeln!(module, "    unsafe impl bytemuck::Pod for {ty} {{}}");
-            }
+        let mut io_types: Vec<&str> = ENTRIES.iter().flat_map(|(_, _, input, output)| [*input, *output]).collect();
+        io_types.sort_unstable();
+        io_types.dedup();
+        for ty in io_types {
+            let _ = writeln!(module, "    unsafe impl bytemuck::Zeroable for {ty} {{}}");
+            let _ = writeln!(module, "    unsafe impl bytemuck::Pod for {ty} {{}}");
         }
         let _ = writeln!(
             module,

@@ -1,0 +1,178 @@
+// Tiles in and out of hands, and what a hand can do: completeness, waits, tenpai.
+// Tile values 0..33 are the types; 34, 35, 36 are the red fives of m, p, s (types 4, 13, 22).
+
+fn value_type(v: u32) -> u32 {
+    if v >= 34u32 {
+        return (v - 34u32) * 9u32 + 4u32;
+    }
+    v
+}
+
+fn red_bit(seat: u32, suit: u32) -> u32 {
+    1u32 << (seat * 3u32 + suit)
+}
+
+fn holds_red(s: &mut GameState, seat: u32, suit: u32) -> bool {
+    (s.red & red_bit(seat, suit)) != 0u32
+}
+
+fn give_tile(s: &mut GameState, seat: u32, v: u32) {
+    hand_add(s, seat, value_type(v));
+    if v >= 34u32 {
+        s.red |= red_bit(seat, v - 34u32);
+    }
+}
+
+fn take_tile(s: &mut GameState, seat: u32, v: u32) {
+    hand_remove(s, seat, value_type(v));
+    if v >= 34u32 {
+        s.red &= !red_bit(seat, v - 34u32);
+    }
+}
+
+// Copies of value `v` the seat holds (a red five is its own value; a black five excludes it).
+fn value_count(s: &mut GameState, seat: u32, v: u32) -> u32 {
+    if v >= 34u32 {
+        return holds_red(s, seat, v - 34u32) as u32;
+    }
+    let n: u32 = hand_count(s, seat, v);
+    if v % 9u32 == 4u32 && v < 27u32 && holds_red(s, seat, v / 9u32) {
+        return n - 1u32;
+    }
+    n
+}
+
+// Takes one copy of type `t`, preferring a black tile; returns the value taken.
+fn take_type(s: &mut GameState, seat: u32, t: u32, prefer_red: bool) -> u32 {
+    let mut v: u32 = t;
+    if t < 27u32 && t % 9u32 == 4u32 && holds_red(s, seat, t / 9u32) {
+        if prefer_red || hand_count(s, seat, t) == 1u32 {
+            v = 34u32 + t / 9u32;
+        }
+    }
+    take_tile(s, seat, v);
+    v
+}
+
+fn meld_count(s: &mut GameState, seat: u32) -> u32 {
+    byte_of(s.meld_counts, seat)
+}
+
+// Four sets and a pair, seven pairs or thirteen orphans (counts of the concealed part).
+fn hand_complete(c: [u32; 34], n_melds: u32) -> bool {
+    let mut ok: bool = true;
+    let mut pairs: u32 = 0u32;
+    for i in 0u32..7u32 {
+        let x: u32 = c[(27u32 + i) as usize];
+        if x == 1u32 || x == 4u32 {
+            ok = false;
+        }
+        if x == 2u32 {
+            pairs += 1u32;
+        }
+    }
+    if ok {
+        for suit in 0u32..3u32 {
+            let mut total: u32 = 0u32;
+            for i in 0u32..9u32 {
+                total += c[(suit * 9u32 + i) as usize];
+            }
+            if total % 3u32 == 1u32 || (table(T_DECOMP_INDEX + suit_code(c, suit)) & 15u32) == 0u32 {
+                ok = false;
+            }
+            if total % 3u32 == 2u32 {
+                pairs += 1u32;
+            }
+        }
+    }
+    if ok && pairs == 1u32 {
+        return true;
+    }
+    if n_melds != 0u32 {
+        return false;
+    }
+    let mut sevens: bool = true;
+    let mut orphans: bool = true;
+    let mut orphan_pair: bool = false;
+    for t in 0u32..34u32 {
+        let x: u32 = c[t as usize];
+        if x != 0u32 && x != 2u32 {
+            sevens = false;
+        }
+        if is_terminal_or_honor(t) {
+            if x == 0u32 || x > 2u32 {
+                orphans = false;
+            }
+            if x == 2u32 {
+                orphan_pair = true;
+            }
+        } else if x != 0u32 {
+            orphans = false;
+        }
+    }
+    sevens || (orphans && orphan_pair)
+}
+
+// Tile types that complete the hand, as a 34-bit set. A wait on a tile whose four copies the seat
+// already holds (melds included) does not count: that tile can never arrive.
+fn waits_of(c: [u32; 34], n_melds: u32, all: [u32; 34]) -> [u32; 2] {
+    let mut w: [u32; 2] = [0u32; 2];
+    let mut h: [u32; 34] = c;
+    for t in 0u32..34u32 {
+        if all[t as usize] < 4u32 {
+            h[t as usize] += 1u32;
+            if hand_complete(h, n_melds) {
+                w[(t / 32u32) as usize] |= 1u32 << (t % 32u32);
+            }
+            h[t as usize] -= 1u32;
+        }
+    }
+    w
+}
+
+fn in_set(set: [u32; 2], t: u32) -> bool {
+    ((set[(t / 32u32) as usize] >> (t % 32u32)) & 1u32) != 0u32
+}
+
+// Concealed counts plus meld tiles: what the seat holds in all.
+fn all_tiles(s: &mut GameState, seat: u32) -> [u32; 34] {
+    let mut c: [u32; 34] = hand_counts(s, seat);
+    for i in 0u32..meld_count(s, seat) {
+        let m: u32 = s.melds[(seat * 4u32 + i) as usize];
+        let t: u32 = meld_tile(m);
+        if meld_kind(m) == MELD_CHI {
+            c[t as usize] += 1u32;
+            c[(t + 1u32) as usize] += 1u32;
+            c[(t + 2u32) as usize] += 1u32;
+        } else if meld_kind(m) == MELD_PON {
+            c[t as usize] += 3u32;
+        } else {
+            c[t as usize] += 4u32;
+        }
+    }
+    c
+}
+
+fn seat_waits(s: &mut GameState, seat: u32) -> [u32; 2] {
+    let c: [u32; 34] = hand_counts(s, seat);
+    let all: [u32; 34] = all_tiles(s, seat);
+    waits_of(c, meld_count(s, seat), all)
+}
+
+fn seat_tenpai(s: &mut GameState, seat: u32) -> bool {
+    let w: [u32; 2] = seat_waits(s, seat);
+    (w[0] | w[1]) != 0u32
+}
+
+// Discarding one tile of type `t` leaves the seat tenpai (the hand holds 14 - 3 x melds tiles).
+fn tenpai_after_discard(s: &mut GameState, seat: u32, t: u32) -> bool {
+    let mut c: [u32; 34] = hand_counts(s, seat);
+    if c[t as usize] == 0u32 {
+        return false;
+    }
+    c[t as usize] -= 1u32;
+    let mut all: [u32; 34] = all_tiles(s, seat);
+    all[t as usize] -= 1u32;
+    let w: [u32; 2] = waits_of(c, meld_count(s, seat), all);
+    (w[0] | w[1]) != 0u32
+}

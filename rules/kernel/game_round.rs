@@ -1,0 +1,250 @@
+// Rounds: dealing, drawing, kan dora, and what happens when a round ends (dealer repeat, honba,
+// the next round or the end of the game with uma).
+
+fn empty_state() -> GameState {
+    GameState {
+        seed: [0u32; 2],
+        games: 0u32,
+        mode: MODE_HALF,
+        uma: [0i32; 4],
+        penalty: 0.0f32,
+        auto_reset: 0u32,
+        round: 0u32,
+        dealer: 0u32,
+        honba: 0u32,
+        sticks: 0u32,
+        scores: [0i32; 4],
+        wall: [0u32; 34],
+        next_draw: WALL_LIVE_START,
+        live_end: WALL_LIVE_END,
+        kans: 0u32,
+        dora_revealed: 1u32,
+        dora_pending: 0u32,
+        hands: [0u32; 20],
+        red: 0u32,
+        melds: [0u32; 16],
+        meld_counts: 0u32,
+        rivers: [0u32; 24],
+        river_lens: 0u32,
+        discarded: [0u32; 8],
+        seat_flags: [0u32; 4],
+        pao: 0u32,
+        phase: PHASE_TURN,
+        current: 0u32,
+        drawn: NO_TILE_VALUE,
+        rinshan: 0u32,
+        uninterrupted: 1u32,
+        kuikae: 0xffffu32,
+        claim_tile: NO_TILE_VALUE,
+        claim_from: 0u32,
+        claim_kan: 0u32,
+        claim_options: [0u32; 4],
+        claim_choices: [NO_CHOICE; 4],
+        mask: [0u32; 3],
+        rewards: [0i32; 4],
+        terminated: 0u32,
+        truncated: 0u32,
+        illegal: 0u32,
+        events: 0u32,
+        winners: 0u32,
+        deal_in: 0u32,
+        yaku: [0u32; 2],
+        rounds: 0u32,
+        steps: 0u32,
+    }
+}
+
+// The 136 tiles in a uniformly random order (Fisher-Yates over the counter-based stream).
+fn shuffled_wall(seed: [u32; 2], stream: u32) -> [u32; 136] {
+    let mut w: [u32; 136] = [0u32; 136];
+    for i in 0u32..136u32 {
+        let t: u32 = i / 4u32;
+        let mut v: u32 = t;
+        if RED_FIVES && i % 4u32 == 0u32 && t < 27u32 && t % 9u32 == 4u32 {
+            v = 34u32 + t / 9u32;
+        }
+        w[i as usize] = v;
+    }
+    let mut counter: u32 = 0u32;
+    let mut i: u32 = 135u32;
+    while i > 0u32 {
+        let j: u32 = random_below(seed, stream, &mut counter, i + 1u32);
+        let x: u32 = w[i as usize];
+        w[i as usize] = w[j as usize];
+        w[j as usize] = x;
+        i -= 1u32;
+    }
+    w
+}
+
+fn start_round(s: &mut GameState, wall: [u32; 136]) {
+    for i in 0u32..34u32 {
+        s.wall[i as usize] = wall[(i * 4u32) as usize]
+            | (wall[(i * 4u32 + 1u32) as usize] << 8u32)
+            | (wall[(i * 4u32 + 2u32) as usize] << 16u32)
+            | (wall[(i * 4u32 + 3u32) as usize] << 24u32);
+    }
+    s.next_draw = WALL_LIVE_START;
+    s.live_end = WALL_LIVE_END;
+    s.kans = 0u32;
+    s.dora_revealed = 1u32;
+    s.dora_pending = 0u32;
+    s.hands = [0u32; 20];
+    s.red = 0u32;
+    s.melds = [0u32; 16];
+    s.meld_counts = 0u32;
+    s.rivers = [0u32; 24];
+    s.river_lens = 0u32;
+    s.discarded = [0u32; 8];
+    s.seat_flags = [SEAT_CONCEALED | SEAT_NAGASHI; 4];
+    s.pao = 0u32;
+    s.uninterrupted = 1u32;
+    s.kuikae = 0xffffu32;
+    s.claim_tile = NO_TILE_VALUE;
+    s.claim_kan = 0u32;
+    s.claim_options = [0u32; 4];
+    s.claim_choices = [NO_CHOICE; 4];
+    for j in 0u32..4u32 {
+        let seat: u32 = (s.dealer + j) % 4u32;
+        for k in 0u32..13u32 {
+            let v: u32 = wall_tile(s, j * 13u32 + k);
+            give_tile(s, seat, v);
+        }
+    }
+    draw(s, s.dealer);
+}
+
+fn draw(s: &mut GameState, seat: u32) {
+    let v: u32 = wall_tile(s, s.next_draw);
+    s.next_draw += 1u32;
+    give_tile(s, seat, v);
+    s.drawn = v;
+    s.rinshan = 0u32;
+    s.current = seat;
+    s.phase = PHASE_TURN;
+    s.kuikae = 0xffffu32;
+    s.seat_flags[seat as usize] &= !SEAT_FURITEN_TEMP;
+}
+
+// The replacement draw after a kan: the dead wall gives one tile and the live wall shrinks by one.
+fn draw_replacement(s: &mut GameState, seat: u32) {
+    let v: u32 = wall_tile(s, WALL_RINSHAN + s.kans);
+    s.kans += 1u32;
+    s.live_end -= 1u32;
+    give_tile(s, seat, v);
+    s.drawn = v;
+    s.rinshan = 1u32;
+    s.current = seat;
+    s.phase = PHASE_TURN;
+    s.kuikae = 0xffffu32;
+    s.seat_flags[seat as usize] &= !SEAT_FURITEN_TEMP;
+}
+
+fn reveal_pending_dora(s: &mut GameState) {
+    s.dora_revealed += s.dora_pending;
+    s.dora_pending = 0u32;
+}
+
+fn last_round(s: &mut GameState) -> u32 {
+    if s.mode == MODE_EAST {
+        return 3u32;
+    }
+    7u32
+}
+
+fn top_seat(s: &mut GameState) -> u32 {
+    // Ties go to the seat nearer the first dealer of the game (East 1's dealer is round 0's).
+    let first: u32 = (s.dealer + 64u32 - s.round) % 4u32;
+    let mut best: u32 = first;
+    for j in 1u32..4u32 {
+        let p: u32 = (first + j) % 4u32;
+        if s.scores[p as usize] > s.scores[best as usize] {
+            best = p;
+        }
+    }
+    best
+}
+
+fn game_is_over(s: &mut GameState, dealer_continues: bool) -> bool {
+    if s.mode == MODE_SINGLE {
+        return true;
+    }
+    if BUST_BELOW_ZERO {
+        for p in 0u32..4u32 {
+            if s.scores[p as usize] < 0i32 {
+                return true;
+            }
+        }
+    }
+    let last: u32 = last_round(s);
+    let top: u32 = top_seat(s);
+    let reached: bool = s.scores[top as usize] >= TARGET_POINTS as i32;
+    if s.round < last {
+        return false;
+    }
+    let mut limit: u32 = last;
+    if WEST_EXTENSION {
+        limit = last + 4u32;
+    }
+    if s.round > last && reached {
+        // Extension rounds end as soon as someone reaches the target.
+        return true;
+    }
+    if dealer_continues {
+        // All-last: a dealer who is top (and has reached the target) stops the game.
+        return DEALER_TOP_STOP && top == s.dealer && (reached || !WEST_EXTENSION) && s.round >= last;
+    }
+    if s.round == limit {
+        return true;
+    }
+    !WEST_EXTENSION || reached
+}
+
+// Uma by rank and the leftover sticks to the top seat, paid in the game's final step.
+fn finish_game(s: &mut GameState) {
+    let top: u32 = top_seat(s);
+    collect_sticks(s, top);
+    let first: u32 = (s.dealer + 64u32 - s.round) % 4u32;
+    let mut ranks: [u32; 4] = [0u32; 4];
+    for p in 0u32..4u32 {
+        for q in 0u32..4u32 {
+            if q != p {
+                let above: bool = s.scores[q as usize] > s.scores[p as usize];
+                let tie_before: bool = s.scores[q as usize] == s.scores[p as usize]
+                    && (q + 4u32 - first) % 4u32 < (p + 4u32 - first) % 4u32;
+                if above || tie_before {
+                    ranks[p as usize] += 1u32;
+                }
+            }
+        }
+    }
+    for p in 0u32..4u32 {
+        let u: i32 = s.uma[ranks[p as usize] as usize];
+        s.scores[p as usize] += u;
+        s.rewards[p as usize] += u / 100i32;
+    }
+    s.phase = PHASE_OVER;
+    s.terminated = 1u32;
+    s.events |= EVENT_GAME_OVER;
+}
+
+// Ends the round: `dealer_continues` after a dealer win, a dealer tenpai at a draw or an abortive
+// draw; `drawn_round` when nobody won.
+fn end_round(s: &mut GameState, dealer_continues: bool, drawn_round: bool) {
+    s.rounds += 1u32;
+    if game_is_over(s, dealer_continues) {
+        finish_game(s);
+        return;
+    }
+    if dealer_continues || drawn_round {
+        s.honba += 1u32;
+    } else {
+        s.honba = 0u32;
+    }
+    if !dealer_continues {
+        s.round += 1u32;
+        s.dealer = (s.dealer + 1u32) % 4u32;
+    }
+    let wall: [u32; 136] = shuffled_wall(s.seed, (s.games << 8u32) | (s.rounds & 255u32));
+    start_round(s, wall);
+}

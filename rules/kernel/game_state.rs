@@ -1,0 +1,204 @@
+// The state of one game as plain data (Pgx style): every field is a 32-bit word so the same struct
+// lives in a GPU storage buffer and in a CPU array. Small counts are packed into words; the
+// accessors below are the only code that knows the packing.
+
+// Game modes.
+const MODE_SINGLE: u32 = 0;
+const MODE_EAST: u32 = 1;
+const MODE_HALF: u32 = 2;
+
+// What the current player is deciding.
+const PHASE_TURN: u32 = 0; // after a draw or a call: discard, tsumo, kan, riichi, kyuushu
+const PHASE_RIICHI_DISCARD: u32 = 1; // riichi declared: discard a tile that keeps tenpai
+const PHASE_CLAIM: u32 = 2; // a discard (or an added kan) waits for each claimant's decision
+const PHASE_OVER: u32 = 3; // the game has ended
+
+// Per-seat flags.
+const SEAT_RIICHI: u32 = 1; // riichi accepted (stick paid)
+const SEAT_DOUBLE_RIICHI: u32 = 2;
+const SEAT_IPPATSU: u32 = 4;
+const SEAT_RIICHI_PENDING: u32 = 8; // declared; accepted once the declaring discard is not ronned
+const SEAT_FURITEN_TEMP: u32 = 16; // passed a ron since the last own discard
+const SEAT_FURITEN_RIICHI: u32 = 32; // passed a ron after riichi: furiten for the rest of the round
+const SEAT_NAGASHI: u32 = 64; // every discard so far was a terminal or honor, none called
+const SEAT_CONCEALED: u32 = 128; // no open meld
+const SEAT_DISCARDED: u32 = 256; // has discarded at least once this round
+
+const NO_TILE_VALUE: u32 = 255;
+const NO_CHOICE: u32 = 255;
+
+// Claim options of one seat on a discard (or an added kan).
+const CLAIM_RON: u32 = 1;
+const CLAIM_PON: u32 = 2;
+const CLAIM_PON_RED: u32 = 4;
+const CLAIM_KAN: u32 = 8;
+const CLAIM_CHI_LEFT: u32 = 16;
+const CLAIM_CHI_LEFT_RED: u32 = 32;
+const CLAIM_CHI_MIDDLE: u32 = 64;
+const CLAIM_CHI_MIDDLE_RED: u32 = 128;
+const CLAIM_CHI_RIGHT: u32 = 256;
+const CLAIM_CHI_RIGHT_RED: u32 = 512;
+
+// What a step settled (StepView.events).
+const EVENT_RON: u32 = 1;
+const EVENT_TSUMO: u32 = 2;
+const EVENT_EXHAUSTIVE_DRAW: u32 = 4;
+const EVENT_ABORTIVE_DRAW: u32 = 8;
+const EVENT_GAME_OVER: u32 = 16;
+const EVENT_NAGASHI: u32 = 32;
+
+// Dead wall layout (indices into the 136-tile wall): replacement tiles, dora and ura indicators.
+const WALL_LIVE_START: u32 = 52;
+const WALL_LIVE_END: u32 = 122;
+const WALL_DORA: u32 = 122;
+const WALL_URA: u32 = 127;
+const WALL_RINSHAN: u32 = 132;
+
+#[derive(Clone, Copy)]
+#[repr(C)]
+pub struct ResetInput {
+    pub seed: [u32; 2],
+    // MODE_*
+    pub mode: u32,
+    // First dealer 0..3, or 4: drawn from the seed.
+    pub dealer: u32,
+    // 1: deal `wall` instead of shuffling (tests, log replay); the first round only.
+    pub use_wall: u32,
+    // Tile values in dealing order (see `wall_tile`): 0..33, 34..36 = red 5m 5p 5s.
+    pub wall: [u32; 136],
+    // Uma by final rank, in points; paid with the leftover riichi sticks in the last step.
+    pub uma: [i32; 4],
+    // Reward of the seat that plays an illegal action (the others get 0).
+    pub penalty: f32,
+    // 1: a finished game is replaced by a new one (next seed) in the same step.
+    pub auto_reset: u32,
+}
+
+#[derive(Clone, Copy)]
+#[repr(C)]
+pub struct StepView {
+    pub current_player: u32,
+    // Legal actions as a bitset over the variant's action ids.
+    pub mask: [u32; 3],
+    // This step's score change per seat in units of 100 points (uma included at the end).
+    pub rewards: [f32; 4],
+    pub terminated: u32,
+    pub truncated: u32,
+    // 1 when this step's action was illegal (the game ended with the penalty).
+    pub illegal: u32,
+    // What this step settled: EVENT_* bits, the winners (bit per seat), the seat that dealt in + 1
+    // (0 = none) and the yaku of the winners' hands (OR of their yaku bitmasks).
+    pub events: u32,
+    pub winners: u32,
+    pub deal_in: u32,
+    pub yaku: [u32; 2],
+    // Rounds played in this game so far.
+    pub rounds: u32,
+}
+
+#[derive(Clone, Copy)]
+#[repr(C)]
+pub struct GameState {
+    pub seed: [u32; 2],
+    pub games: u32,
+    pub mode: u32,
+    pub uma: [i32; 4],
+    pub penalty: f32,
+    pub auto_reset: u32,
+    // Round: 0 = East 1, 4 = South 1, 8 = West 1...
+    pub round: u32,
+    pub dealer: u32,
+    pub honba: u32,
+    pub sticks: u32,
+    pub scores: [i32; 4],
+    // 136 tile values, 4 per word (8 bits each).
+    pub wall: [u32; 34],
+    // Index of the next live draw, counting up from 52 (after the deal).
+    pub next_draw: u32,
+    // Live draws end before this index; each kan moves it down by one (a replacement tile).
+    pub live_end: u32,
+    pub kans: u32,
+    // Dora indicators revealed (1 + kan dora).
+    pub dora_revealed: u32,
+    // Kan dora waiting to be revealed (open and added kans reveal after the replacement discard).
+    pub dora_pending: u32,
+    // Concealed tile counts: 4 bits per type, 8 types per word, 5 words per seat.
+    pub hands: [u32; 20],
+    // Red fives held: bit seat * 3 + suit.
+    pub red: u32,
+    // Melds: 4 per seat (see `meld_word`); counts 8 bits per seat.
+    pub melds: [u32; 16],
+    pub meld_counts: u32,
+    // Rivers: 24 discards per seat, 8 bits each (value | 64 called | 128 tsumogiri); lengths 8 bits per seat.
+    pub rivers: [u32; 24],
+    pub river_lens: u32,
+    // Tile types each seat has discarded (furiten): 2 words per seat.
+    pub discarded: [u32; 8],
+    pub seat_flags: [u32; 4],
+    // Liable seat + 1 for pao (dragons, winds), 8 bits per seat; 0 = none.
+    pub pao: u32,
+    pub phase: u32,
+    pub current: u32,
+    // Tile drawn this turn (value) or NO_TILE_VALUE; 1 if it came from the dead wall.
+    pub drawn: u32,
+    pub rinshan: u32,
+    // No call, kan or abortive interruption yet this round (double riichi, tenhou, kyuushu...).
+    pub uninterrupted: u32,
+    // Kuikae: up to two tile types the caller may not discard now, 8 bits each (255 = none).
+    pub kuikae: u32,
+    // Claim window: the tile (value), who discarded it, whether it is an added kan (chankan).
+    pub claim_tile: u32,
+    pub claim_from: u32,
+    pub claim_kan: u32,
+    // Per seat: the claim options offered (CLAIM_* bits) and the action chosen (NO_CHOICE until then).
+    pub claim_options: [u32; 4],
+    pub claim_choices: [u32; 4],
+    // Outputs of the last step (see StepView).
+    pub mask: [u32; 3],
+    pub rewards: [i32; 4],
+    pub terminated: u32,
+    pub truncated: u32,
+    pub illegal: u32,
+    pub events: u32,
+    pub winners: u32,
+    pub deal_in: u32,
+    pub yaku: [u32; 2],
+    pub rounds: u32,
+    pub steps: u32,
+}
+
+fn get4(words: [u32; 20], seat: u32, t: u32) -> u32 {
+    (words[(seat * 5u32 + t / 8u32) as usize] >> ((t % 8u32) * 4u32)) & 15u32
+}
+
+fn hand_count(s: &mut GameState, seat: u32, t: u32) -> u32 {
+    get4(s.hands, seat, t)
+}
+
+fn hand_add(s: &mut GameState, seat: u32, t: u32) {
+    s.hands[(seat * 5u32 + t / 8u32) as usize] += 1u32 << ((t % 8u32) * 4u32);
+}
+
+fn hand_remove(s: &mut GameState, seat: u32, t: u32) {
+    s.hands[(seat * 5u32 + t / 8u32) as usize] -= 1u32 << ((t % 8u32) * 4u32);
+}
+
+fn hand_counts(s: &mut GameState, seat: u32) -> [u32; 34] {
+    let mut c: [u32; 34] = [0u32; 34];
+    for t in 0u32..34u32 {
+        c[t as usize] = get4(s.hands, seat, t);
+    }
+    c
+}
+
+fn wall_tile(s: &mut GameState, i: u32) -> u32 {
+    (s.wall[(i / 4u32) as usize] >> ((i % 4u32) * 8u32)) & 255u32
+}
+
+fn byte_of(word: u32, i: u32) -> u32 {
+    (word >> (i * 8u32)) & 255u32
+}
+
+fn with_byte(word: u32, i: u32, v: u32) -> u32 {
+    (word & !(255u32 << (i * 8u32))) | ((v & 255u32) << (i * 8u32))
+}

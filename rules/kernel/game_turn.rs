@@ -1,0 +1,226 @@
+// The player to move after a draw or a call: what is legal, and discards, riichi, kans, tsumo and
+// kyuushu.
+
+fn mask_set(m: &mut [u32; 3], a: u32) {
+    if a != ACTION_ABSENT {
+        m[(a / 32u32) as usize] |= 1u32 << (a % 32u32);
+    }
+}
+
+fn mask_has(m: [u32; 3], a: u32) -> bool {
+    a < 96u32 && ((m[(a / 32u32) as usize] >> (a % 32u32)) & 1u32) != 0u32
+}
+
+fn kuikae_banned(s: &mut GameState, t: u32) -> bool {
+    byte_of(s.kuikae, 0u32) == t || byte_of(s.kuikae, 1u32) == t
+}
+
+fn discard_allowed(s: &mut GameState, p: u32, v: u32) -> bool {
+    let n: u32 = value_count(s, p, v);
+    if n == 0u32 || kuikae_banned(s, value_type(v)) {
+        return false;
+    }
+    // The drawn tile itself goes by TSUMOGIRI; this id then needs another copy of the same value.
+    !(v == s.drawn && n < 2u32)
+}
+
+fn has_pon(s: &mut GameState, p: u32, t: u32) -> bool {
+    for i in 0u32..meld_count(s, p) {
+        let m: u32 = s.melds[(p * 4u32 + i) as usize];
+        if meld_kind(m) == MELD_PON && meld_tile(m) == t {
+            return true;
+        }
+    }
+    false
+}
+
+fn yaochu_kinds(s: &mut GameState, p: u32) -> u32 {
+    let mut n: u32 = 0u32;
+    for t in 0u32..34u32 {
+        if is_terminal_or_honor(t) && hand_count(s, p, t) > 0u32 {
+            n += 1u32;
+        }
+    }
+    n
+}
+
+fn riichi_possible(s: &mut GameState, p: u32) -> bool {
+    if shanten(ShantenInput { hand: hand_counts(s, p) }).shanten > 0i32 {
+        return false;
+    }
+    for t in 0u32..34u32 {
+        if tenpai_after_discard(s, p, t) {
+            return true;
+        }
+    }
+    false
+}
+
+// In riichi a closed kan is allowed only of the drawn tile and only if the waits stay the same.
+fn riichi_kan_keeps_waits(s: &mut GameState, p: u32, t: u32) -> bool {
+    let all: [u32; 34] = all_tiles(s, p);
+    let n: u32 = meld_count(s, p);
+    let mut before: [u32; 34] = hand_counts(s, p);
+    before[value_type(s.drawn) as usize] -= 1u32;
+    let w0: [u32; 2] = waits_of(before, n, all);
+    let mut after: [u32; 34] = hand_counts(s, p);
+    after[t as usize] -= 4u32;
+    let w1: [u32; 2] = waits_of(after, n + 1u32, all);
+    w0[0] == w1[0] && w0[1] == w1[1] && (w0[0] | w0[1]) != 0u32
+}
+
+fn turn_mask(s: &mut GameState) -> [u32; 3] {
+    let p: u32 = s.current;
+    let mut m: [u32; 3] = [0u32; 3];
+    let f: u32 = s.seat_flags[p as usize];
+    let riichi: bool = (f & SEAT_RIICHI) != 0u32;
+    let drew: bool = s.drawn != NO_TILE_VALUE;
+    if s.phase == PHASE_RIICHI_DISCARD {
+        for v in 0u32..ACTION_DISCARD_COUNT {
+            if discard_allowed(s, p, v) && tenpai_after_discard(s, p, value_type(v)) {
+                mask_set(&mut m, ACTION_DISCARD + v);
+            }
+        }
+        if drew && tenpai_after_discard(s, p, value_type(s.drawn)) {
+            mask_set(&mut m, ACTION_TSUMOGIRI);
+        }
+        return m;
+    }
+    if !riichi {
+        for v in 0u32..ACTION_DISCARD_COUNT {
+            if discard_allowed(s, p, v) {
+                mask_set(&mut m, ACTION_DISCARD + v);
+            }
+        }
+    }
+    if !drew {
+        return m;
+    }
+    mask_set(&mut m, ACTION_TSUMOGIRI);
+    if can_win(s, p, s.drawn, true, false) {
+        mask_set(&mut m, ACTION_TSUMO);
+    }
+    if s.kans < 4u32 && s.next_draw < s.live_end {
+        for t in 0u32..34u32 {
+            let n: u32 = hand_count(s, p, t);
+            if n == 4u32 {
+                if !riichi || (t == value_type(s.drawn) && riichi_kan_keeps_waits(s, p, t)) {
+                    mask_set(&mut m, ACTION_SELF_KAN + t);
+                }
+            } else if n >= 1u32 && !riichi && has_pon(s, p, t) {
+                mask_set(&mut m, ACTION_SELF_KAN + t);
+            }
+        }
+    }
+    let concealed: bool = (f & SEAT_CONCEALED) != 0u32;
+    let enough_points: bool = s.scores[p as usize] >= RIICHI_MIN_POINTS as i32;
+    if !riichi && concealed && enough_points && s.live_end - s.next_draw >= 4u32 && riichi_possible(s, p) {
+        mask_set(&mut m, ACTION_RIICHI);
+    }
+    if ABORTIVE_DRAWS && s.uninterrupted != 0u32 && (f & SEAT_DISCARDED) == 0u32 && yaochu_kinds(s, p) >= 9u32 {
+        mask_set(&mut m, ACTION_KYUUSHU);
+    }
+    m
+}
+
+fn river_push(s: &mut GameState, p: u32, entry: u32) {
+    let len: u32 = byte_of(s.river_lens, p);
+    if len < 24u32 {
+        s.rivers[(p * 6u32 + len / 4u32) as usize] |= (entry & 255u32) << ((len % 4u32) * 8u32);
+        s.river_lens = with_byte(s.river_lens, p, len + 1u32);
+    }
+}
+
+fn do_discard(s: &mut GameState, v: u32, tsumogiri: bool) {
+    let p: u32 = s.current;
+    take_tile(s, p, v);
+    let t: u32 = value_type(v);
+    let mut entry: u32 = v;
+    if tsumogiri {
+        entry |= 128u32;
+    }
+    river_push(s, p, entry);
+    s.discarded[(p * 2u32 + t / 32u32) as usize] |= 1u32 << (t % 32u32);
+    let mut f: u32 = s.seat_flags[p as usize];
+    if !is_terminal_or_honor(t) {
+        f &= !SEAT_NAGASHI;
+    }
+    f |= SEAT_DISCARDED;
+    // A riichi player's ippatsu ends with their next discard.
+    f &= !SEAT_IPPATSU;
+    s.seat_flags[p as usize] = f;
+    s.drawn = NO_TILE_VALUE;
+    s.rinshan = 0u32;
+    s.kuikae = 0xffffu32;
+    // The kan dora of an open or added kan appears once its replacement tile is discarded.
+    reveal_pending_dora(s);
+    open_claims(s, p, v, 0u32);
+}
+
+fn take_all_of_type(s: &mut GameState, p: u32, t: u32, n: u32) -> u32 {
+    let mut reds: u32 = 0u32;
+    for i in 0u32..n {
+        if take_type(s, p, t, false) >= 34u32 {
+            reds += 1u32;
+        }
+    }
+    reds
+}
+
+fn do_self_kan(s: &mut GameState, t: u32) {
+    let p: u32 = s.current;
+    reveal_pending_dora(s);
+    for q in 0u32..4u32 {
+        s.seat_flags[q as usize] &= !SEAT_IPPATSU;
+    }
+    s.uninterrupted = 0u32;
+    s.drawn = NO_TILE_VALUE;
+    if hand_count(s, p, t) == 4u32 {
+        let reds: u32 = take_all_of_type(s, p, t, 4u32);
+        let n: u32 = meld_count(s, p);
+        s.melds[(p * 4u32 + n) as usize] = MELD_CLOSED_KAN | (t << 4u32) | (reds << 12u32);
+        s.meld_counts = with_byte(s.meld_counts, p, n + 1u32);
+        // A closed kan shows its dora at once.
+        s.dora_revealed += 1u32;
+        open_claims(s, p, t, 2u32);
+    } else {
+        let v: u32 = take_type(s, p, t, false);
+        for i in 0u32..meld_count(s, p) {
+            let m: u32 = s.melds[(p * 4u32 + i) as usize];
+            if meld_kind(m) == MELD_PON && meld_tile(m) == t {
+                let mut red: u32 = 0u32;
+                if v >= 34u32 {
+                    red = 1u32 << 12u32;
+                }
+                s.melds[(p * 4u32 + i) as usize] = ((m & !15u32) | MELD_ADDED_KAN) + red;
+            }
+        }
+        s.dora_pending += 1u32;
+        open_claims(s, p, v, 1u32);
+    }
+}
+
+fn abortive_draw(s: &mut GameState) {
+    s.events |= EVENT_ABORTIVE_DRAW;
+    end_round(s, true, true);
+}
+
+fn do_turn_action(s: &mut GameState, a: u32) {
+    let p: u32 = s.current;
+    if a == ACTION_TSUMOGIRI {
+        let v: u32 = s.drawn;
+        do_discard(s, v, true);
+    } else if a >= ACTION_DISCARD && a < ACTION_DISCARD + ACTION_DISCARD_COUNT {
+        do_discard(s, a - ACTION_DISCARD, false);
+    } else if a == ACTION_RIICHI {
+        s.seat_flags[p as usize] |= SEAT_RIICHI_PENDING;
+        s.phase = PHASE_RIICHI_DISCARD;
+    } else if a == ACTION_TSUMO {
+        settle_tsumo(s, p);
+        end_round(s, p == s.dealer, false);
+    } else if a == ACTION_KYUUSHU {
+        abortive_draw(s);
+    } else if a >= ACTION_SELF_KAN && a < ACTION_SELF_KAN + ACTION_SELF_KAN_COUNT {
+        do_self_kan(s, a - ACTION_SELF_KAN);
+    }
+}

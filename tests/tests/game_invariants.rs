@@ -1,0 +1,133 @@
+//! Whole random-policy games on the native kernels of every variant, checking the invariants of
+//! the game after every step: tiles conserved, points conserved, one seat to act with a legal
+//! action, rewards adding up to the final score change, and termination.
+
+use rinshan::random::Rng;
+
+macro_rules! invariant_suite {
+    ($name:ident, $v:ident, $games:expr) => {
+        #[test]
+        fn $name() {
+            use rinshan::generated::$v as k;
+            let mut rng = Rng::new(42);
+            let mut total_steps = 0u64;
+            let mut wins = 0u32;
+            for g in 0..$games {
+                let mut input = k::ResetInput {
+                    seed: [g as u32, 0x5eed],
+                    mode: 2,
+                    dealer: 4,
+                    use_wall: 0,
+                    wall: [0; 136],
+                    uma: [30000, 10000, -10000, -30000],
+                    penalty: -1.0,
+                    auto_reset: 0,
+                };
+                input.seed[1] ^= 7;
+                let mut s = k::game_new(input);
+                let mut reward_sum = [0f64; 4];
+                let mut steps = 0u32;
+                loop {
+                    check_state(&s, g);
+                    let view = k::game_view(s);
+                    if view.terminated != 0 {
+                        break;
+                    }
+                    let legal: Vec<u32> = (0..k::NUM_ACTIONS)
+                        .filter(|a| view.mask[(a / 32) as usize] >> (a % 32) & 1 == 1)
+                        .collect();
+                    assert!(
+                        !legal.is_empty(),
+                        "game {g} step {steps}: no legal action for seat {}",
+                        view.current_player
+                    );
+                    let a = legal[rng.below(legal.len() as u32) as usize];
+                    k::game_step(&mut s, a);
+                    let view = k::game_view(s);
+                    assert_eq!(view.illegal, 0);
+                    for p in 0..4 {
+                        reward_sum[p] += f64::from(view.rewards[p]);
+                    }
+                    if view.winners != 0 {
+                        wins += 1;
+                    }
+                    steps += 1;
+                    assert!(steps < 20_000, "game {g} does not end");
+                }
+                total_steps += u64::from(steps);
+                for p in 0..4 {
+                    let change = f64::from(s.scores[p] - 25_000) / 100.0;
+                    assert_eq!(
+                        reward_sum[p], change,
+                        "game {g}: rewards of seat {p} add up to its final score change"
+                    );
+                }
+            }
+            eprintln!("{} games, {total_steps} steps, {wins} winning steps", $games);
+            assert!(wins > 0);
+        }
+    };
+}
+
+/// Tiles held (hands, melds, uncalled river tiles) are exactly the tiles drawn from the wall.
+fn check_state<S: StateLike>(s: &S, g: u32) {
+    let (held, drawn) = s.tiles();
+    assert_eq!(held, drawn, "game {g}: tiles held differ from tiles drawn");
+    assert_eq!(s.points(), 100_000, "game {g}: points plus sticks on the table");
+}
+
+trait StateLike {
+    fn tiles(&self) -> ([u32; 34], [u32; 34]);
+    fn points(&self) -> i64;
+}
+
+macro_rules! state_like {
+    ($v:ident) => {
+        impl StateLike for rinshan::generated::$v::GameState {
+            fn tiles(&self) -> ([u32; 34], [u32; 34]) {
+                let value_type = |v: u32| if v >= 34 { (v - 34) * 9 + 4 } else { v };
+                let wall = |i: u32| (self.wall[(i / 4) as usize] >> ((i % 4) * 8)) & 255;
+                let mut held = [0u32; 34];
+                for seat in 0..4u32 {
+                    for t in 0..34u32 {
+                        held[t as usize] += (self.hands[(seat * 5 + t / 8) as usize] >> ((t % 8) * 4)) & 15;
+                    }
+                    let n_melds = (self.meld_counts >> (seat * 8)) & 255;
+                    for i in 0..n_melds {
+                        let m = self.melds[(seat * 4 + i) as usize];
+                        let (kind, t) = (m & 15, (m >> 4) & 63);
+                        match kind {
+                            0 => (0..3).for_each(|d| held[(t + d) as usize] += 1),
+                            1 => held[t as usize] += 3,
+                            _ => held[t as usize] += 4,
+                        }
+                    }
+                    let len = (self.river_lens >> (seat * 8)) & 255;
+                    for i in 0..len {
+                        let e = (self.rivers[(seat * 6 + i / 4) as usize] >> ((i % 4) * 8)) & 255;
+                        if e & 64 == 0 {
+                            held[value_type(e & 63) as usize] += 1;
+                        }
+                    }
+                }
+                let mut drawn = [0u32; 34];
+                for i in 0..self.next_draw {
+                    drawn[value_type(wall(i)) as usize] += 1;
+                }
+                for k in 0..self.kans {
+                    drawn[value_type(wall(132 + k)) as usize] += 1;
+                }
+                (held, drawn)
+            }
+            fn points(&self) -> i64 {
+                self.scores.iter().map(|&x| i64::from(x)).sum::<i64>() + i64::from(self.sticks) * 1000
+            }
+        }
+    };
+}
+
+state_like!(red);
+state_like!(no_red);
+
+invariant_suite!(red_random_games_keep_the_invariants, red, 300);
+invariant_suite!(no_red_random_games_keep_the_invariants, no_red, 300);
