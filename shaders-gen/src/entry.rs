@@ -6,35 +6,54 @@
 //! - the k-th `Entry` (0-based) gets its input array at binding `1 + 2k` and its output
 //!   array at binding `2 + 2k`. The runtime builds one pipeline per entry point, so with one
 //!   entry per module (the usual case) this is bindings 1 and 2.
+//! - the k-th `UpdateEntry` gets its read-write state array at binding `1 + 2k` and its
+//!   read-only argument array at binding `2 + 2k`; one invocation per state record copies the
+//!   record into a function-scope `var`, passes a pointer to it with the matching argument,
+//!   and writes it back (a `ptr<storage>` cannot be passed to a kernel function that takes
+//!   `ptr<function, T>`, so the copy is what makes `&mut State` work in place).
 
 use crate::diag::{Diag, Error, Result};
 use crate::items::Program;
 use crate::names::wgsl_ident;
 use crate::types::Ty;
-use crate::Entry;
+use crate::{Entry, UpdateEntry};
 
 pub(crate) const TABLES_DECL: &str = "@group(0) @binding(0) var<storage, read> tables: array<u32>;\n";
 
-pub(crate) fn lower_entry(prog: &Program, k: usize, entry: &Entry, fallback: Diag) -> Result<String> {
-    let bad = |msg: String| -> Error {
-        match prog.fns.get(&entry.function) {
-            Some(f) => prog.diag(f.file).node(&f.item.sig.ident, msg),
-            None => fallback.whole_file(msg),
-        }
-    };
-    let name = &entry.name;
+/// Reports an entry's problem at its function's name when that exists.
+fn entry_error<'p>(prog: &'p Program, function: &'p str, fallback: Diag<'p>) -> impl Fn(String) -> Error + 'p {
+    move |msg: String| match prog.fns.get(function) {
+        Some(f) => prog.diag(f.file).node(&f.item.sig.ident, msg),
+        None => fallback.whole_file(msg),
+    }
+}
+
+/// Checks the entry point's name and the module-scope names it declares.
+fn check_names(prog: &Program, name: &str, suffixes: [&str; 2], bad: &impl Fn(String) -> Error) -> Result<()> {
     if !is_plain_ident(name) || wgsl_ident(name) != *name {
         return Err(bad(format!(
             "entry point name `{name}` is not usable as a WGSL identifier"
         )));
     }
-    for global in [name.clone(), format!("{name}_in"), format!("{name}_out")] {
+    let globals = [
+        name.to_string(),
+        format!("{name}{}", suffixes[0]),
+        format!("{name}{}", suffixes[1]),
+    ];
+    for global in globals {
         if prog.module_names.contains(&global) {
             return Err(bad(format!(
                 "entry point `{name}` needs the name `{global}`, which the kernel sources already use; rename one"
             )));
         }
     }
+    Ok(())
+}
+
+pub(crate) fn lower_entry(prog: &Program, k: usize, entry: &Entry, fallback: Diag) -> Result<String> {
+    let bad = entry_error(prog, &entry.function, fallback);
+    let name = &entry.name;
+    check_names(prog, name, ["_in", "_out"], &bad)?;
     let Some(f) = prog.fns.get(&entry.function) else {
         return Err(fallback.whole_file(format!(
             "entry `{name}`: function `{}` is not defined in the kernel sources",
@@ -74,13 +93,78 @@ pub(crate) fn lower_entry(prog: &Program, k: usize, entry: &Entry, fallback: Dia
     ))
 }
 
+pub(crate) fn lower_update_entry(prog: &Program, k: usize, entry: &UpdateEntry, fallback: Diag) -> Result<String> {
+    let bad = entry_error(prog, &entry.function, fallback);
+    let name = &entry.name;
+    check_names(prog, name, ["_state", "_arg"], &bad)?;
+    let Some(f) = prog.fns.get(&entry.function) else {
+        return Err(fallback.whole_file(format!(
+            "entry `{name}`: function `{}` is not defined in the kernel sources",
+            entry.function
+        )));
+    };
+    let state = entry_ty(&entry.state);
+    let arg = entry_ty(&entry.arg);
+    let wanted = || {
+        bad(format!(
+            "entry `{name}` needs `fn {}(state: &mut {}, arg: {})` with no return value",
+            entry.function, entry.state, entry.arg
+        ))
+    };
+    if f.params.len() != 2 || f.ret != Ty::Unit {
+        return Err(wanted());
+    }
+    if f.params[0].ty != Ty::Ptr(Box::new(state.clone())) || f.params[1].ty != arg {
+        return Err(wanted());
+    }
+    for ty in [&state, &arg] {
+        host_shareable(prog, ty).map_err(|why| {
+            bad(format!(
+                "entry `{name}`: `{}` cannot live in a storage buffer: {why}",
+                ty.rust()
+            ))
+        })?;
+    }
+    let func = wgsl_ident(&entry.function);
+    // The wrapper's locals must not hide the function it calls.
+    let local = if func == "state" { "state_1" } else { "state" };
+    let index = if func == "i" { "i_1" } else { "i" };
+    let (bstate, barg) = (1 + 2 * k, 2 + 2 * k);
+    let state_w = state.wgsl();
+    let arg_w = arg.wgsl();
+    Ok(format!(
+        "@group(0) @binding({bstate}) var<storage, read_write> {name}_state: array<{state_w}>;\n\
+         @group(0) @binding({barg}) var<storage, read> {name}_arg: array<{arg_w}>;\n\
+         \n\
+         @compute @workgroup_size(64)\n\
+         fn {name}(@builtin(global_invocation_id) gid: vec3<u32>) {{\n    \
+             let {index} = gid.x;\n    \
+             if ({index} >= arrayLength(&{name}_state)) {{ return; }}\n    \
+             var {local} = {name}_state[{index}];\n    \
+             {func}(&{local}, {name}_arg[{index}]);\n    \
+             {name}_state[{index}] = {local};\n\
+         }}\n"
+    ))
+}
+
+/// An update entry's state or argument type: a 4-byte scalar or a kernel struct.
+fn entry_ty(name: &str) -> Ty {
+    match name {
+        "u32" => Ty::U32,
+        "i32" => Ty::I32,
+        "f32" => Ty::F32,
+        "bool" => Ty::Bool,
+        _ => Ty::Struct(name.to_string()),
+    }
+}
+
 fn is_plain_ident(s: &str) -> bool {
     let mut chars = s.chars();
     chars.next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
         && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
 }
 
-/// Input/output structs are uploaded as `#[repr(C)]` bytemuck values: only 4-byte scalars
+/// Entry structs (and scalars) are uploaded as `#[repr(C)]` bytemuck values: only 4-byte scalars
 /// and arrays of them, which lay out identically in WGSL storage buffers.
 fn host_shareable(prog: &Program, ty: &Ty) -> std::result::Result<(), String> {
     match ty {

@@ -21,6 +21,9 @@
 //!   `clone`, the consts `u32::MAX/MIN`, `i32::MAX/MIN`, and the `table(i)` intrinsic
 //!   (reads the `tables` storage buffer).
 //!
+//! - Entry points ([`translate_entry_points`]): [`Entry`] maps `input[i]` to `output[i]` with
+//!   `fn(In) -> Out`; [`UpdateEntry`] updates `state[i]` in place with `fn(&mut State, Arg)`.
+//!
 //! Code generation choices (see the modules for why): consts holding arrays become
 //! `var<private>`, parameters and `let`s holding arrays are kept in `var`s, Rust names that
 //! are WGSL reserved words get a `_` suffix, shadowed locals get `_1`, `_2`... suffixes.
@@ -47,7 +50,7 @@ pub struct Source {
 }
 
 /// One compute entry point: `name` runs `function(input) -> output` once per element of the
-/// input array. See [`entry`](crate::entry) for the binding layout.
+/// input array. See [`translate`] for the binding layout.
 #[derive(Debug, Clone)]
 pub struct Entry {
     pub name: String,
@@ -56,12 +59,64 @@ pub struct Entry {
     pub output: String,
 }
 
+/// An entry that updates records in place: `fn function(state: &mut State, arg: Arg)`.
+///
+/// `name` runs once per element of the state array, with the argument at the same index,
+/// and writes the updated state back. `state` and `arg` name kernel structs or `u32`/`i32`/
+/// `f32`; both must be host-shareable (no `bool` anywhere inside).
+#[derive(Debug, Clone)]
+pub struct UpdateEntry {
+    pub name: String,
+    pub function: String,
+    pub state: String,
+    pub arg: String,
+}
+
+/// One compute entry point of either kind.
+#[derive(Debug, Clone)]
+pub enum EntryPoint {
+    /// `output[i] = function(input[i])`.
+    Map(Entry),
+    /// `function(&mut state[i], arg[i])`.
+    Update(UpdateEntry),
+}
+
+impl From<Entry> for EntryPoint {
+    fn from(e: Entry) -> Self {
+        EntryPoint::Map(e)
+    }
+}
+
+impl From<UpdateEntry> for EntryPoint {
+    fn from(e: UpdateEntry) -> Self {
+        EntryPoint::Update(e)
+    }
+}
+
+impl EntryPoint {
+    /// The WGSL entry point name.
+    pub fn name(&self) -> &str {
+        match self {
+            EntryPoint::Map(e) => &e.name,
+            EntryPoint::Update(e) => &e.name,
+        }
+    }
+}
+
 /// Translate all sources into one WGSL module with one compute entry point per `Entry`, and
 /// validate it.
 ///
 /// Binding layout: `tables` (the `table(i)` intrinsic) at group 0 binding 0; the k-th entry's
 /// input at binding `1 + 2k` and output at binding `2 + 2k`.
 pub fn translate(sources: &[Source], entries: &[Entry]) -> Result<String, Error> {
+    let entries: Vec<EntryPoint> = entries.iter().cloned().map(EntryPoint::Map).collect();
+    translate_entry_points(sources, &entries)
+}
+
+/// Like [`translate`], for a mix of entry kinds; the k-th entry point binds `1 + 2k` and
+/// `2 + 2k`: a `Map` entry its input (read) and output (read-write) arrays, an `Update` entry
+/// its state (read-write) and argument (read) arrays.
+pub fn translate_entry_points(sources: &[Source], entries: &[EntryPoint]) -> Result<String, Error> {
     let mut files = Vec::new();
     for src in sources {
         let file = syn::parse_file(&src.text)
@@ -91,11 +146,14 @@ pub fn translate(sources: &[Source], entries: &[Entry]) -> Result<String, Error>
     };
     let mut entry_names = std::collections::HashSet::new();
     for (k, e) in entries.iter().enumerate() {
-        if !entry_names.insert(e.name.as_str()) {
-            return Err(fallback.whole_file(format!("two entries are named `{}`", e.name)));
+        if !entry_names.insert(e.name()) {
+            return Err(fallback.whole_file(format!("two entries are named `{}`", e.name())));
         }
         out.push('\n');
-        out.push_str(&entry::lower_entry(&prog, k, e, fallback)?);
+        out.push_str(&match e {
+            EntryPoint::Map(e) => entry::lower_entry(&prog, k, e, fallback)?,
+            EntryPoint::Update(e) => entry::lower_update_entry(&prog, k, e, fallback)?,
+        });
     }
     if let Err(msg) = validate(&out) {
         // A bug in the translator rather than in the kernel: report it with the WGSL.

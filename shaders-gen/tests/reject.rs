@@ -1,7 +1,7 @@
 //! Constructs outside the kernel subset are rejected at the right place, with a message
 //! that says what to write instead.
 
-use rinshan_shaders_gen::{translate, Error, Source};
+use rinshan_shaders_gen::{translate, translate_entry_points, EntryPoint, Error, Source, UpdateEntry};
 
 fn reject(text: &str) -> Error {
     let src = Source {
@@ -228,4 +228,72 @@ fn syntax_errors_are_located() {
     let e = reject("fn f( -> u32 {\n    0\n}\n");
     assert_eq!(e.line, 1, "{e}");
     assert!(e.message.starts_with("syntax error"), "{e}");
+}
+
+fn reject_update(text: &str, function: &str, state: &str, arg: &str) -> Error {
+    let src = Source {
+        path: "kernels/k.rs".into(),
+        text: text.into(),
+    };
+    let entry = EntryPoint::Update(UpdateEntry {
+        name: "upd".into(),
+        function: function.into(),
+        state: state.into(),
+        arg: arg.into(),
+    });
+    match translate_entry_points(&[src], &[entry]) {
+        Ok(wgsl) => panic!("expected a rejection, got WGSL:\n{wgsl}"),
+        Err(e) => e,
+    }
+}
+
+const UPDATE_SRC: &str = "pub struct S {\n    x: u32,\n}\n\npub struct Flag {\n    on: bool,\n}\n\npub struct Outer {\n    inner: [Flag; 2],\n}\n\npub fn by_value(s: S, a: u32) -> S {\n    S { x: s.x + a }\n}\n\npub fn returns(s: &mut S, a: u32) -> u32 {\n    s.x += a;\n    s.x\n}\n\npub fn ok(s: &mut S, a: u32) {\n    s.x += a;\n}\n\npub fn one_param(s: &mut S) {\n    s.x += 1;\n}\n\npub fn flag(f: &mut Outer, a: u32) {\n    f.inner[a as usize].on = true;\n}\n\npub fn bool_arg(s: &mut S, a: bool) {\n    s.x += a as u32;\n}\n";
+
+#[test]
+fn update_entry_signature_mismatch() {
+    let cases = [
+        ("by_value", "S", "u32", 13, 8),
+        ("returns", "S", "u32", 17, 8),
+        ("one_param", "S", "u32", 26, 8),
+        // The argument type does not match the entry's.
+        ("ok", "S", "i32", 22, 8),
+        ("ok", "Flag", "u32", 22, 8),
+    ];
+    for (function, state, arg, line, column) in cases {
+        let e = reject_update(UPDATE_SRC, function, state, arg);
+        assert_eq!(
+            (e.file.as_str(), e.line, e.column),
+            ("kernels/k.rs", line, column),
+            "{function}: {e}"
+        );
+        let want = format!("entry `upd` needs `fn {function}(state: &mut {state}, arg: {arg})` with no return value");
+        assert!(e.message.contains(&want), "{function}: {e}");
+        assert!(
+            e.to_string().starts_with(&format!("kernels/k.rs:{line}:{column}: ")),
+            "{e}"
+        );
+    }
+}
+
+#[test]
+fn update_entry_types_must_be_host_shareable() {
+    // bool nested inside an array of structs in the state.
+    let e = reject_update(UPDATE_SRC, "flag", "Outer", "u32");
+    assert_eq!((e.line, e.column), (30, 8), "{e}");
+    assert!(e.message.contains("`Outer` cannot live in a storage buffer"), "{e}");
+    assert!(e.message.contains("use a u32"), "{e}");
+    // bool as the scalar argument.
+    let e = reject_update(UPDATE_SRC, "bool_arg", "S", "bool");
+    assert_eq!((e.line, e.column), (34, 8), "{e}");
+    assert!(e.message.contains("`bool` cannot live in a storage buffer"), "{e}");
+}
+
+#[test]
+fn update_entry_unknown_function_and_name_clash() {
+    let e = reject_update(UPDATE_SRC, "missing", "S", "u32");
+    assert_eq!((e.line, e.column), (1, 1), "{e}");
+    assert!(e.message.contains("function `missing` is not defined"), "{e}");
+    let src = format!("{UPDATE_SRC}\nconst upd_state: u32 = 1;\n");
+    let e = reject_update(&src, "ok", "S", "u32");
+    assert!(e.message.contains("needs the name `upd_state`"), "{e}");
 }

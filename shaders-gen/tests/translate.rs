@@ -1,7 +1,9 @@
 //! The sample kernel translates to WGSL that naga validates (and lowers to SPIR-V), and the
 //! same file compiles and runs as native Rust.
 
-use rinshan_shaders_gen::{translate, validate_with_info, Entry, Source};
+use rinshan_shaders_gen::{
+    translate, translate_entry_points, validate_with_info, Entry, EntryPoint, Source, UpdateEntry,
+};
 
 const FIXTURE: &str = include_str!("fixtures/sample_kernel.rs");
 
@@ -205,4 +207,153 @@ fn constructs_snapshot_and_native() {
     assert_eq!(native_constructs::pick(2), 4);
     let s = native_constructs::S { a: [1, 2, 3], f: 0.5 };
     assert!(native_constructs::misc(s, 4).is_finite());
+}
+
+fn update_source() -> Source {
+    Source {
+        path: "tests/fixtures/update_kernel.rs".into(),
+        text: include_str!("fixtures/update_kernel.rs").into(),
+    }
+}
+
+fn update_entry(name: &str, function: &str, arg: &str) -> EntryPoint {
+    EntryPoint::Update(UpdateEntry {
+        name: name.into(),
+        function: function.into(),
+        state: "GameState".into(),
+        arg: arg.into(),
+    })
+}
+
+#[allow(dead_code, clippy::all)]
+mod native_update {
+    include!("fixtures/update_kernel.rs");
+}
+
+#[test]
+fn update_kernel_snapshot() {
+    let wgsl = translate_entry_points(
+        &[update_source()],
+        &[
+            update_entry("step_main", "step", "StepArg"),
+            update_entry("pay_main", "pay_dealer", "u32"),
+        ],
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    for needle in [
+        "@group(0) @binding(1) var<storage, read_write> step_main_state: array<GameState>;",
+        "@group(0) @binding(2) var<storage, read> step_main_arg: array<StepArg>;",
+        "@group(0) @binding(3) var<storage, read_write> pay_main_state: array<GameState>;",
+        "@group(0) @binding(4) var<storage, read> pay_main_arg: array<u32>;",
+        "    var state = step_main_state[i];\n    step(&state, step_main_arg[i]);\n    step_main_state[i] = state;\n",
+    ] {
+        assert!(wgsl.contains(needle), "missing {needle}:\n{wgsl}");
+    }
+    assert_spirv(&wgsl);
+    insta::assert_snapshot!("update_kernel", wgsl);
+}
+
+#[test]
+fn update_state_is_game_sized() {
+    // The engine's game state is about 190 words; the fixture mirrors its shape.
+    assert_eq!(std::mem::size_of::<native_update::GameState>(), 188 * 4);
+}
+
+#[test]
+fn update_kernel_runs_natively() {
+    let mut s = native_update::GameState {
+        seed: [1, 2],
+        round: 0,
+        dealer: 2,
+        scores: [250; 4],
+        wall: [4; 34],
+        next_draw: 0,
+        hands: [0; 20],
+        melds: [0; 16],
+        rivers: [0; 24],
+        river_lens: 0,
+        discarded: [0; 8],
+        seat_flags: [0; 4],
+        rewards: [0.0; 4],
+        current: 0,
+        drawn: 0,
+        steps: 0,
+        terminated: 0,
+        history: [0; 64],
+    };
+    native_update::step(&mut s, native_update::StepArg { action: 40, bonus: 9 });
+    assert_eq!(s.scores, [259, 247, 247, 247]);
+    assert_eq!(s.rewards, [2.25, -0.75, -0.75, -0.75]);
+    assert_eq!(s.melds[2], 7);
+    assert_eq!((s.current, s.steps, s.next_draw), (1, 1, 1));
+    assert_eq!(s.wall.iter().sum::<u32>(), 4 * 34 - 1);
+    native_update::pay_dealer(&mut s, 30);
+    assert_eq!(s.scores[2], 277);
+}
+
+#[test]
+fn map_entries_keep_their_layout_through_translate_entry_points() {
+    let via_points = translate_entry_points(&[fixture_source()], &[EntryPoint::Map(score_entry())])
+        .unwrap_or_else(|e| panic!("{e}"));
+    let via_translate = translate(&[fixture_source()], &[score_entry()]).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(via_points, via_translate);
+}
+
+#[test]
+fn mixed_entry_kinds_share_the_binding_sequence() {
+    let src = "#[derive(Clone, Copy)]\npub struct A {\n    x: u32,\n}\n\npub fn double(a: A) -> A {\n    A { x: a.x * 2 }\n}\n\npub fn bump(a: &mut A, by: u32) {\n    a.x += by;\n}\n";
+    let wgsl = translate_entry_points(
+        &[Source {
+            path: "k.rs".into(),
+            text: src.into(),
+        }],
+        &[
+            EntryPoint::Map(Entry {
+                name: "map".into(),
+                function: "double".into(),
+                input: "A".into(),
+                output: "A".into(),
+            }),
+            EntryPoint::Update(UpdateEntry {
+                name: "upd".into(),
+                function: "bump".into(),
+                state: "A".into(),
+                arg: "u32".into(),
+            }),
+        ],
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    for needle in [
+        "@group(0) @binding(1) var<storage, read> map_in: array<A>;",
+        "@group(0) @binding(2) var<storage, read_write> map_out: array<A>;",
+        "@group(0) @binding(3) var<storage, read_write> upd_state: array<A>;",
+        "@group(0) @binding(4) var<storage, read> upd_arg: array<u32>;",
+    ] {
+        assert!(wgsl.contains(needle), "missing {needle}:\n{wgsl}");
+    }
+    assert_spirv(&wgsl);
+}
+
+#[test]
+fn update_wrapper_locals_do_not_hide_the_function() {
+    let src = "pub struct S {\n    x: u32,\n}\n\npub fn state(s: &mut S, a: u32) {\n    s.x += a;\n}\n\npub fn i(s: &mut S, a: u32) {\n    s.x *= a;\n}\n";
+    let entry = |name: &str, function: &str| {
+        EntryPoint::Update(UpdateEntry {
+            name: name.into(),
+            function: function.into(),
+            state: "S".into(),
+            arg: "u32".into(),
+        })
+    };
+    let wgsl = translate_entry_points(
+        &[Source {
+            path: "k.rs".into(),
+            text: src.into(),
+        }],
+        &[entry("a", "state"), entry("b", "i")],
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    assert!(wgsl.contains("state(&state_1, a_arg[i]);"), "{wgsl}");
+    assert!(wgsl.contains("i(&state, b_arg[i_1]);"), "{wgsl}");
+    assert_spirv(&wgsl);
 }
