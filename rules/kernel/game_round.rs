@@ -117,13 +117,7 @@ fn start_round(s: &mut GameState, wall: [u32; 136]) {
 fn draw(s: &mut GameState, seat: u32) {
     let v: u32 = wall_tile(s, s.next_draw);
     s.next_draw += 1u32;
-    give_tile(s, seat, v);
-    s.drawn = v;
-    s.rinshan = 0u32;
-    s.current = seat;
-    s.phase = PHASE_TURN;
-    s.kuikae = 0xffffu32;
-    s.seat_flags[seat as usize] &= !SEAT_FURITEN_TEMP;
+    receive_draw(s, seat, v, 0u32);
 }
 
 // The replacement draw after a kan: the dead wall gives one tile and the live wall shrinks by one.
@@ -131,12 +125,17 @@ fn draw_replacement(s: &mut GameState, seat: u32) {
     let v: u32 = wall_tile(s, WALL_RINSHAN + s.kans);
     s.kans += 1u32;
     s.live_end -= 1u32;
+    receive_draw(s, seat, v, 1u32);
+}
+
+fn receive_draw(s: &mut GameState, seat: u32, v: u32, rinshan: u32) {
     give_tile(s, seat, v);
     s.drawn = v;
-    s.rinshan = 1u32;
+    s.rinshan = rinshan;
     s.current = seat;
     s.phase = PHASE_TURN;
     s.kuikae = 0xffffu32;
+    // Temporary furiten lasts until the seat's own next draw.
     s.seat_flags[seat as usize] &= !SEAT_FURITEN_TEMP;
 }
 

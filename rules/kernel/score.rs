@@ -112,10 +112,6 @@ fn meld_tile(m: u32) -> u32 {
     (m >> 4u32) & 63u32
 }
 
-fn is_kan(kind: u32) -> bool {
-    kind == MELD_OPEN_KAN || kind == MELD_CLOSED_KAN || kind == MELD_ADDED_KAN
-}
-
 fn empty_output(status: u32) -> ScoreOutput {
     ScoreOutput {
         status: status,
@@ -477,18 +473,8 @@ fn judge(inp: ScoreInput, h: HandInfo, f: Features, fu: u32, fixed_fu: u32) -> J
             }
         }
     }
-    let mut j: Judged = Judged {
-        status: STATUS_NO_YAKU,
-        han: 0u32,
-        fu: 0u32,
-        yakuman: 0u32,
-        yaku_lo: 0u32,
-        yaku_hi: 0u32,
-        dora: 0u32,
-        aka: 0u32,
-        ura: 0u32,
-        base: 0u32,
-    };
+    let mut j: Judged = no_reading();
+    j.status = STATUS_NO_YAKU;
     if yakuman == 0u32 && han == 0u32 {
         return j;
     }
