@@ -60,6 +60,8 @@ fn meld_count(s: &mut GameState, seat: u32) -> u32 {
 
 // Four sets and a pair, seven pairs or thirteen orphans (counts of the concealed part).
 fn hand_complete(c: [u32; 34], n_melds: u32) -> bool {
+    // Cheap tests first: most hands fail on a suit of 3k+1 tiles or a lone honor, before any
+    // table lookup.
     let mut ok: bool = true;
     let mut pairs: u32 = 0u32;
     for i in 0u32..7u32 {
@@ -71,22 +73,30 @@ fn hand_complete(c: [u32; 34], n_melds: u32) -> bool {
             pairs += 1u32;
         }
     }
-    if ok {
-        for suit in 0u32..3u32 {
-            let mut total: u32 = 0u32;
-            for i in 0u32..9u32 {
-                total += c[(suit * 9u32 + i) as usize];
-            }
-            if total % 3u32 == 1u32 || (table(T_DECOMP_INDEX + suit_code(c, suit)) & 15u32) == 0u32 {
-                ok = false;
-            }
-            if total % 3u32 == 2u32 {
-                pairs += 1u32;
-            }
+    let mut totals: [u32; 3] = [0u32; 3];
+    for suit in 0u32..3u32 {
+        let mut total: u32 = 0u32;
+        for i in 0u32..9u32 {
+            total += c[(suit * 9u32 + i) as usize];
+        }
+        totals[suit as usize] = total;
+        if total % 3u32 == 1u32 {
+            ok = false;
+        }
+        if total % 3u32 == 2u32 {
+            pairs += 1u32;
         }
     }
     if ok && pairs == 1u32 {
-        return true;
+        let mut all_sets: bool = true;
+        for suit in 0u32..3u32 {
+            if totals[suit as usize] > 0u32 && (table(T_DECOMP_INDEX + suit_code(c, suit)) & 15u32) == 0u32 {
+                all_sets = false;
+            }
+        }
+        if all_sets {
+            return true;
+        }
     }
     if n_melds != 0u32 {
         return false;

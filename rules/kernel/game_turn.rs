@@ -17,11 +17,31 @@ fn kuikae_banned(s: &mut GameState, t: u32) -> bool {
 
 fn discard_allowed(s: &mut GameState, p: u32, v: u32) -> bool {
     let n: u32 = value_count(s, p, v);
+    discard_allowed_with(s, v, n)
+}
+
+// `n`: copies of value `v` held.
+fn discard_allowed_with(s: &mut GameState, v: u32, n: u32) -> bool {
     if n == 0u32 || kuikae_banned(s, value_type(v)) {
         return false;
     }
     // The drawn tile itself goes by TSUMOGIRI; this id then needs another copy of the same value.
     !(v == s.drawn && n < 2u32)
+}
+
+// Copies of each value 0..36 the seat holds, red fives apart from black ones.
+fn value_counts(s: &mut GameState, p: u32) -> [u32; 37] {
+    let mut n: [u32; 37] = [0u32; 37];
+    for t in 0u32..34u32 {
+        n[t as usize] = hand_count(s, p, t);
+    }
+    for suit in 0u32..3u32 {
+        if holds_red(s, p, suit) {
+            n[(suit * 9u32 + 4u32) as usize] -= 1u32;
+            n[(34u32 + suit) as usize] = 1u32;
+        }
+    }
+    n
 }
 
 fn has_pon(s: &mut GameState, p: u32, t: u32) -> bool {
@@ -86,9 +106,10 @@ fn turn_mask(s: &mut GameState) -> [u32; 3] {
         }
         return m;
     }
+    let counts: [u32; 37] = value_counts(s, p);
     if !riichi {
         for v in 0u32..ACTION_DISCARD_COUNT {
-            if discard_allowed(s, p, v) {
+            if discard_allowed_with(s, v, counts[v as usize]) {
                 mask_set(&mut m, ACTION_DISCARD + v);
             }
         }
@@ -102,7 +123,10 @@ fn turn_mask(s: &mut GameState) -> [u32; 3] {
     }
     if s.kans < 4u32 && s.next_draw < s.live_end {
         for t in 0u32..34u32 {
-            let n: u32 = hand_count(s, p, t);
+            let mut n: u32 = counts[t as usize];
+            if t < 27u32 && t % 9u32 == 4u32 {
+                n += counts[(34u32 + t / 9u32) as usize];
+            }
             if n == 4u32 {
                 if !riichi || (t == value_type(s.drawn) && riichi_kan_keeps_waits(s, p, t)) {
                     mask_set(&mut m, ACTION_SELF_KAN + t);
