@@ -129,5 +129,12 @@ macro_rules! state_like {
 state_like!(red);
 state_like!(no_red);
 
-invariant_suite!(red_random_games_keep_the_invariants, red, 300);
-invariant_suite!(no_red_random_games_keep_the_invariants, no_red, 300);
+// 10,000 full half games per variant (about 10 million steps each).
+invariant_suite!(red_random_games_keep_the_invariants, red, 10_000);
+invariant_suite!(no_red_random_games_keep_the_invariants, no_red, 10_000);
+
+#[test]
+fn game_state_fits_in_one_kib() {
+    assert!(std::mem::size_of::<rinshan::generated::red::GameState>() <= 1024);
+    assert!(std::mem::size_of::<rinshan::generated::no_red::GameState>() <= 1024);
+}
