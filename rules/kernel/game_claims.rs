@@ -10,10 +10,6 @@ fn furiten(s: &mut GameState, q: u32) -> bool {
     (w[0] & s.discarded[(q * 2u32) as usize]) != 0u32 || (w[1] & s.discarded[(q * 2u32 + 1u32) as usize]) != 0u32
 }
 
-fn black_count(s: &mut GameState, q: u32, t: u32) -> u32 {
-    value_count(s, q, t)
-}
-
 fn red_count(s: &mut GameState, q: u32, t: u32) -> u32 {
     if t < 27u32 && t % 9u32 == 4u32 && holds_red(s, q, t / 9u32) {
         return 1u32;
@@ -21,13 +17,14 @@ fn red_count(s: &mut GameState, q: u32, t: u32) -> u32 {
     0u32
 }
 
-// After calling, some tile must still be discardable under the kuikae ban.
-fn discard_left_after(s: &mut GameState, q: u32, used_a: u32, used_b: u32, ban_a: u32, ban_b: u32) -> bool {
-    let mut c: [u32; 34] = hand_counts(s, q);
-    c[used_a as usize] -= 1u32;
-    c[used_b as usize] -= 1u32;
+// After calling with two tiles `used_a`, `used_b` of the hand `c`, some tile must still be
+// discardable under the kuikae ban.
+fn discard_left_after(c: [u32; 34], used_a: u32, used_b: u32, ban_a: u32, ban_b: u32) -> bool {
+    let mut rest: [u32; 34] = c;
+    rest[used_a as usize] -= 1u32;
+    rest[used_b as usize] -= 1u32;
     for t in 0u32..34u32 {
-        if c[t as usize] > 0u32 && t != ban_a && t != ban_b {
+        if rest[t as usize] > 0u32 && t != ban_a && t != ban_b {
             return true;
         }
     }
@@ -35,10 +32,10 @@ fn discard_left_after(s: &mut GameState, q: u32, used_a: u32, used_b: u32, ban_a
 }
 
 // Chi options for one shape: the two hand tiles a, b (types); plain and red forms.
-fn chi_options(s: &mut GameState, q: u32, a: u32, b: u32, ban_a: u32, ban_b: u32, plain: u32, red: u32) -> u32 {
-    let na: u32 = hand_count(s, q, a);
-    let nb: u32 = hand_count(s, q, b);
-    if na == 0u32 || nb == 0u32 || !discard_left_after(s, q, a, b, ban_a, ban_b) {
+fn chi_options(s: &mut GameState, q: u32, c: [u32; 34], a: u32, b: u32, ban_a: u32, ban_b: u32, plain: u32, red: u32) -> u32 {
+    let na: u32 = c[a as usize];
+    let nb: u32 = c[b as usize];
+    if na == 0u32 || nb == 0u32 || !discard_left_after(c, a, b, ban_a, ban_b) {
         return 0u32;
     }
     let ra: u32 = red_count(s, q, a);
@@ -66,13 +63,14 @@ fn claim_options_for(s: &mut GameState, q: u32, from: u32, v: u32, kan: u32) -> 
             o |= CLAIM_RON;
         }
     }
+    c[t as usize] -= 1u32;
     let riichi: bool = (s.seat_flags[q as usize] & SEAT_RIICHI) != 0u32;
     if kan != 0u32 || riichi || s.next_draw >= s.live_end {
         return o;
     }
-    let n: u32 = hand_count(s, q, t);
+    let n: u32 = c[t as usize];
     let r: u32 = red_count(s, q, t);
-    if n >= 2u32 && discard_left_after(s, q, t, t, t, 255u32) {
+    if n >= 2u32 && discard_left_after(c, t, t, t, 255u32) {
         if n - r >= 2u32 {
             o |= CLAIM_PON;
         }
@@ -90,17 +88,17 @@ fn claim_options_for(s: &mut GameState, q: u32, from: u32, v: u32, kan: u32) -> 
             if pos <= 5u32 {
                 swap = t + 3u32;
             }
-            o |= chi_options(s, q, t + 1u32, t + 2u32, t, swap, CLAIM_CHI_LEFT, CLAIM_CHI_LEFT_RED);
+            o |= chi_options(s, q, c, t + 1u32, t + 2u32, t, swap, CLAIM_CHI_LEFT, CLAIM_CHI_LEFT_RED);
         }
         if pos >= 1u32 && pos <= 7u32 {
-            o |= chi_options(s, q, t - 1u32, t + 1u32, t, 255u32, CLAIM_CHI_MIDDLE, CLAIM_CHI_MIDDLE_RED);
+            o |= chi_options(s, q, c, t - 1u32, t + 1u32, t, 255u32, CLAIM_CHI_MIDDLE, CLAIM_CHI_MIDDLE_RED);
         }
         if pos >= 2u32 {
             let mut swap: u32 = 255u32;
             if pos >= 3u32 {
                 swap = t - 3u32;
             }
-            o |= chi_options(s, q, t - 2u32, t - 1u32, t, swap, CLAIM_CHI_RIGHT, CLAIM_CHI_RIGHT_RED);
+            o |= chi_options(s, q, c, t - 2u32, t - 1u32, t, swap, CLAIM_CHI_RIGHT, CLAIM_CHI_RIGHT_RED);
         }
     }
     o
