@@ -41,6 +41,9 @@ struct Scenario {
     /// Per seat: the tiles of its k-th live draw, assuming no calls or kans (52 + its turn offset + 4k).
     #[serde(default)]
     seat_draws: Vec<Vec<String>>,
+    /// Single wall positions: index (as a string) -> tile.
+    #[serde(default)]
+    wall_at: std::collections::BTreeMap<String, String>,
     dora: Vec<String>,
     #[serde(default)]
     ura: Vec<String>,
@@ -74,7 +77,8 @@ struct Step {
     seat: Option<u32>,
     action: Option<String>,
     /// `auto = "tsumogiri"`: whoever is to act plays tsumogiri (pass in a claim window) until the
-    /// live wall has `until_wall_left` tiles left and a seat is to act on its draw.
+    /// live wall has `until_wall_left` tiles left and a seat is to act on its draw, or without
+    /// `until_wall_left` until the round ends.
     auto: Option<String>,
     until_wall_left: Option<u32>,
     /// The action is expected to be illegal (it is played anyway).
@@ -289,6 +293,13 @@ fn build_wall(sc: &Scenario, red: bool) -> Result<[u32; 136], String> {
             place(i as usize, text, &format!("seat_draws of seat {seat}"), &mut wall)?;
         }
     }
+    for (index, text) in &sc.wall_at {
+        let i: usize = index.parse().map_err(|_| format!("wall_at: bad index `{index}`"))?;
+        if i >= 136 {
+            return Err(format!("wall_at: index {i} is past the wall"));
+        }
+        place(i, text, &format!("wall_at {i}"), &mut wall)?;
+    }
     let mut pool = (0..34u32).flat_map(|t| {
         let red_copy = if red && t < 27 && t % 9 == 4 { Some(34 + t / 9) } else { None };
         std::iter::repeat_n(t, left[t as usize] as usize).chain(red_copy.filter(|&r| left[r as usize] == 1))
@@ -359,17 +370,19 @@ macro_rules! runner {
                     if auto != "tsumogiri" {
                         return Err(format!("{at}: unknown auto `{auto}` (tsumogiri)"));
                     }
-                    let until = step.until_wall_left.unwrap_or(0);
+                    let rounds = s.rounds;
                     let tsumogiri = acts.id("tsumogiri")?;
                     let pass = acts.id("pass")?;
                     let mut n = 0;
                     loop {
                         let view = k::game_view(s);
-                        if view.terminated != 0 {
-                            return Err(format!("{at} (auto): the game ended after {n} auto steps"));
-                        }
-                        if s.phase == 0 && s.live_end - s.next_draw <= until {
-                            break;
+                        match step.until_wall_left {
+                            Some(_) if view.terminated != 0 || s.rounds != rounds => {
+                                return Err(format!("{at} (auto): the round ended after {n} auto steps"));
+                            }
+                            Some(until) if s.phase == 0 && s.live_end - s.next_draw <= until => break,
+                            None if view.terminated != 0 || s.rounds != rounds => break,
+                            _ => {}
                         }
                         let legal = legal_of(&view);
                         let a = if legal.contains(&tsumogiri) {
@@ -607,6 +620,7 @@ fn tiny(hands: [&str; 4]) -> Scenario {
         hands: hands.map(String::from),
         draws: vec!["1z".into()],
         seat_draws: vec![],
+        wall_at: Default::default(),
         dora: vec!["2z".into()],
         ura: vec![],
         rinshan: vec![],
