@@ -301,7 +301,11 @@ fn build_wall(sc: &Scenario, red: bool) -> Result<[u32; 136], String> {
         place(i, text, &format!("wall_at {i}"), &mut wall)?;
     }
     let mut pool = (0..34u32).flat_map(|t| {
-        let red_copy = if red && t < 27 && t % 9 == 4 { Some(34 + t / 9) } else { None };
+        let red_copy = if red && t < 27 && t % 9 == 4 {
+            Some(34 + t / 9)
+        } else {
+            None
+        };
         std::iter::repeat_n(t, left[t as usize] as usize).chain(red_copy.filter(|&r| left[r as usize] == 1))
     });
     let mut out = [0u32; 136];
@@ -426,7 +430,9 @@ macro_rules! runner {
                 if let Some(want) = &step.expect_legal {
                     let want: BTreeSet<String> = want.iter().cloned().collect();
                     if want != legal_names {
-                        return Err(format!("{at}: legal actions are {legal_names:?}, expected {want:?}"));
+                        return Err(format!(
+                            "{at}: legal actions are {legal_names:?}, expected {want:?}"
+                        ));
                     }
                 }
                 for n in &step.legal_includes {
@@ -502,7 +508,10 @@ macro_rules! runner {
             if let Some(want) = &e.winners {
                 let bits = want.iter().fold(0, |acc, &p| acc | 1 << p);
                 if last.winners != bits {
-                    errors.push(format!("winners bits {:#06b}, expected seats {want:?}", last.winners));
+                    errors.push(format!(
+                        "winners bits {:#06b}, expected seats {want:?}",
+                        last.winners
+                    ));
                 }
             }
             if let Some(want) = e.deal_in {
@@ -530,7 +539,9 @@ macro_rules! runner {
             }
             for y in &e.no_yaku {
                 if has_yaku(y)? {
-                    errors.push(format!("yaku `{y}` should not count; the winners had {got_yaku:?}"));
+                    errors.push(format!(
+                        "yaku `{y}` should not count; the winners had {got_yaku:?}"
+                    ));
                 }
             }
             let fields = [
@@ -584,11 +595,18 @@ fn rule_scenarios() {
     let scenarios = load();
     let mut names = BTreeSet::new();
     for sc in &scenarios {
-        assert!(names.insert(sc.name.clone()), "scenario name `{}` is used twice", sc.name);
+        assert!(
+            names.insert(sc.name.clone()),
+            "scenario name `{}` is used twice",
+            sc.name
+        );
         assert!(!sc.rule.trim().is_empty(), "scenario `{}` has no rule", sc.name);
     }
     for (name, _) in KNOWN_FAILING {
-        assert!(names.contains(*name), "KNOWN_FAILING names `{name}`, which is not a scenario");
+        assert!(
+            names.contains(*name),
+            "KNOWN_FAILING names `{name}`, which is not a scenario"
+        );
     }
     let mut failures = Vec::new();
     let mut passed = 0;
@@ -598,7 +616,10 @@ fn rule_scenarios() {
             (Ok(()), None) => passed += 1,
             (Ok(()), Some(_)) => {
                 passed += 1;
-                eprintln!("NOTE: `{}` is in KNOWN_FAILING but passes now: take it off the list", sc.name);
+                eprintln!(
+                    "NOTE: `{}` is in KNOWN_FAILING but passes now: take it off the list",
+                    sc.name
+                );
             }
             (Err(e), Some((_, why))) => {
                 eprintln!("KNOWN FAILING `{}` ({}): {e}\n  why: {why}", sc.name, sc.rule);
@@ -607,7 +628,12 @@ fn rule_scenarios() {
         }
     }
     eprintln!("{passed} of {} scenarios pass", scenarios.len());
-    assert!(failures.is_empty(), "{} scenario(s) failed:\n{}", failures.len(), failures.join("\n"));
+    assert!(
+        failures.is_empty(),
+        "{} scenario(s) failed:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
 }
 
 fn tiny(hands: [&str; 4]) -> Scenario {
@@ -638,10 +664,20 @@ fn harness_builds_walls_and_rejects_overused_tiles() {
     let sc = tiny(["123456789m1234z"; 4]);
     let err = build_wall(&sc, true).unwrap_err();
     assert!(err.contains("no copy of"), "{err}");
-    let sc = tiny(["123456789m1234z", "123456789p1234z", "123456789s1234z", "1111222333444z"]);
+    let sc = tiny([
+        "123456789m1234z",
+        "123456789p1234z",
+        "123456789s1234z",
+        "1111222333444z",
+    ]);
     let err = build_wall(&sc, true).unwrap_err();
     assert!(err.contains("no copy of 1z"), "{err}");
-    let sc = tiny(["123406789m1234z", "123456789p1567z", "123456789s2567z", "1188m99p1199s567z"]);
+    let sc = tiny([
+        "123406789m1234z",
+        "123456789p1567z",
+        "123456789s2567z",
+        "1188m99p1199s567z",
+    ]);
     let wall = build_wall(&sc, true).expect("wall");
     // Dealer is seat 1: its hand comes first; seat 0 deals last.
     assert_eq!(wall[0], 9);
