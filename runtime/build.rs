@@ -5,7 +5,7 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::process::exit;
 
-use rinshan_shaders_gen::{Entry, Source};
+use rinshan_shaders_gen::{Entry, EntryPoint, Source, UpdateEntry};
 
 include!("src/entries.rs");
 
@@ -104,16 +104,26 @@ fn main() {
             path: p.display().to_string(),
             text: t.clone(),
         }));
-        let entries: Vec<Entry> = ENTRIES
+        let mut entries: Vec<EntryPoint> = ENTRIES
             .iter()
-            .map(|(name, function, input, output)| Entry {
-                name: name.to_string(),
-                function: function.to_string(),
-                input: input.to_string(),
-                output: output.to_string(),
+            .map(|(name, function, input, output)| {
+                EntryPoint::Map(Entry {
+                    name: name.to_string(),
+                    function: function.to_string(),
+                    input: input.to_string(),
+                    output: output.to_string(),
+                })
             })
             .collect();
-        let wgsl = match rinshan_shaders_gen::translate(&sources, &entries) {
+        entries.extend(UPDATE_ENTRIES.iter().map(|(name, function, state, arg)| {
+            EntryPoint::Update(UpdateEntry {
+                name: name.to_string(),
+                function: function.to_string(),
+                state: state.to_string(),
+                arg: arg.to_string(),
+            })
+        }));
+        let wgsl = match rinshan_shaders_gen::translate_entry_points(&sources, &entries) {
             Ok(w) => w,
             Err(e) => fail(e),
         };
@@ -137,7 +147,12 @@ fn main() {
         for (path, _) in &kernel {
             let _ = writeln!(module, "    include!({:?});", path.display().to_string());
         }
-        let mut io_types: Vec<&str> = ENTRIES.iter().flat_map(|(_, _, input, output)| [*input, *output]).collect();
+        let mut io_types: Vec<&str> = ENTRIES
+            .iter()
+            .chain(UPDATE_ENTRIES.iter())
+            .flat_map(|(_, _, input, output)| [*input, *output])
+            .filter(|ty| !matches!(*ty, "u32" | "i32" | "f32"))
+            .collect();
         io_types.sort_unstable();
         io_types.dedup();
         for ty in io_types {

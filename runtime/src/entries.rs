@@ -1,5 +1,5 @@
 // Shared by build.rs (which asks the translator for these entry points) and the GPU backend.
-/// The kernel entry points of every generated WGSL module: (entry point, kernel function, input
+/// The map entry points of every generated WGSL module: (entry point, kernel function, input
 /// struct, output struct), in binding order (the k-th entry binds input 1+2k and output 2+2k).
 pub const ENTRIES: [(&str, &str, &str, &str); 4] = [
     ("shanten_main", "shanten", "ShantenInput", "ShantenOutput"),
@@ -7,3 +7,8 @@ pub const ENTRIES: [(&str, &str, &str, &str); 4] = [
     ("game_new_main", "game_new", "ResetInput", "GameState"),
     ("game_view_main", "game_view", "GameState", "StepView"),
 ];
+
+/// The in-place update entry points, after [`ENTRIES`] in binding order: (entry point, kernel
+/// function `fn(&mut State, Arg)`, state struct, argument type). The k-th entry point of the
+/// module (k counts [`ENTRIES`] first) binds its state (read-write) at 1+2k and its arguments at 2+2k.
+pub const UPDATE_ENTRIES: [(&str, &str, &str, &str); 1] = [("game_step_main", "game_step", "GameState", "u32")];

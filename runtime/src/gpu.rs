@@ -10,7 +10,7 @@ use std::sync::mpsc;
 use wgpu::util::DeviceExt;
 
 use crate::hand::{SCORE_IN_WORDS, SCORE_OUT_WORDS, SHANTEN_IN_WORDS, SHANTEN_OUT_WORDS};
-use crate::{tables, Variant};
+use crate::{entries, tables, Variant};
 
 const WORKGROUP: usize = 64;
 const MAX_GROUPS: usize = 65_535;
@@ -60,13 +60,60 @@ impl Kernel {
         }
     }
 
-    /// The entry's input/output bindings: the translator gives the k-th entry 1+2k and 2+2k.
-    fn bindings(self) -> (u32, u32) {
-        match self {
-            Kernel::Shanten => (1, 2),
-            Kernel::Score => (3, 4),
+    fn spec(self) -> EntrySpec {
+        EntrySpec::map(self.entry())
+    }
+}
+
+/// One compute entry point of the generated module and its two storage bindings: the translator
+/// gives the k-th entry point (in [`crate::entries`] order) bindings 1+2k and 2+2k.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub(crate) struct EntrySpec {
+    pub name: &'static str,
+    /// (binding, read-only) of the entry's first and second buffer.
+    pub first: (u32, bool),
+    pub second: (u32, bool),
+}
+
+impl EntrySpec {
+    fn index(name: &str) -> u32 {
+        let names = entries::ENTRIES
+            .iter()
+            .chain(entries::UPDATE_ENTRIES.iter())
+            .map(|e| e.0);
+        match names.enumerate().find(|(_, n)| *n == name) {
+            Some((k, _)) => k as u32,
+            None => unreachable!("`{name}` is not an entry point in entries.rs"),
         }
     }
+
+    /// A map entry: input (read-only) at 1+2k, output (read-write) at 2+2k.
+    pub fn map(name: &'static str) -> EntrySpec {
+        let k = EntrySpec::index(name);
+        EntrySpec {
+            name,
+            first: (1 + 2 * k, true),
+            second: (2 + 2 * k, false),
+        }
+    }
+
+    /// An update entry: state (read-write) at 1+2k, arguments (read-only) at 2+2k.
+    pub fn update(name: &'static str) -> EntrySpec {
+        let k = EntrySpec::index(name);
+        EntrySpec {
+            name,
+            first: (1 + 2 * k, false),
+            second: (2 + 2 * k, true),
+        }
+    }
+}
+
+/// The largest number of records one dispatch covers (workgroups of 64, at most 65,535 of them).
+pub(crate) const MAX_DISPATCH: usize = WORKGROUP * MAX_GROUPS;
+
+/// Workgroups for `n` records.
+pub(crate) fn groups(n: usize) -> u32 {
+    n.div_ceil(WORKGROUP) as u32
 }
 
 fn request_adapter(backends: wgpu::Backends) -> Result<wgpu::Adapter, GpuError> {
@@ -89,7 +136,8 @@ pub struct Gpu {
     info: wgpu::AdapterInfo,
     tables: wgpu::Buffer,
     // Keyed by a hash of the WGSL source, so custom modules (a spec compiled at run time) work too.
-    pipelines: HashMap<(u64, Kernel), (wgpu::ComputePipeline, wgpu::BindGroupLayout)>,
+    modules: HashMap<u64, wgpu::ShaderModule>,
+    pipelines: HashMap<(u64, EntrySpec), (wgpu::ComputePipeline, wgpu::BindGroupLayout)>,
 }
 
 impl Gpu {
@@ -124,6 +172,7 @@ impl Gpu {
             queue,
             info,
             tables,
+            modules: HashMap::new(),
             pipelines: HashMap::new(),
         })
     }
@@ -136,16 +185,35 @@ impl Gpu {
         )
     }
 
-    fn pipeline(&mut self, wgsl: &str, kernel: Kernel) -> &(wgpu::ComputePipeline, wgpu::BindGroupLayout) {
+    /// Whether the adapter is a software rasterizer on the CPU (Mesa's lavapipe, WARP...).
+    pub fn is_software(&self) -> bool {
+        self.info.device_type == wgpu::DeviceType::Cpu
+    }
+
+    pub(crate) fn device(&self) -> &wgpu::Device {
+        &self.device
+    }
+
+    pub(crate) fn queue(&self) -> &wgpu::Queue {
+        &self.queue
+    }
+
+    /// The pipeline of one entry point of `wgsl` and its bind group layout (tables at 0 and the
+    /// entry's two buffers); the module and the pipeline are made once and cached.
+    pub(crate) fn pipeline(&mut self, wgsl: &str, entry: EntrySpec) -> (wgpu::ComputePipeline, wgpu::BindGroupLayout) {
         let device = &self.device;
         let mut hasher = std::collections::hash_map::DefaultHasher::new();
         wgsl.hash(&mut hasher);
-        self.pipelines.entry((hasher.finish(), kernel)).or_insert_with(|| {
-            let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-                label: Some("rinshan kernels"),
-                source: wgpu::ShaderSource::Wgsl(wgsl.to_string().into()),
+        let key = hasher.finish();
+        let modules = &mut self.modules;
+        let found = self.pipelines.entry((key, entry)).or_insert_with(|| {
+            let module = modules.entry(key).or_insert_with(|| {
+                device.create_shader_module(wgpu::ShaderModuleDescriptor {
+                    label: Some("rinshan kernels"),
+                    source: wgpu::ShaderSource::Wgsl(wgsl.to_string().into()),
+                })
             });
-            let storage = |binding: u32, read_only: bool| wgpu::BindGroupLayoutEntry {
+            let storage = |(binding, read_only): (u32, bool)| wgpu::BindGroupLayoutEntry {
                 binding,
                 visibility: wgpu::ShaderStages::COMPUTE,
                 ty: wgpu::BindingType::Buffer {
@@ -155,26 +223,79 @@ impl Gpu {
                 },
                 count: None,
             };
-            let (input, output) = kernel.bindings();
             let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-                label: Some(kernel.entry()),
-                entries: &[storage(0, true), storage(input, true), storage(output, false)],
+                label: Some(entry.name),
+                entries: &[storage((0, true)), storage(entry.first), storage(entry.second)],
             });
             let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-                label: Some(kernel.entry()),
+                label: Some(entry.name),
                 bind_group_layouts: &[Some(&layout)],
                 immediate_size: 0,
             });
             let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-                label: Some(kernel.entry()),
+                label: Some(entry.name),
                 layout: Some(&pipeline_layout),
-                module: &module,
-                entry_point: Some(kernel.entry()),
+                module,
+                entry_point: Some(entry.name),
                 compilation_options: Default::default(),
                 cache: None,
             });
             (pipeline, layout)
+        });
+        found.clone()
+    }
+
+    /// A bind group for `entry`: the tables and its two buffers.
+    pub(crate) fn bind_group(
+        &self,
+        layout: &wgpu::BindGroupLayout,
+        entry: EntrySpec,
+        first: &wgpu::Buffer,
+        second: &wgpu::Buffer,
+    ) -> wgpu::BindGroup {
+        self.device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some(entry.name),
+            layout,
+            entries: &[
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: self.tables.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: entry.first.0,
+                    resource: first.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: entry.second.0,
+                    resource: second.as_entire_binding(),
+                },
+            ],
         })
+    }
+
+    /// Maps `readback` (already filled by submitted work), waits, and copies out its words.
+    pub(crate) fn read_words(&self, readback: &wgpu::Buffer, out: &mut Vec<u32>) -> Result<(), GpuError> {
+        let (tx, rx) = mpsc::channel();
+        readback.map_async(wgpu::MapMode::Read, .., move |r| {
+            let _ = tx.send(r);
+        });
+        self.device
+            .poll(wgpu::PollType::wait_indefinitely())
+            .map_err(|e| GpuError::Readback(e.to_string()))?;
+        match rx.recv() {
+            Ok(Ok(())) => {}
+            Ok(Err(e)) => return Err(GpuError::Readback(e.to_string())),
+            Err(e) => return Err(GpuError::Readback(e.to_string())),
+        }
+        {
+            let view = readback
+                .get_mapped_range(..)
+                .map_err(|e| GpuError::Readback(format!("{e:?}")))?;
+            out.clear();
+            out.extend_from_slice(bytemuck::cast_slice(&view));
+        }
+        readback.unmap();
+        Ok(())
     }
 
     /// Runs `kernel` of `variant` over `inputs` (whole records of raw words) and reads back the outputs.
@@ -208,7 +329,6 @@ impl Gpu {
             return Ok(Vec::new());
         }
         let out_bytes = (n * out_words * 4) as u64;
-        let (input, output) = kernel.bindings();
         let input_buffer = self.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("rinshan input"),
             contents: bytemuck::cast_slice(inputs),
@@ -226,26 +346,9 @@ impl Gpu {
             usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
-        let tables = self.tables.clone();
-        let (pipeline, layout) = self.pipeline(wgsl, kernel).clone();
-        let bind_group = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("rinshan bindings"),
-            layout: &layout,
-            entries: &[
-                wgpu::BindGroupEntry {
-                    binding: 0,
-                    resource: tables.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: input,
-                    resource: input_buffer.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: output,
-                    resource: output_buffer.as_entire_binding(),
-                },
-            ],
-        });
+        let spec = kernel.spec();
+        let (pipeline, layout) = self.pipeline(wgsl, spec);
+        let bind_group = self.bind_group(&layout, spec, &input_buffer, &output_buffer);
         let mut encoder = self
             .device
             .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("rinshan") });
@@ -256,28 +359,12 @@ impl Gpu {
             });
             pass.set_pipeline(&pipeline);
             pass.set_bind_group(0, &bind_group, &[]);
-            pass.dispatch_workgroups(n.div_ceil(WORKGROUP) as u32, 1, 1);
+            pass.dispatch_workgroups(groups(n), 1, 1);
         }
         encoder.copy_buffer_to_buffer(&output_buffer, 0, &readback, 0, out_bytes);
         self.queue.submit([encoder.finish()]);
-        let (tx, rx) = mpsc::channel();
-        readback.map_async(wgpu::MapMode::Read, .., move |r| {
-            let _ = tx.send(r);
-        });
-        self.device
-            .poll(wgpu::PollType::wait_indefinitely())
-            .map_err(|e| GpuError::Readback(e.to_string()))?;
-        match rx.recv() {
-            Ok(Ok(())) => {}
-            Ok(Err(e)) => return Err(GpuError::Readback(e.to_string())),
-            Err(e) => return Err(GpuError::Readback(e.to_string())),
-        }
-        let view = readback
-            .get_mapped_range(..)
-            .map_err(|e| GpuError::Readback(format!("{e:?}")))?;
-        let words: Vec<u32> = bytemuck::cast_slice(&view).to_vec();
-        drop(view);
-        readback.unmap();
+        let mut words = Vec::with_capacity(n * out_words);
+        self.read_words(&readback, &mut words)?;
         Ok(words)
     }
 }

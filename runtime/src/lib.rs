@@ -7,6 +7,7 @@
 //! * [`notation`] — hands written as `123m456p789s11z` (0 = red five) and melds as `pon:555z`
 //! * [`hand`]     — shanten and hand scoring on the CPU, one hand or a batch
 //! * [`gpu`]      — the same kernels on a GPU through wgpu
+//! * [`env`]      — the batched game environment (reset, step, masks, rewards) on the CPU or the GPU
 
 include!(concat!(env!("OUT_DIR"), "/dispatch.rs"));
 
@@ -18,6 +19,8 @@ pub mod generated {
 }
 
 pub mod entries;
+pub mod env;
+mod env_gpu;
 pub mod gpu;
 pub mod hand;
 pub mod notation;

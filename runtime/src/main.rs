@@ -1,4 +1,4 @@
-//! The `rinshan` command: hand calculator, benchmarks (and, with the game engine, self-play).
+//! The `rinshan` command: self-play, hand calculator and benchmarks.
 
 mod cli;
 

@@ -1,4 +1,4 @@
-//! Deterministic random hands for benchmarks and tests (not the environment's wall shuffle, which
+//! Deterministic random hands and random legal actions for benchmarks, tests and self-play (not the environment's wall shuffle, which
 //! lives in the kernels with their counter-based RNG).
 
 use crate::hand::{Win, WinContext};
@@ -28,6 +28,27 @@ impl Rng {
 
     pub fn chance(&mut self, percent: u32) -> bool {
         self.below(100) < percent
+    }
+
+    /// A uniformly random action among the set bits of a legal-action mask (0 when none is set).
+    pub fn pick_legal(&mut self, mask: &[u32; 3]) -> u32 {
+        let n: u32 = mask.iter().map(|w| w.count_ones()).sum();
+        if n == 0 {
+            return 0;
+        }
+        let mut k = self.below(n);
+        for (i, &w) in mask.iter().enumerate() {
+            let c = w.count_ones();
+            if k < c {
+                let mut w = w;
+                for _ in 0..k {
+                    w &= w - 1;
+                }
+                return i as u32 * 32 + w.trailing_zeros();
+            }
+            k -= c;
+        }
+        unreachable!("k < n")
     }
 }
 

@@ -146,3 +146,47 @@ fn hands_that_do_not_win_exit_with_1() {
     assert_eq!(out.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&out.stderr).contains("no yaku"));
 }
+
+#[test]
+fn selfplay_with_the_same_seed_gives_the_same_summary() {
+    let args = ["selfplay", "--games", "20", "--batch", "8", "--json", "--seed", "5"];
+    let strip = |mut v: serde_json::Value| {
+        let map = v.as_object_mut().expect("an object");
+        for timing in ["seconds", "steps_per_second"] {
+            assert!(map.remove(timing).is_some(), "{timing} reported");
+        }
+        v
+    };
+    let a = strip(json(&rinshan(&args)));
+    let b = strip(json(&rinshan(&args)));
+    assert_eq!(a, b);
+    assert_eq!(a["games"], 20);
+    assert_eq!(a["variant"], "red");
+    assert!(a["avg_steps_per_game"].as_f64().unwrap() > 100.0, "{a}");
+    assert!(a["rounds"].as_u64().unwrap() >= 20, "{a}");
+    let scores: f64 = a["avg_final_score"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .sum();
+    // Points are conserved; uma adds up to 0 and leftover sticks go to the winner.
+    assert!((scores - 100_000.0).abs() < 1e-6, "{a}");
+    let c = strip(json(&rinshan(&["selfplay", "--games", "20", "--batch", "8", "--json", "--seed", "6"])));
+    assert_ne!(a, c, "another seed plays other games");
+}
+
+#[test]
+fn selfplay_rejects_bad_options() {
+    for (args, needle) in [
+        (vec!["selfplay", "--mode", "long"], "unknown mode"),
+        (vec!["selfplay", "--backend", "tpu"], "unknown backend"),
+        (vec!["selfplay", "--batch", "0"], "batch size"),
+        (vec!["selfplay", "--variant", "blue"], "unknown variant"),
+    ] {
+        let out = rinshan(&args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(needle), "{args:?}: {err}");
+    }
+}

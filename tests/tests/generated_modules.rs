@@ -20,7 +20,11 @@ fn every_variant_module_validates_with_naga() {
     for &v in Variant::ALL {
         let module = rinshan_shaders_gen::validate(wgsl(v)).unwrap_or_else(|e| panic!("{v}: {e}"));
         let entries: Vec<&str> = module.entry_points.iter().map(|e| e.name.as_str()).collect();
-        let expected: Vec<&str> = rinshan::entries::ENTRIES.iter().map(|e| e.0).collect();
+        let expected: Vec<&str> = rinshan::entries::ENTRIES
+            .iter()
+            .chain(rinshan::entries::UPDATE_ENTRIES.iter())
+            .map(|e| e.0)
+            .collect();
         assert_eq!(entries, expected, "{v}");
     }
 }

@@ -1,13 +1,16 @@
 //! `rinshan bench hands`: evaluations per second of the generated kernels on the CPU (one thread,
 //! all threads) and on the GPU, beside the `xiangting` crate's shanten on the same hands.
+//! `rinshan bench env`: environment steps per second of random self-play by batch size.
 
 use std::time::Instant;
 
+use rinshan::env::{Backend, Config, Env, Mode};
 use rinshan::gpu::{Gpu, Kernel};
 use rinshan::hand::{self, SCORE_IN_WORDS, SCORE_OUT_WORDS, SHANTEN_IN_WORDS, SHANTEN_OUT_WORDS};
 use rinshan::random::{random_hand, random_win, Rng};
 use rinshan::Variant;
 
+use super::selfplay::{parse_backend, parse_variant, policy_rng};
 use super::CliError;
 
 #[derive(clap::Subcommand)]
@@ -26,6 +29,23 @@ pub enum What {
         #[arg(long)]
         no_gpu: bool,
     },
+    /// Environment steps per second of random-policy self-play (half games, auto-reset) by batch size
+    Env {
+        /// cpu (1 thread and all threads) or gpu
+        #[arg(long, default_value = "cpu")]
+        backend: String,
+        /// Rule variant: red or no-red
+        #[arg(long, default_value = "red")]
+        variant: String,
+        /// Seconds measured per batch size
+        #[arg(long, default_value_t = 0.5)]
+        seconds_per_point: f64,
+        /// Batch sizes to measure (comma-separated)
+        #[arg(long, value_delimiter = ',', default_values_t = [1usize, 4, 16, 64, 256, 1024, 4096, 16384])]
+        batches: Vec<usize>,
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+    },
 }
 
 fn rate(n: usize, f: impl FnOnce()) -> f64 {
@@ -39,12 +59,112 @@ fn row(name: &str, per_s: f64, baseline: f64) {
 }
 
 pub fn run(what: What) -> Result<(), CliError> {
-    let What::Hands {
-        hands,
+    match what {
+        What::Hands {
+            hands,
+            seed,
+            variant,
+            no_gpu,
+        } => hands_bench(hands, seed, variant, no_gpu),
+        What::Env {
+            backend,
+            variant,
+            seconds_per_point,
+            batches,
+            seed,
+        } => env_bench(&backend, &variant, seconds_per_point, &batches, seed),
+    }
+}
+
+/// Env steps per second at one batch size: (env only, env + policy). The policy (uniform over the
+/// mask's set bits) runs on the calling thread between steps; `env only` times the `step` calls.
+fn env_point(config: Config, seconds: f64) -> Result<(f64, f64), CliError> {
+    let b = config.batch;
+    let seed = config.seed;
+    let mut env = Env::new(config).map_err(CliError::failure)?;
+    let mut rngs: Vec<Rng> = (0..b).map(|i| policy_rng(seed, i)).collect();
+    let mut actions = vec![0u32; b];
+    let mut step = env.try_reset().map_err(CliError::failure)?;
+    let mut warm = 0;
+    let mut env_time = 0.0;
+    let mut steps = 0u64;
+    let mut started = Instant::now();
+    loop {
+        for (i, a) in actions.iter_mut().enumerate() {
+            *a = rngs[i].pick_legal(&step.legal_action_mask[i]);
+        }
+        let t = Instant::now();
+        step = env.step(&actions).map_err(CliError::failure)?;
+        let dt = t.elapsed().as_secs_f64();
+        // The first steps warm up caches (and on the GPU the pipelines): not measured.
+        if warm < 3 {
+            warm += 1;
+            started = Instant::now();
+            continue;
+        }
+        env_time += dt;
+        steps += b as u64;
+        let total = started.elapsed().as_secs_f64();
+        if total >= seconds {
+            return Ok((steps as f64 / env_time, steps as f64 / total));
+        }
+    }
+}
+
+fn env_bench(backend: &str, variant: &str, seconds: f64, batches: &[usize], seed: u64) -> Result<(), CliError> {
+    let variant = parse_variant(variant)?;
+    let backend = parse_backend(backend)?;
+    if seconds.is_nan() || seconds <= 0.0 || batches.is_empty() || batches.contains(&0) {
+        return Err(CliError::input(
+            "--seconds-per-point must be positive and --batches positive sizes",
+        ));
+    }
+    let threads = rayon::current_num_threads();
+    let config = |batch: usize, threads: Option<usize>| Config {
+        mode: Mode::Half,
+        backend,
         seed,
-        variant,
-        no_gpu,
-    } = what;
+        auto_reset: true,
+        threads,
+        ..Config::new(variant, batch)
+    };
+    let runs: Vec<(String, Option<usize>)> = match backend {
+        Backend::Cpu => vec![
+            ("cpu, 1 thread".to_string(), Some(1)),
+            (format!("cpu, {threads} threads"), None),
+        ],
+        Backend::Gpu => {
+            let adapter = Gpu::new().map_err(CliError::failure)?.adapter();
+            vec![(format!("gpu ({adapter})"), None)]
+        }
+    };
+    println!(
+        "rinshan bench env: variant {variant}, half games with auto-reset, random legal policy, {seconds} s per point"
+    );
+    println!(
+        "  env steps/s time the step calls only (state update, view, readback); +policy includes choosing the actions"
+    );
+    println!("  ratio = env steps/s over the batch-1 figure of the first row");
+    let mut base = None;
+    for (name, threads) in runs {
+        println!("{name}");
+        println!(
+            "  {:>7} {:>14} {:>9} {:>16}",
+            "batch", "env steps/s", "ratio", "+policy steps/s"
+        );
+        for &b in batches {
+            let (env_rate, with_policy) = env_point(config(b, threads), seconds)?;
+            let base = *base.get_or_insert(env_rate);
+            println!(
+                "  {b:>7} {env_rate:>14.0} {:>8.2}x {with_policy:>16.0}",
+                env_rate / base
+            );
+        }
+    }
+    Ok(())
+}
+
+fn hands_bench(hands: usize, seed: u64, variant: String, no_gpu: bool) -> Result<(), CliError> {
     let variant =
         Variant::from_name(&variant).ok_or_else(|| CliError::input(format!("unknown variant `{variant}`")))?;
     if hands == 0 {

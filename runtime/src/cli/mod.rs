@@ -2,6 +2,7 @@
 
 mod bench;
 mod score;
+mod selfplay;
 mod shanten;
 
 use clap::{Parser, Subcommand};
@@ -32,7 +33,7 @@ impl CliError {
 #[command(
     name = "rinshan",
     version,
-    about = "Vectorized Riichi Mahjong whose rules are data: hand calculator and benchmarks"
+    about = "Vectorized Riichi Mahjong whose rules are data: self-play, hand calculator and benchmarks"
 )]
 pub struct Cli {
     #[command(subcommand)]
@@ -45,7 +46,9 @@ enum Command {
     Shanten(shanten::Args),
     /// Score a winning hand, e.g. `rinshan score 234567m234p4566s --win 6s --tsumo`
     Score(score::Args),
-    /// Benchmarks
+    /// Random-policy self-play: speed and game statistics, e.g. `rinshan selfplay --games 1000`
+    Selfplay(selfplay::Args),
+    /// Benchmarks: `bench hands` (shanten, scoring), `bench env` (environment steps by batch size)
     Bench {
         #[command(subcommand)]
         what: bench::What,
@@ -56,6 +59,7 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
     match cli.command {
         Command::Shanten(a) => shanten::run(a),
         Command::Score(a) => score::run(a),
+        Command::Selfplay(a) => selfplay::run(a),
         Command::Bench { what } => bench::run(what),
     }
 }

@@ -1,0 +1,313 @@
+//! `rinshan selfplay`: a random legal policy plays whole games in a batch of envs; prints how fast,
+//! and how the games went (win, deal-in and draw rates, final scores, yaku frequencies).
+
+use std::io::IsTerminal;
+use std::time::Instant;
+
+use indicatif::{ProgressBar, ProgressStyle};
+use rinshan::env::{env_seed, events, Backend, Config, Env, Mode};
+use rinshan::random::Rng;
+use rinshan::Variant;
+use serde_json::json;
+
+use super::CliError;
+
+#[derive(clap::Args)]
+pub struct Args {
+    /// Rule variant: red or no-red
+    #[arg(long, default_value = "red")]
+    variant: String,
+    /// Game length: single (one hand), east or half (East and South rounds)
+    #[arg(long, default_value = "half")]
+    mode: String,
+    /// Games to finish
+    #[arg(long, default_value_t = 1000)]
+    games: u64,
+    /// Envs stepped together
+    #[arg(long, default_value_t = 256)]
+    batch: usize,
+    /// cpu or gpu
+    #[arg(long, default_value = "cpu")]
+    backend: String,
+    /// Seeds the walls and the policy: the same seed plays the same games
+    #[arg(long, default_value_t = 0)]
+    seed: u64,
+    /// CPU threads (default: all cores)
+    #[arg(long)]
+    threads: Option<usize>,
+    /// Print the summary as JSON
+    #[arg(long)]
+    json: bool,
+}
+
+pub fn parse_variant(name: &str) -> Result<Variant, CliError> {
+    Variant::from_name(name).ok_or_else(|| {
+        let known: Vec<String> = Variant::ALL.iter().map(|v| v.to_string()).collect();
+        CliError::input(format!("unknown variant `{name}` (known: {})", known.join(", ")))
+    })
+}
+
+pub fn parse_backend(name: &str) -> Result<Backend, CliError> {
+    match name {
+        "cpu" => Ok(Backend::Cpu),
+        "gpu" => Ok(Backend::Gpu),
+        _ => Err(CliError::input(format!("unknown backend `{name}` (cpu or gpu)"))),
+    }
+}
+
+/// The policy's random stream of env `i` (independent of the walls' seeds).
+pub fn policy_rng(seed: u64, i: usize) -> Rng {
+    Rng::new(env_seed(seed ^ 0x706f_6c69_6379, i as u64, 0))
+}
+
+/// What one game (or all the counted games) did.
+#[derive(Clone, Default)]
+struct Tally {
+    steps: u64,
+    rounds: u64,
+    ron: u64,
+    tsumo: u64,
+    exhaustive: u64,
+    abortive: u64,
+    nagashi: u64,
+    rewards: [f64; 4],
+    yaku: Vec<u64>,
+}
+
+impl Tally {
+    fn new(yaku: usize) -> Tally {
+        Tally {
+            yaku: vec![0; yaku],
+            ..Tally::default()
+        }
+    }
+
+    fn add(&mut self, other: &Tally) {
+        self.steps += other.steps;
+        self.rounds += other.rounds;
+        self.ron += other.ron;
+        self.tsumo += other.tsumo;
+        self.exhaustive += other.exhaustive;
+        self.abortive += other.abortive;
+        self.nagashi += other.nagashi;
+        for (a, b) in self.rewards.iter_mut().zip(other.rewards) {
+            *a += b;
+        }
+        for (a, b) in self.yaku.iter_mut().zip(&other.yaku) {
+            *a += b;
+        }
+    }
+}
+
+pub fn run(args: Args) -> Result<(), CliError> {
+    let variant = parse_variant(&args.variant)?;
+    let mode = Mode::from_name(&args.mode)
+        .ok_or_else(|| CliError::input(format!("unknown mode `{}` (single, east or half)", args.mode)))?;
+    let backend = parse_backend(&args.backend)?;
+    if args.games == 0 {
+        return Err(CliError::input("--games must be at least 1"));
+    }
+    let config = Config {
+        variant,
+        mode,
+        batch: args.batch,
+        backend,
+        seed: args.seed,
+        uma: None,
+        penalty: None,
+        auto_reset: true,
+        threads: args.threads,
+    };
+    let mut env = Env::new(config).map_err(|e| match e {
+        rinshan::env::EnvError::Gpu(_) => CliError::failure(e),
+        _ => CliError::input(e),
+    })?;
+    let yaku_names: &[&str] = rinshan::env::yaku_names(variant);
+    let b = env.batch();
+    let mut rngs: Vec<Rng> = (0..b).map(|i| policy_rng(args.seed, i)).collect();
+    let mut current: Vec<Tally> = vec![Tally::new(yaku_names.len()); b];
+    let mut total = Tally::new(yaku_names.len());
+    let mut games = 0u64;
+    let mut env_steps = 0u64;
+    let mut actions = vec![0u32; b];
+
+    let bar = if args.json || !std::io::stderr().is_terminal() {
+        ProgressBar::hidden()
+    } else {
+        let bar = ProgressBar::new(args.games);
+        bar.set_style(
+            ProgressStyle::with_template("{bar:40} {pos}/{len} games  {per_sec}  eta {eta}")
+                .unwrap_or_else(|_| ProgressStyle::default_bar()),
+        );
+        bar
+    };
+    let started = Instant::now();
+    let mut step = env.try_reset().map_err(CliError::failure)?;
+    while games < args.games {
+        for (i, a) in actions.iter_mut().enumerate() {
+            *a = rngs[i].pick_legal(&step.legal_action_mask[i]);
+        }
+        step = env.step(&actions).map_err(CliError::failure)?;
+        env_steps += b as u64;
+        for (i, t) in current.iter_mut().enumerate() {
+            t.steps += 1;
+            let ev = step.events[i];
+            if ev & (events::RON | events::TSUMO | events::EXHAUSTIVE_DRAW | events::ABORTIVE_DRAW) != 0 {
+                t.rounds += 1;
+            }
+            if ev & events::RON != 0 {
+                t.ron += 1;
+            }
+            if ev & events::TSUMO != 0 {
+                t.tsumo += 1;
+            }
+            if ev & events::EXHAUSTIVE_DRAW != 0 {
+                t.exhaustive += 1;
+            }
+            if ev & events::ABORTIVE_DRAW != 0 {
+                t.abortive += 1;
+            }
+            if ev & events::NAGASHI != 0 {
+                t.nagashi += 1;
+            }
+            if step.winners[i] != 0 {
+                let [lo, hi] = step.yaku[i];
+                for (y, n) in t.yaku.iter_mut().enumerate() {
+                    let word = if y < 32 { lo >> y } else { hi >> (y - 32) };
+                    *n += u64::from(word & 1);
+                }
+            }
+            for (r, x) in t.rewards.iter_mut().zip(step.rewards[i]) {
+                *r += f64::from(x);
+            }
+            if step.terminated[i] {
+                let finished = std::mem::replace(t, Tally::new(yaku_names.len()));
+                // Games are counted in env order within a step, so the same seed counts the same games.
+                if games < args.games {
+                    total.add(&finished);
+                    games += 1;
+                    bar.inc(1);
+                }
+            }
+        }
+    }
+    let seconds = started.elapsed().as_secs_f64();
+    bar.finish_and_clear();
+    summary(
+        &args,
+        variant,
+        env.adapter(),
+        games,
+        env_steps,
+        seconds,
+        &total,
+        yaku_names,
+    );
+    Ok(())
+}
+
+fn ratio(a: u64, b: u64) -> f64 {
+    if b == 0 {
+        0.0
+    } else {
+        a as f64 / b as f64
+    }
+}
+
+#[allow(clippy::too_many_arguments)]
+fn summary(
+    args: &Args,
+    variant: Variant,
+    adapter: Option<String>,
+    games: u64,
+    env_steps: u64,
+    seconds: f64,
+    t: &Tally,
+    yaku_names: &[&str],
+) {
+    let wins = t.ron + t.tsumo;
+    let scores: Vec<f64> = t.rewards.iter().map(|r| 25_000.0 + r * 100.0 / games as f64).collect();
+    let steps_per_s = env_steps as f64 / seconds.max(1e-9);
+    let mut yaku: Vec<(&str, u64)> = yaku_names
+        .iter()
+        .zip(&t.yaku)
+        .filter(|(_, &n)| n > 0)
+        .map(|(name, &n)| (*name, n))
+        .collect();
+    yaku.sort_by_key(|&(_, n)| std::cmp::Reverse(n));
+    let backend = match adapter {
+        Some(a) => format!("gpu ({a})"),
+        None => "cpu".to_string(),
+    };
+    if args.json {
+        let v = json!({
+            "variant": variant.to_string(),
+            "mode": args.mode,
+            "backend": args.backend,
+            "batch": args.batch,
+            "seed": args.seed,
+            "games": games,
+            "steps": t.steps,
+            "avg_steps_per_game": ratio(t.steps, games),
+            "rounds": t.rounds,
+            "avg_rounds_per_game": ratio(t.rounds, games),
+            "win_rate": ratio(wins, t.rounds),
+            "ron_rate": ratio(t.ron, t.rounds),
+            "tsumo_rate": ratio(t.tsumo, t.rounds),
+            "deal_in_rate": ratio(t.ron, t.rounds),
+            "draw_rate": ratio(t.exhaustive + t.abortive, t.rounds),
+            "exhaustive_draw_rate": ratio(t.exhaustive, t.rounds),
+            "abortive_draw_rate": ratio(t.abortive, t.rounds),
+            "nagashi": t.nagashi,
+            "avg_final_score": scores,
+            "yaku": yaku.iter().map(|(name, n)| json!({"name": name, "count": n, "per_win": ratio(*n, wins)})).collect::<Vec<_>>(),
+            "env_steps": env_steps,
+            "seconds": seconds,
+            "steps_per_second": steps_per_s,
+        });
+        println!("{v}");
+        return;
+    }
+    let pct = |a: u64, b: u64| 100.0 * ratio(a, b);
+    println!(
+        "rinshan selfplay: variant {variant}, mode {}, batch {}, backend {backend}, seed {}",
+        args.mode, args.batch, args.seed
+    );
+    println!("  games                 {games}");
+    println!(
+        "  steps                 {} in the counted games ({:.1} per game), {env_steps} env steps in all",
+        t.steps,
+        ratio(t.steps, games)
+    );
+    println!("  speed                 {steps_per_s:.0} env steps/s (random policy included), {seconds:.2} s");
+    println!(
+        "  rounds                {} ({:.2} per game)",
+        t.rounds,
+        ratio(t.rounds, games)
+    );
+    println!(
+        "  win rate              {:.1}% of rounds (ron {:.1}%, tsumo {:.1}%)",
+        pct(wins, t.rounds),
+        pct(t.ron, t.rounds),
+        pct(t.tsumo, t.rounds)
+    );
+    println!(
+        "  deal-in rate          {:.1}% of rounds end with a deal-in",
+        pct(t.ron, t.rounds)
+    );
+    println!(
+        "  draw rate             {:.1}% of rounds (exhaustive {:.1}%, abortive {:.1}%; nagashi {})",
+        pct(t.exhaustive + t.abortive, t.rounds),
+        pct(t.exhaustive, t.rounds),
+        pct(t.abortive, t.rounds),
+        t.nagashi
+    );
+    println!(
+        "  average final score   seat 0: {:.0}  seat 1: {:.0}  seat 2: {:.0}  seat 3: {:.0}  (points, uma included)",
+        scores[0], scores[1], scores[2], scores[3]
+    );
+    println!("  yaku (share of winning steps):");
+    for (name, n) in &yaku {
+        println!("    {name:<22} {n:>8}  {:>6.2}%", pct(*n, wins));
+    }
+}

@@ -1,0 +1,180 @@
+//! The GPU side of [`crate::env::Env`]: the B game states live in one storage buffer on the device.
+//! A reset uploads the `ResetInput`s and runs `game_new_main` into the state buffer; a step
+//! uploads B action ids, runs `game_step_main` on the states in place, then `game_view_main`; only
+//! the `StepView`s come back.
+
+use crate::gpu::{groups, EntrySpec, Gpu, GpuError};
+use crate::Variant;
+
+const NEW: &str = "game_new_main";
+const VIEW: &str = "game_view_main";
+const STEP: &str = "game_step_main";
+
+/// The three passes, made on first use (a driver may take long to compile the step pipeline).
+#[derive(Clone, Copy)]
+enum Stage {
+    New = 0,
+    Step = 1,
+    View = 2,
+}
+
+struct Pass {
+    pipeline: wgpu::ComputePipeline,
+    bind_group: wgpu::BindGroup,
+}
+
+pub(crate) struct GpuEnv {
+    gpu: Gpu,
+    batch: usize,
+    state_bytes: u64,
+    view_bytes: u64,
+    states: wgpu::Buffer,
+    reset_inputs: wgpu::Buffer,
+    actions: wgpu::Buffer,
+    views_buffer: wgpu::Buffer,
+    view_readback: wgpu::Buffer,
+    wgsl: &'static str,
+    passes: [Option<Pass>; 3],
+    /// The last views read back (StepView words of every env).
+    views: Vec<u32>,
+}
+
+impl GpuEnv {
+    pub(crate) fn new(
+        gpu: Gpu,
+        variant: Variant,
+        batch: usize,
+        (reset_words, state_words, view_words): (usize, usize, usize),
+    ) -> Result<GpuEnv, GpuError> {
+        let wgsl = with_variant!(variant, v => v::WGSL);
+        let words = |n: usize| (batch * n * 4) as u64;
+        let (state_bytes, view_bytes) = (words(state_words), words(view_words));
+        let buffer = |gpu: &Gpu, label: &str, size: u64, usage: wgpu::BufferUsages| {
+            gpu.device().create_buffer(&wgpu::BufferDescriptor {
+                label: Some(label),
+                size,
+                usage,
+                mapped_at_creation: false,
+            })
+        };
+        use wgpu::BufferUsages as U;
+        let states = buffer(
+            &gpu,
+            "rinshan states",
+            state_bytes,
+            U::STORAGE | U::COPY_SRC | U::COPY_DST,
+        );
+        let reset_inputs = buffer(
+            &gpu,
+            "rinshan reset inputs",
+            words(reset_words),
+            U::STORAGE | U::COPY_DST,
+        );
+        let actions = buffer(&gpu, "rinshan actions", words(1), U::STORAGE | U::COPY_DST);
+        let views = buffer(&gpu, "rinshan views", view_bytes, U::STORAGE | U::COPY_SRC);
+        let view_readback = buffer(&gpu, "rinshan views readback", view_bytes, U::MAP_READ | U::COPY_DST);
+        Ok(GpuEnv {
+            gpu,
+            batch,
+            state_bytes,
+            view_bytes,
+            states,
+            reset_inputs,
+            actions,
+            views_buffer: views,
+            view_readback,
+            wgsl,
+            passes: [None, None, None],
+            views: Vec::with_capacity(batch * view_words),
+        })
+    }
+
+    pub(crate) fn adapter(&self) -> String {
+        self.gpu.adapter()
+    }
+
+    fn ensure(&mut self, stage: Stage) {
+        if self.passes[stage as usize].is_some() {
+            return;
+        }
+        let (spec, first, second) = match stage {
+            Stage::New => (EntrySpec::map(NEW), &self.reset_inputs, &self.states),
+            Stage::Step => (EntrySpec::update(STEP), &self.states, &self.actions),
+            Stage::View => (EntrySpec::map(VIEW), &self.states, &self.views_buffer),
+        };
+        let (pipeline, layout) = self.gpu.pipeline(self.wgsl, spec);
+        let bind_group = self.gpu.bind_group(&layout, spec, first, second);
+        self.passes[stage as usize] = Some(Pass { pipeline, bind_group });
+    }
+
+    /// Runs `first` (a reset or a step) then the view pass, and reads the views back.
+    fn run(&mut self, first: Stage) -> Result<&[u32], GpuError> {
+        self.ensure(first);
+        self.ensure(Stage::View);
+        let (Some(first), Some(view)) = (&self.passes[first as usize], &self.passes[Stage::View as usize]) else {
+            unreachable!("both passes are made above")
+        };
+        let mut encoder = self
+            .gpu
+            .device()
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                label: Some("rinshan env"),
+            });
+        for p in [first, view] {
+            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                label: Some("rinshan env"),
+                timestamp_writes: None,
+            });
+            pass.set_pipeline(&p.pipeline);
+            pass.set_bind_group(0, &p.bind_group, &[]);
+            pass.dispatch_workgroups(groups(self.batch), 1, 1);
+        }
+        encoder.copy_buffer_to_buffer(&self.views_buffer, 0, &self.view_readback, 0, self.view_bytes);
+        self.gpu.queue().submit([encoder.finish()]);
+        self.gpu.read_words(&self.view_readback, &mut self.views)?;
+        Ok(&self.views)
+    }
+
+    pub(crate) fn reset(&mut self, inputs: &[u32]) -> Result<&[u32], GpuError> {
+        self.gpu
+            .queue()
+            .write_buffer(&self.reset_inputs, 0, bytemuck::cast_slice(inputs));
+        self.run(Stage::New)
+    }
+
+    pub(crate) fn step(&mut self, actions: &[u32]) -> Result<&[u32], GpuError> {
+        self.gpu
+            .queue()
+            .write_buffer(&self.actions, 0, bytemuck::cast_slice(actions));
+        self.run(Stage::Step)
+    }
+
+    /// Zeroes one word (at byte `offset` of the record) of env `i`'s state before the next pass.
+    pub(crate) fn clear_word(&self, i: usize, offset: usize) {
+        let at = i as u64 * (self.state_bytes / self.batch as u64) + offset as u64;
+        self.gpu
+            .queue()
+            .write_buffer(&self.states, at, bytemuck::bytes_of(&0u32));
+    }
+
+    /// Every env's `GameState` words, read back from the device.
+    pub(crate) fn states(&self) -> Result<Vec<u32>, GpuError> {
+        let readback = self.gpu.device().create_buffer(&wgpu::BufferDescriptor {
+            label: Some("rinshan states readback"),
+            size: self.state_bytes,
+            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let mut encoder = self
+            .gpu
+            .device()
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                label: Some("rinshan states"),
+            });
+        encoder.copy_buffer_to_buffer(&self.states, 0, &readback, 0, self.state_bytes);
+        self.gpu.queue().submit([encoder.finish()]);
+        let mut out = Vec::new();
+        self.gpu.read_words(&readback, &mut out)?;
+        Ok(out)
+    }
+}

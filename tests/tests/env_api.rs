@@ -1,0 +1,249 @@
+//! The batched environment's public API on the CPU backend: determinism whatever the thread
+//! count, dealing a given wall, typed errors for bad input, and illegal actions as outcomes.
+
+use rinshan::env::{Config, Env, EnvError, Mode, Step};
+use rinshan::random::Rng;
+use rinshan::Variant;
+
+fn config(variant: Variant, batch: usize, threads: Option<usize>) -> Config {
+    Config {
+        seed: 11,
+        auto_reset: true,
+        threads,
+        ..Config::new(variant, batch)
+    }
+}
+
+/// Plays `steps` random legal steps and returns every step's outcome and the final states.
+fn play(cfg: Config, steps: usize) -> (Vec<Step>, Vec<u32>) {
+    let b = cfg.batch;
+    let mut env = Env::new(cfg).expect("env");
+    let mut rngs: Vec<Rng> = (0..b as u64).map(|i| Rng::new(1000 + i)).collect();
+    let mut out = vec![env.reset().clone()];
+    let mut actions = vec![0u32; b];
+    for _ in 0..steps {
+        let last = out.last().expect("a step");
+        for (i, a) in actions.iter_mut().enumerate() {
+            *a = rngs[i].pick_legal(&last.legal_action_mask[i]);
+        }
+        out.push(env.step(&actions).expect("step").clone());
+    }
+    (out, env.states_words())
+}
+
+#[test]
+fn same_seeds_give_the_same_games_on_one_and_two_threads() {
+    for &v in Variant::ALL {
+        let (one, s1) = play(config(v, 64, Some(1)), 1500);
+        let (two, s2) = play(config(v, 64, Some(2)), 1500);
+        let (all, s3) = play(config(v, 64, None), 1500);
+        for (k, ((a, b), c)) in one.iter().zip(&two).zip(&all).enumerate() {
+            assert_eq!(a, b, "{v}: step {k} differs between 1 and 2 threads");
+            assert_eq!(a, c, "{v}: step {k} differs between 1 thread and the global pool");
+        }
+        assert_eq!(s1, s2);
+        assert_eq!(s1, s3);
+        let games: usize = one.iter().map(|s| s.terminated.iter().filter(|&&t| t).count()).sum();
+        assert!(games > 0, "{v}: some games ended in 1500 steps");
+        // A second reset deals new games; a new env with the same seed deals the first ones again.
+        let mut env = Env::new(config(v, 64, Some(1))).expect("env");
+        let first = env.reset().clone();
+        let second = env.reset().clone();
+        assert_eq!(first, one[0]);
+        assert_ne!(first.legal_action_mask, second.legal_action_mask);
+    }
+}
+
+#[test]
+fn reset_with_seeds_is_reproducible() {
+    let v = Variant::Red;
+    let mut a = Env::new(config(v, 8, Some(1))).expect("env");
+    let mut b = Env::new(Config {
+        seed: 999,
+        ..config(v, 8, Some(2))
+    })
+    .expect("env");
+    let seeds: Vec<u64> = (0..8).map(|i| 77 + i).collect();
+    let sa = a.reset_with_seeds(&seeds).expect("reset").clone();
+    let sb = b.reset_with_seeds(&seeds).expect("reset").clone();
+    assert_eq!(sa, sb);
+    assert_eq!(a.states_words(), b.states_words());
+}
+
+/// A wall in tile order: every type four times, the first copy of each five red when `red`.
+fn sorted_wall(red: bool) -> [u8; 136] {
+    std::array::from_fn(|i| {
+        let t = (i / 4) as u8;
+        if red && i % 4 == 0 && t < 27 && t % 9 == 4 {
+            34 + t / 9
+        } else {
+            t
+        }
+    })
+}
+
+fn hand_of(s: &rinshan::generated::red::GameState, seat: usize) -> [u32; 34] {
+    std::array::from_fn(|t| (s.hands[seat * 5 + t / 8] >> ((t % 8) * 4)) & 15)
+}
+
+#[test]
+fn reset_with_walls_deals_exactly_those_hands() {
+    let mut env = Env::new(config(Variant::Red, 2, Some(1))).expect("env");
+    // Env 0: the sorted wall, dealer 2. Env 1: the same wall reversed, dealer 0.
+    let sorted = sorted_wall(true);
+    let mut reversed = sorted;
+    reversed.reverse();
+    let step = env
+        .reset_with_walls(&[sorted, reversed], &[2, 0])
+        .expect("reset")
+        .clone();
+    assert_eq!(step.current_player, [2, 0], "the dealer acts first");
+    let words = env.states_words();
+    let states: &[rinshan::generated::red::GameState] = bytemuck::cast_slice(&words);
+    for (e, (wall, dealer)) in [(sorted, 2usize), (reversed, 0usize)].into_iter().enumerate() {
+        let s = &states[e];
+        for j in 0..4 {
+            let seat = (dealer + j) % 4;
+            let mut expected = [0u32; 34];
+            let take = if j == 0 { 14 } else { 13 };
+            for k in 0..take {
+                // The dealer's 14th tile is the first live draw (index 52).
+                let i = if k == 13 { 52 } else { j * 13 + k };
+                let v = u32::from(wall[i]);
+                expected[if v >= 34 {
+                    ((v - 34) * 9 + 4) as usize
+                } else {
+                    v as usize
+                }] += 1;
+            }
+            assert_eq!(hand_of(s, seat), expected, "env {e} seat {seat}");
+        }
+    }
+    // Env 0's dealer holds 0000 1111 2222 3 (1m-4m) and draws wall[52] = red 5p (value 35):
+    // it may discard those tiles only, and may declare closed kans on 1m, 2m and 3m.
+    let legal: Vec<u32> = step.legal_actions(0).collect();
+    let discards: Vec<u32> = legal.iter().copied().filter(|&a| a < 37).collect();
+    assert!(
+        discards.iter().all(|a| [0, 1, 2, 3, 13, 35].contains(a)),
+        "discards {discards:?}"
+    );
+    for t in 0..4 {
+        assert!(discards.contains(&t), "discard {t} legal: {legal:?}");
+    }
+    for t in 0..3 {
+        assert!(legal.contains(&(37 + t)), "closed kan on type {t} legal: {legal:?}");
+    }
+    assert!(!legal.contains(&(37 + 3)), "only three of type 3");
+}
+
+#[test]
+fn bad_input_is_a_typed_error() {
+    assert_eq!(Env::new(Config::new(Variant::Red, 0)).err(), Some(EnvError::EmptyBatch));
+    assert!(matches!(
+        Env::new(config(Variant::Red, 4, Some(0))).err(),
+        Some(EnvError::BadThreads(_))
+    ));
+    assert!(matches!(
+        Env::new(Config {
+            penalty: Some(f32::NAN),
+            ..Config::new(Variant::Red, 4)
+        })
+        .err(),
+        Some(EnvError::BadPenalty(_))
+    ));
+
+    let mut env = Env::new(config(Variant::Red, 4, Some(1))).expect("env");
+    env.reset();
+    let e = env.step(&[0, 0, 0]).expect_err("3 actions for 4 envs");
+    assert_eq!(
+        e,
+        EnvError::WrongLength {
+            what: "actions",
+            expected: 4,
+            got: 3
+        }
+    );
+    assert!(e.to_string().contains("3 actions for a batch of 4"), "{e}");
+    assert!(matches!(
+        env.reset_with_seeds(&[1, 2]),
+        Err(EnvError::WrongLength { what: "seeds", .. })
+    ));
+
+    let good = sorted_wall(true);
+    let mut five_copies = good;
+    five_copies[0] = 1; // 1m x3, 2m x5
+    let mut no_red_in_red = good;
+    no_red_in_red[16] = 4; // the red 5m replaced by a plain one
+    let mut out_of_range = good;
+    out_of_range[7] = 40;
+    for (wall, needle) in [
+        (five_copies, "3 copies of tile type 0"),
+        (no_red_in_red, "0 red fives of suit 0"),
+        (out_of_range, "tile 7 has value 40"),
+    ] {
+        let e = env
+            .reset_with_walls(&[good, good, wall, good], &[0; 4])
+            .expect_err("bad wall");
+        assert!(matches!(e, EnvError::BadWall { env: 2, .. }), "{e:?}");
+        assert!(e.to_string().contains(needle), "{e}");
+    }
+    assert!(matches!(
+        env.reset_with_walls(&[good; 4], &[0, 1, 2, 4]),
+        Err(EnvError::BadDealer { env: 3, dealer: 4 })
+    ));
+    assert!(matches!(
+        env.reset_with_walls(&[good; 3], &[0; 3]),
+        Err(EnvError::WrongLength { what: "walls", .. })
+    ));
+
+    let mut no_red = Env::new(config(Variant::NoRed, 1, Some(1))).expect("env");
+    let e = no_red.reset_with_walls(&[good], &[0]).expect_err("red fives in no-red");
+    assert!(e.to_string().contains("has none"), "{e}");
+    assert!(no_red.reset_with_walls(&[sorted_wall(false)], &[0]).is_ok());
+}
+
+#[test]
+fn an_illegal_action_ends_only_that_game_with_the_penalty() {
+    for &v in Variant::ALL {
+        let mut env = Env::new(Config {
+            penalty: Some(-3.5),
+            auto_reset: false,
+            mode: Mode::Half,
+            ..config(v, 4, Some(1))
+        })
+        .expect("env");
+        let first = env.reset().clone();
+        let mut rng = Rng::new(5);
+        let mut actions: Vec<u32> = (0..4).map(|i| rng.pick_legal(&first.legal_action_mask[i])).collect();
+        let illegal = (0..env.num_actions())
+            .find(|&a| first.legal_action_mask[1][(a / 32) as usize] >> (a % 32) & 1 == 0)
+            .expect("some action is illegal");
+        actions[1] = illegal;
+        let actor = first.current_player[1] as usize;
+        let step = env.step(&actions).expect("step").clone();
+        assert_eq!(step.illegal, [false, true, false, false], "{v}");
+        assert_eq!(step.terminated, [false, true, false, false], "{v}");
+        let mut expected = [0.0f32; 4];
+        expected[actor] = -3.5;
+        assert_eq!(step.rewards[1], expected, "{v}");
+        assert_eq!(step.legal_action_mask[1], [0; 3]);
+        // Out-of-range ids are illegal too, and a finished game stays finished without reward.
+        actions = (0..4).map(|i| rng.pick_legal(&step.legal_action_mask[i])).collect();
+        actions[3] = 1_000;
+        let next = env.step(&actions).expect("step").clone();
+        assert!(next.illegal[3] && next.terminated[3]);
+        assert!(next.terminated[1] && !next.illegal[1]);
+        assert_eq!(next.rewards[1], [0.0; 4]);
+        assert!(!next.terminated[0] && !next.terminated[2]);
+    }
+}
+
+#[test]
+fn defaults_come_from_the_spec() {
+    let env = Env::new(Config::new(Variant::Red, 3)).expect("env");
+    assert_eq!(env.num_actions(), 87);
+    assert_eq!(env.batch(), 3);
+    assert_eq!(env.variant(), Variant::Red);
+    let env = Env::new(Config::new(Variant::NoRed, 1)).expect("env");
+    assert_eq!(env.num_actions(), 79);
+}
