@@ -505,6 +505,12 @@ impl Env {
         }
     }
 
+    /// Whether the GPU backend runs on a software adapter (Mesa's lavapipe): correct, but its
+    /// pipelines take minutes to compile.
+    pub fn gpu_is_software(&self) -> bool {
+        matches!(&self.backing, Backing::Gpu(g) if g.is_software())
+    }
+
     /// The outcome of the last reset or step.
     pub fn last(&self) -> &Step {
         &self.step

@@ -93,6 +93,10 @@ impl GpuEnv {
         self.gpu.adapter()
     }
 
+    pub(crate) fn is_software(&self) -> bool {
+        self.gpu.is_software()
+    }
+
     fn ensure(&mut self, stage: Stage) {
         if self.passes[stage as usize].is_some() {
             return;

@@ -134,7 +134,13 @@ fn env_bench(backend: &str, variant: &str, seconds: f64, batches: &[usize], seed
             (format!("cpu, {threads} threads"), None),
         ],
         Backend::Gpu => {
-            let adapter = Gpu::new().map_err(CliError::failure)?.adapter();
+            let gpu = Gpu::new().map_err(CliError::failure)?;
+            let adapter = gpu.adapter();
+            if gpu.is_software() {
+                println!(
+                    "note: {adapter} is a software adapter: compiling the game's step shader takes it many minutes"
+                );
+            }
             vec![(format!("gpu ({adapter})"), None)]
         }
     };

@@ -122,6 +122,12 @@ pub fn run(args: Args) -> Result<(), CliError> {
         rinshan::env::EnvError::Gpu(_) => CliError::failure(e),
         _ => CliError::input(e),
     })?;
+    if env.gpu_is_software() {
+        eprintln!(
+            "note: {} is a software adapter: compiling the game's step shader takes it many minutes",
+            env.adapter().unwrap_or_default()
+        );
+    }
     let yaku_names: &[&str] = rinshan::env::yaku_names(variant);
     let b = env.batch();
     let mut rngs: Vec<Rng> = (0..b).map(|i| policy_rng(args.seed, i)).collect();
