@@ -172,7 +172,9 @@ fn selfplay_with_the_same_seed_gives_the_same_summary() {
         .sum();
     // Points are conserved; uma adds up to 0 and leftover sticks go to the winner.
     assert!((scores - 100_000.0).abs() < 1e-6, "{a}");
-    let c = strip(json(&rinshan(&["selfplay", "--games", "20", "--batch", "8", "--json", "--seed", "6"])));
+    let c = strip(json(&rinshan(&[
+        "selfplay", "--games", "20", "--batch", "8", "--json", "--seed", "6",
+    ])));
     assert_ne!(a, c, "another seed plays other games");
 }
 
