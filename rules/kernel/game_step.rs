@@ -56,8 +56,12 @@ pub fn game_step(s: &mut GameState, action: u32) {
     s.yaku = [0u32; 2];
     s.illegal = 0u32;
     if s.terminated != 0u32 {
-        // A finished game without auto-reset stays finished; its view repeats with no reward.
-        return;
+        if s.auto_reset == 0u32 {
+            // A finished game without auto-reset stays finished; its view repeats with no reward.
+            return;
+        }
+        // The flag reported the end of the previous game; the state already holds the next one.
+        s.terminated = 0u32;
     }
     s.steps += 1u32;
     let actor: u32 = s.current;

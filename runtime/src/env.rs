@@ -339,7 +339,7 @@ impl CpuEnv {
         }
     }
 
-    fn step(&mut self, variant: Variant, actions: &[u32], auto_reset: bool) {
+    fn step(&mut self, variant: Variant, actions: &[u32]) {
         let serial = self.serial;
         let states = &mut self.states;
         let views = &mut self.views;
@@ -348,10 +348,6 @@ impl CpuEnv {
                 let sts: &mut [v::GameState] = bytemuck::cast_slice_mut(states);
                 let vws: &mut [v::StepView] = bytemuck::cast_slice_mut(views);
                 let one = |((s, w), a): ((&mut v::GameState, &mut v::StepView), &u32)| {
-                    if auto_reset {
-                        // See `AUTO_RESET_WORKAROUND`.
-                        s.terminated = 0;
-                    }
                     v::game_step(s, *a);
                     *w = v::game_view(*s);
                 };
@@ -368,12 +364,6 @@ impl CpuEnv {
         }
     }
 }
-
-/// Kernel bug (rules/kernel/game_step.rs, first cut): an auto-reset leaves `terminated = 1` in the
-/// new game's state so that the view reports the end, but `game_step` returns early on any
-/// terminated state, so the new game would never move. Until the kernel clears the flag itself,
-/// the host clears it before the next step of an auto-resetting env (harmless once it does).
-pub const AUTO_RESET_WORKAROUND: bool = true;
 
 enum Backing {
     Cpu(CpuEnv),
@@ -576,17 +566,10 @@ impl Env {
         let variant = self.variant();
         match &mut self.backing {
             Backing::Cpu(cpu) => {
-                cpu.step(variant, actions, self.config.auto_reset);
+                cpu.step(variant, actions);
                 self.step.fill(variant, &cpu.views);
             }
             Backing::Gpu(gpu) => {
-                if self.config.auto_reset {
-                    // See `AUTO_RESET_WORKAROUND`.
-                    let offset = with_variant!(variant, v => std::mem::offset_of!(v::GameState, terminated));
-                    for (i, _) in self.step.terminated.iter().enumerate().filter(|(_, &t)| t) {
-                        gpu.clear_word(i, offset);
-                    }
-                }
                 let views = gpu.step(actions)?;
                 self.step.fill(variant, views);
             }

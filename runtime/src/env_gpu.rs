@@ -153,14 +153,6 @@ impl GpuEnv {
         self.run(Stage::Step)
     }
 
-    /// Zeroes one word (at byte `offset` of the record) of env `i`'s state before the next pass.
-    pub(crate) fn clear_word(&self, i: usize, offset: usize) {
-        let at = i as u64 * (self.state_bytes / self.batch as u64) + offset as u64;
-        self.gpu
-            .queue()
-            .write_buffer(&self.states, at, bytemuck::bytes_of(&0u32));
-    }
-
     /// Every env's `GameState` words, read back from the device.
     pub(crate) fn states(&self) -> Result<Vec<u32>, GpuError> {
         let readback = self.gpu.device().create_buffer(&wgpu::BufferDescriptor {

@@ -138,3 +138,36 @@ fn game_state_fits_in_one_kib() {
     assert!(std::mem::size_of::<rinshan::generated::red::GameState>() <= 1024);
     assert!(std::mem::size_of::<rinshan::generated::no_red::GameState>() <= 1024);
 }
+
+#[test]
+fn auto_reset_starts_the_next_game_in_the_same_step() {
+    use rinshan::generated::red as k;
+    let mut rng = Rng::new(3);
+    let input = k::ResetInput {
+        seed: [9, 9],
+        mode: 0,
+        dealer: 4,
+        use_wall: 0,
+        wall: [0; 136],
+        uma: [0; 4],
+        penalty: -1.0,
+        auto_reset: 1,
+    };
+    let mut s = k::game_new(input);
+    let mut finished = 0;
+    for _ in 0..5_000 {
+        let view = k::game_view(s);
+        let legal: Vec<u32> = (0..k::NUM_ACTIONS)
+            .filter(|a| view.mask[(a / 32) as usize] >> (a % 32) & 1 == 1)
+            .collect();
+        assert!(!legal.is_empty(), "the next game is ready to play after an auto-reset");
+        k::game_step(&mut s, legal[rng.below(legal.len() as u32) as usize]);
+        let after = k::game_view(s);
+        if after.terminated != 0 {
+            finished += 1;
+            assert_eq!(s.games, finished, "the state already holds game {finished}");
+            assert_eq!(s.scores, [25_000; 4], "the new game starts from the starting points");
+        }
+    }
+    assert!(finished >= 10, "single-round games keep coming: {finished}");
+}
