@@ -104,11 +104,19 @@ fn claim_options_for(s: &mut GameState, q: u32, from: u32, v: u32, kan: u32) -> 
     o
 }
 
-// `kan`: 0 a discard, 1 an added kan (chankan), 2 a closed kan (only thirteen orphans may rob it).
-fn open_claims(s: &mut GameState, from: u32, v: u32, kan: u32) {
+// Opens a claim window on tile value `v` from seat `from`. `kan`: 0 a discard, 1 an added kan
+// (chankan), 2 a closed kan (only thirteen orphans may rob it).
+fn set_claim(s: &mut GameState, from: u32, v: u32, kan: u32) -> u32 {
     s.claim_tile = v;
     s.claim_from = from;
     s.claim_kan = kan;
+    TASK_OPEN_CLAIMS
+}
+
+fn open_claims(s: &mut GameState) -> u32 {
+    let from: u32 = s.claim_from;
+    let v: u32 = s.claim_tile;
+    let kan: u32 = s.claim_kan;
     let mut any: bool = false;
     for j in 1u32..4u32 {
         let q: u32 = (from + j) % 4u32;
@@ -124,9 +132,9 @@ fn open_claims(s: &mut GameState, from: u32, v: u32, kan: u32) {
     s.claim_choices[from as usize] = NO_CHOICE;
     if any {
         s.phase = PHASE_CLAIM;
-    } else {
-        resolve_claims(s);
+        return TASK_DONE;
     }
+    TASK_RESOLVE
 }
 
 fn claim_mask(s: &mut GameState) -> [u32; 3] {
@@ -153,7 +161,7 @@ fn claim_mask(s: &mut GameState) -> [u32; 3] {
     m
 }
 
-fn do_claim_decision(s: &mut GameState, a: u32) {
+fn do_claim_decision(s: &mut GameState, a: u32) -> u32 {
     let q: u32 = s.current;
     s.claim_choices[q as usize] = a;
     if (s.claim_options[q as usize] & CLAIM_RON) != 0u32 && a != ACTION_RON {
@@ -170,11 +178,11 @@ fn do_claim_decision(s: &mut GameState, a: u32) {
         let next: u32 = (from + j) % 4u32;
         if s.claim_options[next as usize] != 0u32 {
             s.current = next;
-            return;
+            return TASK_DONE;
         }
         j += 1u32;
     }
-    resolve_claims(s);
+    TASK_RESOLVE
 }
 
 fn accept_riichi(s: &mut GameState, p: u32) {
@@ -199,7 +207,7 @@ fn clear_claims(s: &mut GameState) {
     s.claim_kan = 0u32;
 }
 
-fn resolve_claims(s: &mut GameState) {
+fn resolve_claims(s: &mut GameState) -> u32 {
     let from: u32 = s.claim_from;
     let v: u32 = s.claim_tile;
     let kan: u32 = s.claim_kan;
@@ -212,8 +220,7 @@ fn resolve_claims(s: &mut GameState) {
     if rons > 0u32 {
         if rons == 3u32 && TRIPLE_RON_ABORT && DOUBLE_RON {
             clear_claims(s);
-            abortive_draw(s);
-            return;
+            return TASK_ABORTIVE;
         }
         let mut first: bool = true;
         let mut dealer_won: bool = false;
@@ -228,19 +235,21 @@ fn resolve_claims(s: &mut GameState) {
             }
         }
         clear_claims(s);
-        end_round(s, dealer_won, false);
-        return;
+        s.task_flags = 0u32;
+        if dealer_won {
+            s.task_flags = END_DEALER_CONTINUES;
+        }
+        return TASK_END_ROUND;
     }
+    s.task_seat = from;
     if kan != 0u32 {
         clear_claims(s);
-        draw_replacement(s, from);
-        return;
+        return TASK_REPLACEMENT;
     }
     accept_riichi(s, from);
     if ABORTIVE_DRAWS && four_riichi(s) {
         clear_claims(s);
-        abortive_draw(s);
-        return;
+        return TASK_ABORTIVE;
     }
     let mut caller: u32 = 4u32;
     let mut call: u32 = 0u32;
@@ -264,10 +273,9 @@ fn resolve_claims(s: &mut GameState) {
     }
     clear_claims(s);
     if caller < 4u32 {
-        do_call(s, caller, from, v, call);
-    } else {
-        after_discard(s, from);
+        return do_call(s, caller, from, v, call);
     }
+    TASK_AFTER_DISCARD
 }
 
 fn four_riichi(s: &mut GameState) -> bool {
@@ -313,18 +321,21 @@ fn four_winds(s: &mut GameState) -> bool {
     true
 }
 
-// The discard stands: abortive checks, then the next draw or the exhaustive draw.
-fn after_discard(s: &mut GameState, from: u32) {
+// The discard of `task_seat` stands: abortive checks, then the next draw or the exhaustive draw.
+fn after_discard(s: &mut GameState) -> u32 {
+    let from: u32 = s.task_seat;
     if ABORTIVE_DRAWS && ((s.kans == 4u32 && kan_seats(s) >= 2u32) || four_winds(s)) {
-        abortive_draw(s);
-        return;
+        return TASK_ABORTIVE;
     }
     if s.next_draw >= s.live_end {
-        let dealer_tenpai: bool = settle_exhaustive_draw(s);
-        end_round(s, dealer_tenpai, true);
-        return;
+        s.task_flags = END_DRAWN;
+        if settle_exhaustive_draw(s) {
+            s.task_flags |= END_DEALER_CONTINUES;
+        }
+        return TASK_END_ROUND;
     }
     draw(s, (from + 1u32) % 4u32);
+    TASK_DONE
 }
 
 fn take_for_chi(s: &mut GameState, q: u32, t: u32, red: bool) -> u32 {
@@ -332,7 +343,7 @@ fn take_for_chi(s: &mut GameState, q: u32, t: u32, red: bool) -> u32 {
     (v >= 34u32) as u32
 }
 
-fn do_call(s: &mut GameState, q: u32, from: u32, v: u32, a: u32) {
+fn do_call(s: &mut GameState, q: u32, from: u32, v: u32, a: u32) -> u32 {
     let t: u32 = value_type(v);
     let len: u32 = byte_of(s.river_lens, from);
     if len > 0u32 {
@@ -388,14 +399,15 @@ fn do_call(s: &mut GameState, q: u32, from: u32, v: u32, a: u32) {
     if kind == MELD_OPEN_KAN {
         reveal_pending_dora(s);
         s.dora_pending += 1u32;
-        draw_replacement(s, q);
-        return;
+        s.task_seat = q;
+        return TASK_REPLACEMENT;
     }
     s.kuikae = t | (ban_b << 8u32);
     s.current = q;
     s.phase = PHASE_TURN;
     s.drawn = NO_TILE_VALUE;
     s.rinshan = 0u32;
+    TASK_DONE
 }
 
 // Pao: the seat that fed the third dragon set (or the fourth wind set) pays for the yakuman.

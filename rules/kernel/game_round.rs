@@ -40,6 +40,8 @@ fn empty_state() -> GameState {
         claim_kan: 0u32,
         claim_options: [0u32; 4],
         claim_choices: [NO_CHOICE; 4],
+        task_seat: 0u32,
+        task_flags: 0u32,
         mask: [0u32; 3],
         rewards: [0i32; 4],
         terminated: 0u32,

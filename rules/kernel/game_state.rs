@@ -47,6 +47,20 @@ const EVENT_ABORTIVE_DRAW: u32 = 8;
 const EVENT_GAME_OVER: u32 = 16;
 const EVENT_NAGASHI: u32 = 32;
 
+// The continuations of a step (see `run_tasks`): each piece of the game that can follow an action
+// runs from one place, so the GPU compiler inlines each heavy function once.
+const TASK_DONE: u32 = 0;
+const TASK_OPEN_CLAIMS: u32 = 1;
+const TASK_RESOLVE: u32 = 2;
+const TASK_AFTER_DISCARD: u32 = 3;
+const TASK_REPLACEMENT: u32 = 4;
+const TASK_ABORTIVE: u32 = 5;
+const TASK_TSUMO: u32 = 6;
+const TASK_END_ROUND: u32 = 7;
+// End-of-round arguments (GameState.task_flags).
+const END_DEALER_CONTINUES: u32 = 1;
+const END_DRAWN: u32 = 2;
+
 // Dead wall layout (indices into the 136-tile wall): replacement tiles, dora and ura indicators.
 const WALL_LIVE_START: u32 = 52;
 const WALL_LIVE_END: u32 = 122;
@@ -153,6 +167,9 @@ pub struct GameState {
     // Per seat: the claim options offered (CLAIM_* bits) and the action chosen (NO_CHOICE until then).
     pub claim_options: [u32; 4],
     pub claim_choices: [u32; 4],
+    // Arguments of the pending task: a seat, and END_* flags for TASK_END_ROUND.
+    pub task_seat: u32,
+    pub task_flags: u32,
     // Outputs of the last step (see StepView).
     pub mask: [u32; 3],
     pub rewards: [i32; 4],

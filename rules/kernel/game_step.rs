@@ -21,7 +21,47 @@ fn begin_game(s: &mut GameState, dealer: u32, wall: [u32; 136]) {
     s.phase = PHASE_TURN;
     s.terminated = 0u32;
     start_round(s, wall);
-    s.mask = compute_mask(s);
+}
+
+// Runs what follows an action until the step settles. Every continuation is called from this one
+// loop rather than from each other, so each heavy function (scoring, dealing, masks) is inlined
+// once by GPU compilers instead of once per path.
+fn run_tasks(s: &mut GameState, first: u32) {
+    let mut task: u32 = first;
+    loop {
+        if task == TASK_DONE {
+            break;
+        }
+        if task == TASK_OPEN_CLAIMS {
+            task = open_claims(s);
+        } else if task == TASK_RESOLVE {
+            task = resolve_claims(s);
+        } else if task == TASK_AFTER_DISCARD {
+            task = after_discard(s);
+        } else if task == TASK_REPLACEMENT {
+            let seat: u32 = s.task_seat;
+            draw_replacement(s, seat);
+            task = TASK_DONE;
+        } else if task == TASK_ABORTIVE {
+            s.events |= EVENT_ABORTIVE_DRAW;
+            s.task_flags = END_DEALER_CONTINUES | END_DRAWN;
+            task = TASK_END_ROUND;
+        } else if task == TASK_TSUMO {
+            let winner: u32 = s.task_seat;
+            settle_tsumo(s, winner);
+            s.task_flags = 0u32;
+            if winner == s.dealer {
+                s.task_flags = END_DEALER_CONTINUES;
+            }
+            task = TASK_END_ROUND;
+        } else if task == TASK_END_ROUND {
+            let flags: u32 = s.task_flags;
+            end_round(s, (flags & END_DEALER_CONTINUES) != 0u32, (flags & END_DRAWN) != 0u32);
+            task = TASK_DONE;
+        } else {
+            task = TASK_DONE;
+        }
+    }
 }
 
 fn first_dealer(seed: [u32; 2], games: u32, requested: u32) -> u32 {
@@ -45,6 +85,7 @@ pub fn game_new(inp: ResetInput) -> GameState {
         wall = shuffled_wall(inp.seed, 0u32);
     }
     begin_game(&mut s, dealer, wall);
+    s.mask = compute_mask(&mut s);
     s
 }
 
@@ -71,9 +112,11 @@ pub fn game_step(s: &mut GameState, action: u32) {
         s.terminated = 1u32;
         s.events |= EVENT_GAME_OVER;
     } else if s.phase == PHASE_CLAIM {
-        do_claim_decision(s, action);
+        let next: u32 = do_claim_decision(s, action);
+        run_tasks(s, next);
     } else {
-        do_turn_action(s, action);
+        let next: u32 = do_turn_action(s, action);
+        run_tasks(s, next);
     }
     if s.terminated != 0u32 && s.auto_reset != 0u32 {
         // Pgx-style auto-reset: the next game starts in this step; the view still reports the end.
@@ -84,7 +127,6 @@ pub fn game_step(s: &mut GameState, action: u32) {
         begin_game(s, dealer, wall);
         s.terminated = 1u32;
         s.rounds = finished_rounds;
-        return;
     }
     s.mask = compute_mask(s);
 }

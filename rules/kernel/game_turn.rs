@@ -155,7 +155,7 @@ fn river_push(s: &mut GameState, p: u32, entry: u32) {
     }
 }
 
-fn do_discard(s: &mut GameState, v: u32, tsumogiri: bool) {
+fn do_discard(s: &mut GameState, v: u32, tsumogiri: bool) -> u32 {
     let p: u32 = s.current;
     take_tile(s, p, v);
     let t: u32 = value_type(v);
@@ -178,7 +178,7 @@ fn do_discard(s: &mut GameState, v: u32, tsumogiri: bool) {
     s.kuikae = 0xffffu32;
     // The kan dora of an open or added kan appears once its replacement tile is discarded.
     reveal_pending_dora(s);
-    open_claims(s, p, v, 0u32);
+    set_claim(s, p, v, 0u32)
 }
 
 fn take_all_of_type(s: &mut GameState, p: u32, t: u32, n: u32) -> u32 {
@@ -191,7 +191,7 @@ fn take_all_of_type(s: &mut GameState, p: u32, t: u32, n: u32) -> u32 {
     reds
 }
 
-fn do_self_kan(s: &mut GameState, t: u32) {
+fn do_self_kan(s: &mut GameState, t: u32) -> u32 {
     let p: u32 = s.current;
     reveal_pending_dora(s);
     for q in 0u32..4u32 {
@@ -206,45 +206,44 @@ fn do_self_kan(s: &mut GameState, t: u32) {
         s.meld_counts = with_byte(s.meld_counts, p, n + 1u32);
         // A closed kan shows its dora at once.
         s.dora_revealed += 1u32;
-        open_claims(s, p, t, 2u32);
-    } else {
-        let v: u32 = take_type(s, p, t, false);
-        for i in 0u32..meld_count(s, p) {
-            let m: u32 = s.melds[(p * 4u32 + i) as usize];
-            if meld_kind(m) == MELD_PON && meld_tile(m) == t {
-                let mut red: u32 = 0u32;
-                if v >= 34u32 {
-                    red = 1u32 << 12u32;
-                }
-                s.melds[(p * 4u32 + i) as usize] = ((m & !15u32) | MELD_ADDED_KAN) + red;
-            }
-        }
-        s.dora_pending += 1u32;
-        open_claims(s, p, v, 1u32);
+        return set_claim(s, p, t, 2u32);
     }
+    let v: u32 = take_type(s, p, t, false);
+    for i in 0u32..meld_count(s, p) {
+        let m: u32 = s.melds[(p * 4u32 + i) as usize];
+        if meld_kind(m) == MELD_PON && meld_tile(m) == t {
+            let mut red: u32 = 0u32;
+            if v >= 34u32 {
+                red = 1u32 << 12u32;
+            }
+            s.melds[(p * 4u32 + i) as usize] = ((m & !15u32) | MELD_ADDED_KAN) + red;
+        }
+    }
+    s.dora_pending += 1u32;
+    set_claim(s, p, v, 1u32)
 }
 
-fn abortive_draw(s: &mut GameState) {
-    s.events |= EVENT_ABORTIVE_DRAW;
-    end_round(s, true, true);
-}
-
-fn do_turn_action(s: &mut GameState, a: u32) {
+// Applies a legal action of the player to move; returns the task that follows.
+fn do_turn_action(s: &mut GameState, a: u32) -> u32 {
     let p: u32 = s.current;
     if a == ACTION_TSUMOGIRI {
         let v: u32 = s.drawn;
-        do_discard(s, v, true);
-    } else if a >= ACTION_DISCARD && a < ACTION_DISCARD + ACTION_DISCARD_COUNT {
-        do_discard(s, a - ACTION_DISCARD, false);
-    } else if a == ACTION_RIICHI {
+        return do_discard(s, v, true);
+    }
+    if a >= ACTION_DISCARD && a < ACTION_DISCARD + ACTION_DISCARD_COUNT {
+        return do_discard(s, a - ACTION_DISCARD, false);
+    }
+    if a == ACTION_RIICHI {
         s.seat_flags[p as usize] |= SEAT_RIICHI_PENDING;
         s.phase = PHASE_RIICHI_DISCARD;
-    } else if a == ACTION_TSUMO {
-        settle_tsumo(s, p);
-        end_round(s, p == s.dealer, false);
-    } else if a == ACTION_KYUUSHU {
-        abortive_draw(s);
-    } else if a >= ACTION_SELF_KAN && a < ACTION_SELF_KAN + ACTION_SELF_KAN_COUNT {
-        do_self_kan(s, a - ACTION_SELF_KAN);
+        return TASK_DONE;
     }
+    if a == ACTION_TSUMO {
+        s.task_seat = p;
+        return TASK_TSUMO;
+    }
+    if a == ACTION_KYUUSHU {
+        return TASK_ABORTIVE;
+    }
+    do_self_kan(s, a - ACTION_SELF_KAN)
 }
