@@ -111,11 +111,13 @@ pub fn game_step(s: &mut GameState, action: u32) {
         s.phase = PHASE_OVER;
         s.terminated = 1u32;
         s.events |= EVENT_GAME_OVER;
-    } else if s.phase == PHASE_CLAIM {
-        let next: u32 = do_claim_decision(s, action);
-        run_tasks(s, next);
     } else {
-        let next: u32 = do_turn_action(s, action);
+        let mut next: u32 = TASK_DONE;
+        if s.phase == PHASE_CLAIM {
+            next = do_claim_decision(s, action);
+        } else if s.phase != PHASE_OVER {
+            next = do_turn_action(s, action);
+        }
         run_tasks(s, next);
     }
     if s.terminated != 0u32 && s.auto_reset != 0u32 {

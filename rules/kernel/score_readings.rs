@@ -156,34 +156,39 @@ fn best_standard(inp: ScoreInput, h: HandInfo, common: Features) -> Judged {
                 if pairs != 1u32 {
                     continue;
                 }
-                if is_honor(win) {
-                    let mut slot: u32 = SLOT_TRIPLET;
-                    if inp.hand[win as usize] == 2u32 {
+                // The places the winning tile can sit: k = 0 pair, 1 triplet, 2..4 a run starting
+                // 0, 1 or 2 tiles below it. One call site keeps GPU compilers from inlining
+                // `judge_standard` once per case.
+                let a0: u32 = w0[(win_suit % 3u32) as usize];
+                let a1: u32 = w1[(win_suit % 3u32) as usize];
+                for k in 0u32..5u32 {
+                    let mut slot: u32 = SLOT_RUN;
+                    let mut slot_tile: u32 = win;
+                    let mut fits: bool = false;
+                    if is_honor(win) {
+                        // Honors are pairs or triplets only, fixed by their count.
+                        if k == 0u32 && inp.hand[win as usize] == 2u32 {
+                            slot = SLOT_PAIR;
+                            fits = true;
+                        } else if k == 1u32 && inp.hand[win as usize] == 3u32 {
+                            slot = SLOT_TRIPLET;
+                            fits = true;
+                        }
+                    } else if k == 0u32 {
                         slot = SLOT_PAIR;
+                        fits = (a0 & 15u32) == win_pos;
+                    } else if k == 1u32 {
+                        slot = SLOT_TRIPLET;
+                        fits = ((a1 >> (7u32 + win_pos)) & 1u32) != 0u32;
+                    } else {
+                        let d: u32 = k - 2u32;
+                        if win_pos >= d && win_pos - d <= 6u32 && ((a1 >> (win_pos - d)) & 1u32) != 0u32 {
+                            slot_tile = win - d;
+                            fits = true;
+                        }
                     }
-                    let j: Judged = judge_standard(inp, h, common, w0, w1, slot, win);
-                    if better(j, best) {
-                        best = j;
-                    }
-                    continue;
-                }
-                let a0: u32 = w0[win_suit as usize];
-                let a1: u32 = w1[win_suit as usize];
-                if (a0 & 15u32) == win_pos {
-                    let j: Judged = judge_standard(inp, h, common, w0, w1, SLOT_PAIR, win);
-                    if better(j, best) {
-                        best = j;
-                    }
-                }
-                if ((a1 >> (7u32 + win_pos)) & 1u32) != 0u32 {
-                    let j: Judged = judge_standard(inp, h, common, w0, w1, SLOT_TRIPLET, win);
-                    if better(j, best) {
-                        best = j;
-                    }
-                }
-                for d in 0u32..3u32 {
-                    if win_pos >= d && win_pos - d <= 6u32 && ((a1 >> (win_pos - d)) & 1u32) != 0u32 {
-                        let j: Judged = judge_standard(inp, h, common, w0, w1, SLOT_RUN, win - d);
+                    if fits {
+                        let j: Judged = judge_standard(inp, h, common, w0, w1, slot, slot_tile);
                         if better(j, best) {
                             best = j;
                         }
