@@ -33,14 +33,10 @@ fn parity(variant: Variant) {
         "{variant}: reset of {BATCH} envs identical on CPU and GPU in {:.1}s (pipeline compilation included)",
         started.elapsed().as_secs_f64()
     );
-    if software && std::env::var("RINSHAN_SLOW_GPU_TESTS").is_ok_and(|v| v == "1") {
-        eprintln!("{variant}: stepping on a software adapter (RINSHAN_SLOW_GPU_TESTS=1)");
-    } else if software {
-        eprintln!(
-            "{test}: whole games skipped on a software adapter: compiling game_step_main takes lavapipe \
-             more than 10 minutes (set RINSHAN_SLOW_GPU_TESTS=1 to run them anyway)"
-        );
-        return;
+    if software {
+        // Mesa's lavapipe compiles game_step_main in about 5 minutes on 2 cores the first time
+        // (its shader cache makes later runs fast); the games themselves take seconds.
+        eprintln!("{variant}: stepping whole games on a software adapter");
     }
     let mut rngs: Vec<Rng> = (0..BATCH as u64).map(|i| Rng::new(0xabc0 + i)).collect();
     let mut actions = vec![0u32; BATCH];
