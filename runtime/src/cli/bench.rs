@@ -138,7 +138,7 @@ fn env_bench(backend: &str, variant: &str, seconds: f64, batches: &[usize], seed
             let adapter = gpu.adapter();
             if gpu.is_software() {
                 println!(
-                    "note: {adapter} is a software adapter: compiling the game's step shader takes it many minutes"
+                    "note: {adapter} is a software adapter: compiling the game's step shader takes it about 5 minutes the first time (cached afterwards)"
                 );
             }
             vec![(format!("gpu ({adapter})"), None)]

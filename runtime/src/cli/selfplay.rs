@@ -124,7 +124,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
     })?;
     if env.gpu_is_software() {
         eprintln!(
-            "note: {} is a software adapter: compiling the game's step shader takes it many minutes",
+            "note: {} is a software adapter: compiling the game's step shader takes it about 5 minutes the first time (cached afterwards)",
             env.adapter().unwrap_or_default()
         );
     }
