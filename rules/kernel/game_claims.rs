@@ -6,8 +6,8 @@ fn furiten(s: &mut GameState, q: u32) -> bool {
     if (f & (SEAT_FURITEN_TEMP | SEAT_FURITEN_RIICHI)) != 0u32 {
         return true;
     }
-    let w: [u32; 2] = seat_waits(s, q);
-    (w[0] & s.discarded[(q * 2u32) as usize]) != 0u32 || (w[1] & s.discarded[(q * 2u32 + 1u32) as usize]) != 0u32
+    (s.waits[(q * 2u32) as usize] & s.discarded[(q * 2u32) as usize]) != 0u32
+        || (s.waits[(q * 2u32 + 1u32) as usize] & s.discarded[(q * 2u32 + 1u32) as usize]) != 0u32
 }
 
 fn red_count(s: &mut GameState, q: u32, t: u32) -> u32 {
@@ -53,9 +53,8 @@ fn chi_options(s: &mut GameState, q: u32, c: [u32; 34], a: u32, b: u32, ban_a: u
 fn claim_options_for(s: &mut GameState, q: u32, from: u32, v: u32, kan: u32) -> u32 {
     let t: u32 = value_type(v);
     let mut o: u32 = 0u32;
-    let mut c: [u32; 34] = hand_counts(s, q);
-    c[t as usize] += 1u32;
-    if hand_complete(c, meld_count(s, q)) && !furiten(s, q) {
+    let c: [u32; 34] = hand_counts(s, q);
+    if waits_include(s, q, t) && !furiten(s, q) {
         let out: ScoreOutput = score_hand(win_input(s, q, v, false, kan == 1u32));
         let orphans: bool = has_yaku(out.yaku_lo, out.yaku_hi, YAKU_KOKUSHI)
             || has_yaku(out.yaku_lo, out.yaku_hi, YAKU_KOKUSHI_13);
@@ -63,7 +62,6 @@ fn claim_options_for(s: &mut GameState, q: u32, from: u32, v: u32, kan: u32) -> 
             o |= CLAIM_RON;
         }
     }
-    c[t as usize] -= 1u32;
     let riichi: bool = (s.seat_flags[q as usize] & SEAT_RIICHI) != 0u32;
     if kan != 0u32 || riichi || s.next_draw >= s.live_end {
         return o;
@@ -397,6 +395,8 @@ fn do_call(s: &mut GameState, q: u32, from: u32, v: u32, a: u32) -> u32 {
         note_liability(s, q, from, t);
     }
     if kind == MELD_OPEN_KAN {
+        // The replacement draw may win: its tsumo check reads the new 13-tile waits.
+        update_waits(s, q);
         reveal_pending_dora(s);
         s.dora_pending += 1u32;
         s.task_seat = q;

@@ -27,6 +27,7 @@ fn empty_state() -> GameState {
         rivers: [0u32; 24],
         river_lens: 0u32,
         discarded: [0u32; 8],
+        waits: [0u32; 8],
         seat_flags: [0u32; 4],
         pao: 0u32,
         phase: PHASE_TURN,
@@ -112,6 +113,9 @@ fn start_round(s: &mut GameState, wall: [u32; 136]) {
             let v: u32 = wall_tile(s, j * 13u32 + k);
             give_tile(s, seat, v);
         }
+    }
+    for seat in 0u32..4u32 {
+        update_waits(s, seat);
     }
     draw(s, s.dealer);
 }

@@ -148,6 +148,9 @@ pub struct GameState {
     pub river_lens: u32,
     // Tile types each seat has discarded (furiten): 2 words per seat.
     pub discarded: [u32; 8],
+    // Each seat's waits (34-bit set, 2 words per seat) for its 13-tile hand, refreshed whenever
+    // that hand changes (deal, discard, kan): claims, tsumo checks and tenpai read them.
+    pub waits: [u32; 8],
     pub seat_flags: [u32; 4],
     // Liable seat + 1 for pao (dragons, winds), 8 bits per seat; 0 = none.
     pub pao: u32,

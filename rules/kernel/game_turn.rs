@@ -164,6 +164,7 @@ fn do_discard(s: &mut GameState, v: u32, tsumogiri: bool) -> u32 {
         entry |= 128u32;
     }
     river_push(s, p, entry);
+    update_waits(s, p);
     s.discarded[(p * 2u32 + t / 32u32) as usize] |= 1u32 << (t % 32u32);
     let mut f: u32 = s.seat_flags[p as usize];
     if !is_terminal_or_honor(t) {
@@ -206,6 +207,7 @@ fn do_self_kan(s: &mut GameState, t: u32) -> u32 {
         s.meld_counts = with_byte(s.meld_counts, p, n + 1u32);
         // A closed kan shows its dora at once.
         s.dora_revealed += 1u32;
+        update_waits(s, p);
         return set_claim(s, p, t, 2u32);
     }
     let v: u32 = take_type(s, p, t, false);
@@ -220,6 +222,7 @@ fn do_self_kan(s: &mut GameState, t: u32) -> u32 {
         }
     }
     s.dora_pending += 1u32;
+    update_waits(s, p);
     set_claim(s, p, v, 1u32)
 }
 

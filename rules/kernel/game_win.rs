@@ -85,11 +85,7 @@ fn win_input(s: &mut GameState, seat: u32, v: u32, tsumo: bool, chankan: bool) -
 }
 
 fn can_win(s: &mut GameState, seat: u32, v: u32, tsumo: bool, chankan: bool) -> bool {
-    let mut c: [u32; 34] = hand_counts(s, seat);
-    if !tsumo {
-        c[value_type(v) as usize] += 1u32;
-    }
-    if !hand_complete(c, meld_count(s, seat)) {
+    if !waits_include(s, seat, value_type(v)) {
         return false;
     }
     score_hand(win_input(s, seat, v, tsumo, chankan)).status == STATUS_WIN
