@@ -5,7 +5,7 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::process::exit;
 
-use rinshan_shaders_gen::{Entry, EntryPoint, Source, UpdateEntry};
+use rinshan_shaders_gen::Source;
 
 include!("src/entries.rs");
 
@@ -104,25 +104,7 @@ fn main() {
             path: p.display().to_string(),
             text: t.clone(),
         }));
-        let mut entries: Vec<EntryPoint> = ENTRIES
-            .iter()
-            .map(|(name, function, input, output)| {
-                EntryPoint::Map(Entry {
-                    name: name.to_string(),
-                    function: function.to_string(),
-                    input: input.to_string(),
-                    output: output.to_string(),
-                })
-            })
-            .collect();
-        entries.extend(UPDATE_ENTRIES.iter().map(|(name, function, state, arg)| {
-            EntryPoint::Update(UpdateEntry {
-                name: name.to_string(),
-                function: function.to_string(),
-                state: state.to_string(),
-                arg: arg.to_string(),
-            })
-        }));
+        let entries = rinshan_shaders_gen::entry_points(&ENTRIES, &UPDATE_ENTRIES);
         let wgsl = match rinshan_shaders_gen::translate_entry_points(&sources, &entries) {
             Ok(w) => w,
             Err(e) => fail(e),

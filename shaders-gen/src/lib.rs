@@ -93,6 +93,28 @@ impl From<UpdateEntry> for EntryPoint {
     }
 }
 
+/// The entry points of a module from plain tables, map entries first, then update entries (the
+/// binding order): `(name, function, input, output)` and `(name, function, state, arg)`.
+pub fn entry_points(map: &[(&str, &str, &str, &str)], update: &[(&str, &str, &str, &str)]) -> Vec<EntryPoint> {
+    let maps = map.iter().map(|(name, function, input, output)| {
+        EntryPoint::Map(Entry {
+            name: name.to_string(),
+            function: function.to_string(),
+            input: input.to_string(),
+            output: output.to_string(),
+        })
+    });
+    let updates = update.iter().map(|(name, function, state, arg)| {
+        EntryPoint::Update(UpdateEntry {
+            name: name.to_string(),
+            function: function.to_string(),
+            state: state.to_string(),
+            arg: arg.to_string(),
+        })
+    });
+    maps.chain(updates).collect()
+}
+
 impl EntryPoint {
     /// The WGSL entry point name.
     pub fn name(&self) -> &str {

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use rinshan::gpu::Kernel;
 use rinshan::hand::{self, Win};
 use rinshan::notation::{parse_meld, parse_tiles};
-use rinshan_shaders_gen::{Entry, EntryPoint, Source, UpdateEntry};
+use rinshan_shaders_gen::Source;
 use rinshan_tests::gpu_or_skip;
 
 fn rules() -> PathBuf {
@@ -49,29 +49,7 @@ fn compile(variant: &str, variant_text: &str, yaku_text: &str) -> String {
         text: read(p),
     }));
     // The same entry points as build.rs: the map entries, then the in-place update entries.
-    let mut entries: Vec<EntryPoint> = rinshan::entries::ENTRIES
-        .iter()
-        .map(|(name, function, input, output)| {
-            EntryPoint::Map(Entry {
-                name: name.to_string(),
-                function: function.to_string(),
-                input: input.to_string(),
-                output: output.to_string(),
-            })
-        })
-        .collect();
-    entries.extend(
-        rinshan::entries::UPDATE_ENTRIES
-            .iter()
-            .map(|(name, function, state, arg)| {
-                EntryPoint::Update(UpdateEntry {
-                    name: name.to_string(),
-                    function: function.to_string(),
-                    state: state.to_string(),
-                    arg: arg.to_string(),
-                })
-            }),
-    );
+    let entries = rinshan_shaders_gen::entry_points(&rinshan::entries::ENTRIES, &rinshan::entries::UPDATE_ENTRIES);
     rinshan_shaders_gen::translate_entry_points(&sources, &entries).unwrap_or_else(|e| panic!("{e}"))
 }
 
