@@ -218,6 +218,7 @@ fn resolve_claims(s: &mut GameState) -> u32 {
     if rons > 0u32 {
         if rons == 3u32 && TRIPLE_RON_ABORT && DOUBLE_RON {
             clear_claims(s);
+            s.draw_kind = DRAW_TRIPLE_RON;
             return TASK_ABORTIVE;
         }
         let mut first: bool = true;
@@ -247,6 +248,7 @@ fn resolve_claims(s: &mut GameState) -> u32 {
     accept_riichi(s, from);
     if ABORTIVE_DRAWS && four_riichi(s) {
         clear_claims(s);
+        s.draw_kind = DRAW_FOUR_RIICHI;
         return TASK_ABORTIVE;
     }
     let mut caller: u32 = 4u32;
@@ -322,7 +324,12 @@ fn four_winds(s: &mut GameState) -> bool {
 // The discard of `task_seat` stands: abortive checks, then the next draw or the exhaustive draw.
 fn after_discard(s: &mut GameState) -> u32 {
     let from: u32 = s.task_seat;
-    if ABORTIVE_DRAWS && ((s.kans == 4u32 && kan_seats(s) >= 2u32) || four_winds(s)) {
+    if ABORTIVE_DRAWS && s.kans == 4u32 && kan_seats(s) >= 2u32 {
+        s.draw_kind = DRAW_FOUR_KANS;
+        return TASK_ABORTIVE;
+    }
+    if ABORTIVE_DRAWS && four_winds(s) {
+        s.draw_kind = DRAW_FOUR_WINDS;
         return TASK_ABORTIVE;
     }
     if s.next_draw >= s.live_end {

@@ -54,6 +54,9 @@ fn empty_state() -> GameState {
         yaku: [0u32; 2],
         rounds: 0u32,
         steps: 0u32,
+        win_yaku: [0u32; 8],
+        win_score: [0u32; 8],
+        draw_kind: 0u32,
     }
 }
 

@@ -47,6 +47,16 @@ const EVENT_ABORTIVE_DRAW: u32 = 8;
 const EVENT_GAME_OVER: u32 = 16;
 const EVENT_NAGASHI: u32 = 32;
 
+// How a round ended without a win (GameState.draw_kind, low byte); the tenpai seats follow in
+// bits 8..11 and, for nagashi, the nagashi seats in bits 12..15.
+const DRAW_EXHAUSTIVE: u32 = 1;
+const DRAW_NAGASHI: u32 = 2;
+const DRAW_KYUUSHU: u32 = 3;
+const DRAW_FOUR_RIICHI: u32 = 4;
+const DRAW_TRIPLE_RON: u32 = 5;
+const DRAW_FOUR_KANS: u32 = 6;
+const DRAW_FOUR_WINDS: u32 = 7;
+
 // The continuations of a step (see `run_tasks`): each piece of the game that can follow an action
 // runs from one place, so the GPU compiler inlines each heavy function once.
 const TASK_DONE: u32 = 0;
@@ -86,6 +96,23 @@ pub struct ResetInput {
     pub penalty: f32,
     // 1: a finished game is replaced by a new one (next seed) in the same step.
     pub auto_reset: u32,
+}
+
+// A deal forced on a game in progress (log replay, tests): the next round is played from this
+// table and wall instead of the one the game reached by itself.
+#[derive(Clone, Copy)]
+#[repr(C)]
+pub struct DealInput {
+    // 1: deal; 0: leave this game as it is.
+    pub deal: u32,
+    // Round (0 = East 1, 4 = South 1, ...), dealer seat, honba and riichi sticks on the table.
+    pub round: u32,
+    pub dealer: u32,
+    pub honba: u32,
+    pub sticks: u32,
+    pub scores: [i32; 4],
+    // Tile values in dealing order, as in ResetInput.
+    pub wall: [u32; 136],
 }
 
 #[derive(Clone, Copy)]
@@ -185,6 +212,14 @@ pub struct GameState {
     pub yaku: [u32; 2],
     pub rounds: u32,
     pub steps: u32,
+    // What the last settlement scored, per winning seat (valid for the seats in `winners`): the
+    // yaku bits (2 words); han | fu << 8 | yakuman << 16 | concealed << 24; dora | aka << 8 |
+    // ura << 16. Written only when a hand wins, so the hot path pays nothing for it; hosts read it
+    // (log replay).
+    pub win_yaku: [u32; 8],
+    pub win_score: [u32; 8],
+    // DRAW_* of the last round that ended without a win, with its tenpai / nagashi seats.
+    pub draw_kind: u32,
 }
 
 fn get4(words: [u32; 20], seat: u32, t: u32) -> u32 {

@@ -133,6 +133,28 @@ pub fn game_step(s: &mut GameState, action: u32) {
     s.mask = compute_mask(s);
 }
 
+// Replaces the round a game is about to play with the given table and wall (log replay: each
+// logged round is dealt from its own wall). A finished game, or `deal == 0`, is left alone.
+pub fn game_deal(s: &mut GameState, inp: DealInput) {
+    if inp.deal == 0u32 || s.phase == PHASE_OVER {
+        return;
+    }
+    s.round = inp.round;
+    s.dealer = inp.dealer % 4u32;
+    s.honba = inp.honba;
+    s.sticks = inp.sticks;
+    s.scores = inp.scores;
+    s.rewards = [0i32; 4];
+    s.events = 0u32;
+    s.winners = 0u32;
+    s.deal_in = 0u32;
+    s.yaku = [0u32; 2];
+    s.illegal = 0u32;
+    s.terminated = 0u32;
+    start_round(s, inp.wall);
+    s.mask = compute_mask(s);
+}
+
 pub fn game_view(s: GameState) -> StepView {
     let mut rewards: [f32; 4] = [0.0f32; 4];
     for p in 0u32..4u32 {

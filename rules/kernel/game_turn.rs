@@ -246,6 +246,7 @@ fn do_turn_action(s: &mut GameState, a: u32) -> u32 {
         return TASK_TSUMO;
     }
     if a == ACTION_KYUUSHU {
+        s.draw_kind = DRAW_KYUUSHU;
         return TASK_ABORTIVE;
     }
     do_self_kan(s, a - ACTION_SELF_KAN)

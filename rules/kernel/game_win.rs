@@ -121,6 +121,10 @@ fn note_win(s: &mut GameState, seat: u32, out: ScoreOutput) {
     s.winners |= 1u32 << seat;
     s.yaku[0] |= out.yaku_lo;
     s.yaku[1] |= out.yaku_hi;
+    s.win_yaku[(seat * 2u32) as usize] = out.yaku_lo;
+    s.win_yaku[(seat * 2u32 + 1u32) as usize] = out.yaku_hi;
+    s.win_score[(seat * 2u32) as usize] = out.han | (out.fu << 8u32) | (out.yakuman << 16u32) | (out.concealed << 24u32);
+    s.win_score[(seat * 2u32 + 1u32) as usize] = out.dora | (out.aka << 8u32) | (out.ura << 16u32);
 }
 
 // Pays a ron; `first` is the winner nearest the discarder, who also takes honba and sticks.
@@ -199,6 +203,7 @@ fn settle_exhaustive_draw(s: &mut GameState) -> bool {
             }
         }
         s.events |= EVENT_NAGASHI;
+        s.draw_kind = DRAW_NAGASHI | (tenpai << 8u32) | (nagashi << 12u32);
     } else if n_tenpai > 0u32 && n_tenpai < 4u32 {
         let gain: u32 = 3000u32 / n_tenpai;
         let loss: u32 = 3000u32 / (4u32 - n_tenpai);
@@ -211,6 +216,9 @@ fn settle_exhaustive_draw(s: &mut GameState) -> bool {
                 s.rewards[p as usize] -= (loss / 100u32) as i32;
             }
         }
+    }
+    if nagashi == 0u32 {
+        s.draw_kind = DRAW_EXHAUSTIVE | (tenpai << 8u32);
     }
     s.events |= EVENT_EXHAUSTIVE_DRAW;
     ((tenpai >> s.dealer) & 1u32) != 0u32

@@ -12,11 +12,15 @@
 //! let step = env.step(&actions).unwrap();
 //! ```
 
+mod table;
+
 use rayon::prelude::*;
 
 use crate::env_gpu::GpuEnv;
 use crate::gpu::{Gpu, GpuError};
 use crate::Variant;
+
+pub use table::{Deal, DrawKind, DrawRecord, Table, WinRecord};
 
 /// How long one game lasts (the kernel's `MODE_*`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -438,7 +442,13 @@ impl Env {
             v::NUM_ACTIONS,
         ));
         let backing = match gpu {
-            Some(gpu) => Backing::Gpu(Box::new(GpuEnv::new(gpu, variant, b, words)?)),
+            Some(gpu) => Backing::Gpu(Box::new(GpuEnv::new(
+                gpu,
+                variant,
+                b,
+                words,
+                table::gpu_deal_words(variant),
+            )?)),
             None => {
                 let pool = match config.threads {
                     Some(n) if n > 1 => Some(

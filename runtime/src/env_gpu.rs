@@ -1,7 +1,8 @@
 //! The GPU side of [`crate::env::Env`]: the B game states live in one storage buffer on the device.
 //! A reset uploads the `ResetInput`s and runs `game_new_main` into the state buffer; a step
 //! uploads B action ids, runs `game_step_main` on the states in place, then `game_view_main`; only
-//! the `StepView`s come back.
+//! the `StepView`s come back. A forced deal (log replay) uploads `DealInput`s and runs
+//! `game_deal_main` on the states in place.
 
 use crate::gpu::{groups, EntrySpec, Gpu, GpuError};
 use crate::Variant;
@@ -9,13 +10,15 @@ use crate::Variant;
 const NEW: &str = "game_new_main";
 const VIEW: &str = "game_view_main";
 const STEP: &str = "game_step_main";
+const DEAL: &str = "game_deal_main";
 
-/// The three passes, made on first use (a driver may take long to compile the step pipeline).
+/// The passes, made on first use (a driver may take long to compile the step pipeline).
 #[derive(Clone, Copy)]
 enum Stage {
     New = 0,
     Step = 1,
     View = 2,
+    Deal = 3,
 }
 
 struct Pass {
@@ -31,10 +34,13 @@ pub(crate) struct GpuEnv {
     states: wgpu::Buffer,
     reset_inputs: wgpu::Buffer,
     actions: wgpu::Buffer,
+    /// Made on the first forced deal: most envs never use it.
+    deal_inputs: Option<wgpu::Buffer>,
+    deal_words: usize,
     views_buffer: wgpu::Buffer,
     view_readback: wgpu::Buffer,
     wgsl: &'static str,
-    passes: [Option<Pass>; 3],
+    passes: [Option<Pass>; 4],
     /// The last views read back (StepView words of every env).
     views: Vec<u32>,
 }
@@ -45,6 +51,7 @@ impl GpuEnv {
         variant: Variant,
         batch: usize,
         (reset_words, state_words, view_words): (usize, usize, usize),
+        deal_words: usize,
     ) -> Result<GpuEnv, GpuError> {
         let wgsl = with_variant!(variant, v => v::WGSL);
         let words = |n: usize| (batch * n * 4) as u64;
@@ -81,10 +88,12 @@ impl GpuEnv {
             states,
             reset_inputs,
             actions,
+            deal_inputs: None,
+            deal_words,
             views_buffer: views,
             view_readback,
             wgsl,
-            passes: [None, None, None],
+            passes: [None, None, None, None],
             views: Vec::with_capacity(batch * view_words),
         })
     }
@@ -105,6 +114,12 @@ impl GpuEnv {
             Stage::New => (EntrySpec::map(NEW), &self.reset_inputs, &self.states),
             Stage::Step => (EntrySpec::update(STEP), &self.states, &self.actions),
             Stage::View => (EntrySpec::map(VIEW), &self.states, &self.views_buffer),
+            Stage::Deal => {
+                let Some(deals) = &self.deal_inputs else {
+                    unreachable!("`deal` makes the buffer before the pass")
+                };
+                (EntrySpec::update(DEAL), &self.states, deals)
+            }
         };
         let (pipeline, layout) = self.gpu.pipeline(self.wgsl, spec);
         let bind_group = self.gpu.bind_group(&layout, spec, first, second);
@@ -151,6 +166,22 @@ impl GpuEnv {
             .queue()
             .write_buffer(&self.actions, 0, bytemuck::cast_slice(actions));
         self.run(Stage::Step)
+    }
+
+    /// Deals the rounds of `inputs` (`DealInput` words of every env; `deal == 0` leaves an env alone).
+    pub(crate) fn deal(&mut self, inputs: &[u32]) -> Result<&[u32], GpuError> {
+        if self.deal_inputs.is_none() {
+            self.deal_inputs = Some(self.gpu.device().create_buffer(&wgpu::BufferDescriptor {
+                label: Some("rinshan deal inputs"),
+                size: (self.batch * self.deal_words * 4) as u64,
+                usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            }));
+        }
+        if let Some(deals) = &self.deal_inputs {
+            self.gpu.queue().write_buffer(deals, 0, bytemuck::cast_slice(inputs));
+        }
+        self.run(Stage::Deal)
     }
 
     /// Every env's `GameState` words, read back from the device.

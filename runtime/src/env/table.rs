@@ -1,0 +1,216 @@
+//! What a host can read and force about the table of each game beyond a step's flat outputs: the
+//! round, dealer, honba, sticks and scores, what the last settlement scored (han, fu, yaku, dora)
+//! and how the last drawn round ended; and a forced deal of the next round (log replay).
+
+use super::{check_wall, CpuEnv, Env, EnvError};
+use crate::Variant;
+
+/// The table of one game, read from its state.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Table {
+    /// 0 = East 1, 4 = South 1, 8 = West 1.
+    pub round: u32,
+    pub dealer: u32,
+    pub honba: u32,
+    /// Riichi sticks on the table.
+    pub sticks: u32,
+    pub scores: [i32; 4],
+    /// Rounds finished in this game.
+    pub rounds: u32,
+    /// The game has ended (its last step reported `terminated`; with auto-reset, the step that
+    /// ended it).
+    pub over: bool,
+    /// What each seat's last winning hand scored. Only the seats of the step's `winners` are
+    /// fresh: a record stays until that seat wins again.
+    pub wins: [WinRecord; 4],
+    /// How the last round without a win ended; fresh when the step's events say a draw.
+    pub draw: DrawRecord,
+}
+
+/// A scored winning hand.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct WinRecord {
+    /// Yaku bits (ids as in [`super::yaku_names`]).
+    pub yaku: [u32; 2],
+    /// Han of yaku and dora (0 for a yakuman hand).
+    pub han: u32,
+    pub fu: u32,
+    /// Yakuman weight (0 = none, 2 = double ...).
+    pub yakuman: u32,
+    /// No meld was called (closed kans allowed): each yaku counts its closed han.
+    pub concealed: bool,
+    pub dora: u32,
+    pub aka: u32,
+    pub ura: u32,
+}
+
+impl WinRecord {
+    /// Yaku ids of the hand, in increasing order.
+    pub fn yaku_ids(&self) -> impl Iterator<Item = u32> + '_ {
+        (0..64u32).filter(move |i| self.yaku[(i / 32) as usize] >> (i % 32) & 1 == 1)
+    }
+}
+
+/// How a round ended without a win.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum DrawKind {
+    /// The wall ran out (ryuukyoku).
+    Exhaustive,
+    /// The wall ran out and nagashi mangan was paid.
+    Nagashi,
+    /// Nine terminals and honors declared (kyuushu kyuuhai).
+    Kyuushu,
+    FourRiichi,
+    TripleRon,
+    FourKans,
+    FourWinds,
+}
+
+/// The last drawn round of a game.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct DrawRecord {
+    /// `None` before any round of the game ended in a draw.
+    pub kind: Option<DrawKind>,
+    /// Seats tenpai at an exhaustive draw.
+    pub tenpai: [bool; 4],
+    /// Seats paid nagashi mangan.
+    pub nagashi: [bool; 4],
+}
+
+impl DrawRecord {
+    fn decode(word: u32) -> DrawRecord {
+        let kind = match word & 255 {
+            1 => Some(DrawKind::Exhaustive),
+            2 => Some(DrawKind::Nagashi),
+            3 => Some(DrawKind::Kyuushu),
+            4 => Some(DrawKind::FourRiichi),
+            5 => Some(DrawKind::TripleRon),
+            6 => Some(DrawKind::FourKans),
+            7 => Some(DrawKind::FourWinds),
+            _ => None,
+        };
+        DrawRecord {
+            kind,
+            tenpai: std::array::from_fn(|p| word >> (8 + p) & 1 == 1),
+            nagashi: std::array::from_fn(|p| word >> (12 + p) & 1 == 1),
+        }
+    }
+}
+
+/// The table and wall a forced deal starts a round from (see [`Env::deal`]).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Deal {
+    /// 0 = East 1, 4 = South 1, 8 = West 1.
+    pub round: u32,
+    pub dealer: u32,
+    pub honba: u32,
+    pub sticks: u32,
+    pub scores: [i32; 4],
+    /// Tile values in dealing order, as for [`Env::reset_with_walls`].
+    pub wall: [u8; 136],
+}
+
+impl CpuEnv {
+    fn deal(&mut self, variant: Variant, inputs: &[u32]) {
+        with_variant!(variant, v => {
+            let ins: &[v::DealInput] = bytemuck::cast_slice(inputs);
+            let sts: &mut [v::GameState] = bytemuck::cast_slice_mut(&mut self.states);
+            let vws: &mut [v::StepView] = bytemuck::cast_slice_mut(&mut self.views);
+            for ((s, w), i) in sts.iter_mut().zip(vws.iter_mut()).zip(ins) {
+                if i.deal != 0 {
+                    v::game_deal(s, *i);
+                    *w = v::game_view(*s);
+                }
+            }
+        })
+    }
+}
+
+/// Words of the variant's `DealInput`.
+fn deal_words(variant: Variant) -> usize {
+    with_variant!(variant, v => std::mem::size_of::<v::DealInput>() / 4)
+}
+
+pub(super) fn gpu_deal_words(variant: Variant) -> usize {
+    deal_words(variant)
+}
+
+impl Env {
+    /// Starts the next round of the envs given a `Some` from that table and wall instead of the
+    /// one each game reached by itself (log replay deals every logged round from its own wall).
+    /// A finished game is left as it is. Returns the views after the deal.
+    pub fn deal(&mut self, deals: &[Option<Deal>]) -> Result<&super::Step, EnvError> {
+        self.check_len("deals", deals.len())?;
+        let variant = self.variant();
+        for (env, d) in deals.iter().enumerate() {
+            let Some(d) = d else { continue };
+            check_wall(variant, &d.wall).map_err(|reason| EnvError::BadWall { env, reason })?;
+            if d.dealer > 3 {
+                return Err(EnvError::BadDealer { env, dealer: d.dealer });
+            }
+        }
+        let mut words = vec![0u32; deals.len() * deal_words(variant)];
+        with_variant!(variant, v => {
+            let ins: &mut [v::DealInput] = bytemuck::cast_slice_mut(&mut words);
+            for (inp, d) in ins.iter_mut().zip(deals) {
+                if let Some(d) = d {
+                    *inp = v::DealInput {
+                        deal: 1,
+                        round: d.round,
+                        dealer: d.dealer,
+                        honba: d.honba,
+                        sticks: d.sticks,
+                        scores: d.scores,
+                        wall: d.wall.map(u32::from),
+                    };
+                }
+            }
+        });
+        match &mut self.backing {
+            super::Backing::Cpu(cpu) => {
+                cpu.deal(variant, &words);
+                self.step.fill(variant, &cpu.views);
+            }
+            super::Backing::Gpu(gpu) => {
+                let views = gpu.deal(&words)?;
+                self.step.fill(variant, views);
+            }
+        }
+        Ok(&self.step)
+    }
+
+    /// The table of every env (read back from the device on the GPU backend).
+    pub fn tables(&self) -> Result<Vec<Table>, EnvError> {
+        let words = self.try_states_words()?;
+        let variant = self.variant();
+        Ok(with_variant!(variant, v => {
+            let states: &[v::GameState] = bytemuck::cast_slice(&words);
+            states
+                .iter()
+                .map(|s| Table {
+                    round: s.round,
+                    dealer: s.dealer,
+                    honba: s.honba,
+                    sticks: s.sticks,
+                    scores: s.scores,
+                    rounds: s.rounds,
+                    over: s.terminated != 0,
+                    wins: std::array::from_fn(|p| {
+                        let (score, extra) = (s.win_score[2 * p], s.win_score[2 * p + 1]);
+                        WinRecord {
+                            yaku: [s.win_yaku[2 * p], s.win_yaku[2 * p + 1]],
+                            han: score & 255,
+                            fu: score >> 8 & 255,
+                            yakuman: score >> 16 & 255,
+                            concealed: score >> 24 & 1 == 1,
+                            dora: extra & 255,
+                            aka: extra >> 8 & 255,
+                            ura: extra >> 16,
+                        }
+                    }),
+                    draw: DrawRecord::decode(s.draw_kind),
+                })
+                .collect()
+        }))
+    }
+}
