@@ -242,6 +242,11 @@ fn resolve_claims(s: &mut GameState) -> u32 {
     }
     s.task_seat = from;
     if kan != 0u32 {
+        // The kan stands: it breaks every ippatsu (a hand that robbed it kept its ippatsu; Tenhou
+        // scores riichi + ippatsu + chankan).
+        for p in 0u32..4u32 {
+            s.seat_flags[p as usize] &= !SEAT_IPPATSU;
+        }
         clear_claims(s);
         return TASK_REPLACEMENT;
     }

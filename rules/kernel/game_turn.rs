@@ -195,9 +195,7 @@ fn take_all_of_type(s: &mut GameState, p: u32, t: u32, n: u32) -> u32 {
 fn do_self_kan(s: &mut GameState, t: u32) -> u32 {
     let p: u32 = s.current;
     reveal_pending_dora(s);
-    for q in 0u32..4u32 {
-        s.seat_flags[q as usize] &= !SEAT_IPPATSU;
-    }
+    // Ippatsu ends once the kan stands (see `resolve_claims`): a chankan still counts it.
     s.uninterrupted = 0u32;
     s.drawn = NO_TILE_VALUE;
     if hand_count(s, p, t) == 4u32 {

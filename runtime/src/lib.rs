@@ -8,6 +8,7 @@
 //! * [`hand`]     — shanten and hand scoring on the CPU, one hand or a batch
 //! * [`gpu`]      — the same kernels on a GPU through wgpu
 //! * [`env`]      — the batched game environment (reset, step, masks, rewards) on the CPU or the GPU
+//! * [`tenhou`]   — tenhou.net/6 logs: reading them and replaying them through the red variant
 
 include!(concat!(env!("OUT_DIR"), "/dispatch.rs"));
 
@@ -25,6 +26,7 @@ pub mod gpu;
 pub mod hand;
 pub mod notation;
 pub mod random;
+pub mod tenhou;
 
 pub use generated::Variant;
 

@@ -192,3 +192,64 @@ fn selfplay_rejects_bad_options() {
         assert!(err.contains(needle), "{args:?}: {err}");
     }
 }
+
+const LOGS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/data/tenhou");
+
+#[test]
+fn replay_of_the_shared_logs_agrees_everywhere() {
+    let out = rinshan(&["replay", LOGS]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{text}\n{}", String::from_utf8_lossy(&out.stderr));
+    assert!(text.contains("replayed 21 games"), "{text}");
+    assert!(
+        text.contains("every round and every win agrees with the logs"),
+        "{text}"
+    );
+    let v = json(&rinshan(&["replay", LOGS, "--json"]));
+    assert_eq!(v["all_agree"], true);
+    assert_eq!(v["report"]["rounds"], 232);
+    assert_eq!(v["report"]["rounds_replayed"], 232);
+    assert_eq!(v["report"]["mismatches"], serde_json::json!([]));
+}
+
+#[test]
+fn replay_lists_each_mismatch_with_file_round_and_step() {
+    let dir = std::env::temp_dir().join(format!("rinshan-replay-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let source = std::fs::read_to_string(format!("{LOGS}/2010081709gm-00a9-0000-fe3371ad.json")).expect("log");
+    // East 1: a 7700 ron from the seat whose riichi stick went too (-8700 in all); the edited
+    // result says 8700 for the ron, so the log has -9700 for that seat.
+    let edited = source.replacen("[0,8700,-7700,0]", "[0,8700,-8700,0]", 1);
+    let file = dir.join("edited.json");
+    std::fs::write(&file, edited).expect("write");
+    let out = rinshan(&["replay", file.to_str().expect("utf-8 path")]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{text}");
+    assert!(
+        text.contains(
+            "edited.json:1 (East 1, 0 honba), step 89: score changes: log says [0, 8700, -9700, 0]; rinshan says [0, 8700, -8700, 0]"
+        ),
+        "{text}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn replay_rejects_unreadable_logs_with_exit_2() {
+    let out = rinshan(&["replay", "/no/such/log.json"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("/no/such/log.json"));
+    let dir = std::env::temp_dir().join(format!("rinshan-replay-bad-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let file = dir.join("bad.json");
+    std::fs::write(&file, "{\"log\": [[[0,0,0]]]}\n").expect("write");
+    let out = rinshan(&["replay", file.to_str().expect("utf-8 path")]);
+    assert_eq!(out.status.code(), Some(2));
+    let text = format!(
+        "{}{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(text.contains("bad.json: line 1"), "{text}");
+    std::fs::remove_dir_all(&dir).ok();
+}

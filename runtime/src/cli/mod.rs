@@ -1,6 +1,7 @@
 //! Command-line front end. Each subcommand lives in its own module.
 
 mod bench;
+mod replay;
 mod score;
 mod selfplay;
 mod shanten;
@@ -48,6 +49,8 @@ enum Command {
     Score(score::Args),
     /// Random-policy self-play: speed and game statistics, e.g. `rinshan selfplay --games 1000`
     Selfplay(selfplay::Args),
+    /// Replay tenhou.net/6 logs through the red variant and compare every round, e.g. `rinshan replay logs/`
+    Replay(replay::Args),
     /// Benchmarks: `bench hands` (shanten, scoring), `bench env` (environment steps by batch size)
     Bench {
         #[command(subcommand)]
@@ -60,6 +63,7 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
         Command::Shanten(a) => shanten::run(a),
         Command::Score(a) => score::run(a),
         Command::Selfplay(a) => selfplay::run(a),
+        Command::Replay(a) => replay::run(a),
         Command::Bench { what } => bench::run(what),
     }
 }

@@ -1,0 +1,318 @@
+//! The result of a round (element 16): `["和了", deltas, info, deltas, info, ..]` with one pair per
+//! winner, or a draw `["流局", deltas]` / `["九種九牌"]`. A win's info is
+//! `[winner, from, pao, "30符4飜7700点", "混一色(2飜)", ..]`.
+
+use serde_json::Value;
+
+use super::{numbers, show};
+
+/// How a round ended without a win.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum DrawKind {
+    /// 流局: the wall ran out.
+    Exhaustive,
+    /// 全員聴牌
+    AllTenpai,
+    /// 全員不聴
+    NoTenpai,
+    /// 流し満貫
+    Nagashi,
+    /// 九種九牌
+    Kyuushu,
+    /// 四家立直
+    FourRiichi,
+    /// 三家和了
+    TripleRon,
+    /// 四槓散了
+    FourKans,
+    /// 四風連打
+    FourWinds,
+}
+
+const DRAW_KINDS: [(&str, DrawKind); 9] = [
+    ("流局", DrawKind::Exhaustive),
+    ("全員聴牌", DrawKind::AllTenpai),
+    ("全員不聴", DrawKind::NoTenpai),
+    ("流し満貫", DrawKind::Nagashi),
+    ("九種九牌", DrawKind::Kyuushu),
+    ("四家立直", DrawKind::FourRiichi),
+    ("三家和了", DrawKind::TripleRon),
+    ("四槓散了", DrawKind::FourKans),
+    ("四風連打", DrawKind::FourWinds),
+];
+
+impl DrawKind {
+    /// The name Tenhou writes, e.g. `流局`.
+    pub fn tenhou_name(self) -> &'static str {
+        DRAW_KINDS
+            .iter()
+            .find(|(_, kind)| *kind == self)
+            .map_or("", |(name, _)| name)
+    }
+}
+
+/// A limit hand named in the points text.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Limit {
+    Mangan,
+    Haneman,
+    Baiman,
+    Sanbaiman,
+    Yakuman,
+}
+
+const LIMITS: [(&str, Limit); 7] = [
+    ("満貫", Limit::Mangan),
+    ("跳満", Limit::Haneman),
+    ("倍満", Limit::Baiman),
+    ("三倍満", Limit::Sanbaiman),
+    ("役満", Limit::Yakuman),
+    // Converters from other sites write these two.
+    ("数え役満", Limit::Yakuman),
+    ("切り上げ満貫", Limit::Mangan),
+];
+
+/// What a yaku is worth: han, or a number of yakuman.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum YakuHan {
+    Han(u32),
+    Yakuman(u32),
+}
+
+/// One yaku of a win, dora included.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Yaku {
+    /// Our name (as in `rules/yaku.toml`), or `dora`, `aka`, `ura`.
+    pub name: &'static str,
+    pub han: YakuHan,
+}
+
+/// One winner's share of a result.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Win {
+    /// Score changes by seat, sticks and honba included.
+    pub deltas: [i32; 4],
+    pub winner: usize,
+    /// The seat that dealt in, or the winner for a tsumo.
+    pub from: usize,
+    /// The seat liable for a yakuman (pao), or the winner when nobody is.
+    pub pao: usize,
+    pub tsumo: bool,
+    /// From the points text when it gives fu and han (not for limit hands).
+    pub fu: Option<u32>,
+    pub han: Option<u32>,
+    pub limit: Option<Limit>,
+    /// The points text as written, e.g. `30符4飜7700点`, `満貫2000-4000点`, `40符3飜2600点∀`.
+    pub points: String,
+    pub yaku: Vec<Yaku>,
+}
+
+/// How a round ended.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Outcome {
+    /// One win, or more on a multiple ron, in the log's order.
+    Wins(Vec<Win>),
+    /// `deltas` are the tenpai payments (or nagashi mangan), summed when the log lists several;
+    /// `None` when the log gives none.
+    Draw { kind: DrawKind, deltas: Option<[i32; 4]> },
+}
+
+/// Tenhou's yaku names and ours.
+const YAKU: [(&str, &str); 56] = [
+    ("門前清自摸和", "menzen_tsumo"),
+    ("立直", "riichi"),
+    ("一発", "ippatsu"),
+    ("槍槓", "chankan"),
+    ("嶺上開花", "rinshan"),
+    ("海底摸月", "haitei"),
+    ("河底撈魚", "houtei"),
+    ("平和", "pinfu"),
+    ("断幺九", "tanyao"),
+    ("一盃口", "iipeikou"),
+    ("自風 東", "yakuhai_seat_wind"),
+    ("自風 南", "yakuhai_seat_wind"),
+    ("自風 西", "yakuhai_seat_wind"),
+    ("自風 北", "yakuhai_seat_wind"),
+    ("場風 東", "yakuhai_round_wind"),
+    ("場風 南", "yakuhai_round_wind"),
+    ("場風 西", "yakuhai_round_wind"),
+    ("場風 北", "yakuhai_round_wind"),
+    ("役牌 白", "yakuhai_white"),
+    ("役牌 發", "yakuhai_green"),
+    ("役牌 中", "yakuhai_red"),
+    ("両立直", "double_riichi"),
+    ("七対子", "chiitoitsu"),
+    ("混全帯幺九", "chanta"),
+    ("一気通貫", "ittsu"),
+    ("三色同順", "sanshoku_doujun"),
+    ("三色同刻", "sanshoku_doukou"),
+    ("三槓子", "sankantsu"),
+    ("対々和", "toitoi"),
+    ("三暗刻", "sanankou"),
+    ("小三元", "shousangen"),
+    ("混老頭", "honroutou"),
+    ("二盃口", "ryanpeikou"),
+    ("純全帯幺九", "junchan"),
+    ("混一色", "honitsu"),
+    ("清一色", "chinitsu"),
+    ("天和", "tenhou"),
+    ("地和", "chiihou"),
+    ("大三元", "daisangen"),
+    ("四暗刻", "suuankou"),
+    ("四暗刻単騎", "suuankou_tanki"),
+    ("字一色", "tsuuiisou"),
+    ("緑一色", "ryuuiisou"),
+    ("清老頭", "chinroutou"),
+    ("九蓮宝燈", "chuuren"),
+    ("純正九蓮宝燈", "junsei_chuuren"),
+    ("国士無双", "kokushi"),
+    ("国士無双１３面", "kokushi_13"),
+    ("国士無双13面", "kokushi_13"),
+    ("大四喜", "daisuushi"),
+    ("小四喜", "shousuushi"),
+    ("四槓子", "suukantsu"),
+    ("ドラ", "dora"),
+    ("赤ドラ", "aka"),
+    ("裏ドラ", "ura"),
+    // Converters from other sites write the full name of double riichi.
+    ("ダブル立直", "double_riichi"),
+];
+
+/// Our name for a yaku Tenhou writes as `tenhou`.
+pub fn yaku_name(tenhou: &str) -> Option<&'static str> {
+    YAKU.iter().find(|(name, _)| *name == tenhou).map(|(_, ours)| *ours)
+}
+
+pub(super) fn parse_result(v: &Value) -> Result<Outcome, String> {
+    let items = v.as_array().ok_or_else(|| format!("{} is not a list", show(v)))?;
+    let (kind, rest) = items.split_first().ok_or("is empty")?;
+    let kind = kind
+        .as_str()
+        .ok_or_else(|| format!("{} is not a result kind", show(kind)))?;
+    if kind == "和了" {
+        if rest.is_empty() || rest.len() % 2 != 0 {
+            return Err(format!(
+                "和了 needs pairs of [deltas, info], found {} entries after it",
+                rest.len()
+            ));
+        }
+        let wins = rest.chunks(2).enumerate().map(|(i, pair)| match pair {
+            [deltas, info] => parse_win(deltas, info).map_err(|m| format!("win {i}: {m}")),
+            _ => Err(format!("win {i} has no info")),
+        });
+        return wins.collect::<Result<Vec<Win>, String>>().map(Outcome::Wins);
+    }
+    let known = DRAW_KINDS.iter().find(|(name, _)| *name == kind).map(|(_, k)| *k);
+    let names: Vec<&str> = DRAW_KINDS.iter().map(|(name, _)| *name).collect();
+    let kind = known.ok_or_else(|| format!("{kind:?} is not a known result (和了, {})", names.join(", ")))?;
+    let mut deltas = None;
+    for (i, item) in rest.iter().enumerate() {
+        let more = numbers::<4>(item).map_err(|m| format!("deltas {i}: {m}"))?;
+        let sum: [i32; 4] = deltas.unwrap_or_default();
+        deltas = Some(std::array::from_fn(|s| sum[s].saturating_add(more[s])));
+    }
+    Ok(Outcome::Draw { kind, deltas })
+}
+
+fn parse_win(deltas: &Value, info: &Value) -> Result<Win, String> {
+    let deltas = numbers::<4>(deltas).map_err(|m| format!("deltas: {m}"))?;
+    let items = info
+        .as_array()
+        .ok_or_else(|| format!("info {} is not a list", show(info)))?;
+    let seat = |i: usize, what: &str| -> Result<usize, String> {
+        let item = items
+            .get(i)
+            .ok_or_else(|| format!("info {} has no {what}", show(info)))?;
+        let seat = item.as_u64().filter(|&s| s < 4).and_then(|s| usize::try_from(s).ok());
+        seat.ok_or_else(|| format!("{what} {} is not a seat 0-3", show(item)))
+    };
+    let (winner, from, pao) = (seat(0, "winner")?, seat(1, "from")?, seat(2, "pao")?);
+    let points = items.get(3).and_then(Value::as_str);
+    let points = points.ok_or_else(|| format!("info {} has no points text", show(info)))?;
+    let Points { fu, han, limit } = parse_points(points).map_err(|m| format!("points {points:?}: {m}"))?;
+    let yaku = items
+        .iter()
+        .skip(4)
+        .map(parse_yaku)
+        .collect::<Result<Vec<Yaku>, String>>()?;
+    if let Some(han) = han {
+        let sum: u32 = yaku
+            .iter()
+            .map(|y| if let YakuHan::Han(h) = y.han { h } else { 0 })
+            .sum();
+        let yakuman = yaku.iter().any(|y| matches!(y.han, YakuHan::Yakuman(_)));
+        if sum != han || yakuman {
+            return Err(format!(
+                "the yaku add up to {sum} han, but the points text {points:?} says {han}"
+            ));
+        }
+    }
+    Ok(Win {
+        deltas,
+        winner,
+        from,
+        pao,
+        tsumo: winner == from,
+        fu,
+        han,
+        limit,
+        points: points.to_string(),
+        yaku,
+    })
+}
+
+/// Fu, han and limit of a points text: `30符4飜7700点`, `30符2飜500-1000点`, `40符3飜2600点∀`
+/// (a dealer's tsumo, each pays), `満貫8000点`.
+fn parse_points(text: &str) -> Result<Points, String> {
+    let (fu, han, limit, rest) = match text.split_once('符') {
+        Some((fu, rest)) => {
+            let (han, rest) = rest.split_once('飜').ok_or("it has 符 but no 飜")?;
+            (Some(number(fu)?), Some(number(han)?), None, rest)
+        }
+        None => {
+            let limit = LIMITS
+                .iter()
+                .find_map(|&(name, limit)| text.strip_prefix(name).map(|rest| (limit, rest)));
+            let (limit, rest) = limit.ok_or("it starts with neither fu and han nor 満貫, 跳満, 倍満, 三倍満, 役満")?;
+            (None, None, Some(limit), rest)
+        }
+    };
+    let amount = rest.strip_suffix('∀').unwrap_or(rest);
+    let amount = amount.strip_suffix('点').ok_or("it does not end in 点 (or 点∀)")?;
+    match amount.split_once('-') {
+        Some((child, dealer)) => number(child).and(number(dealer))?,
+        None => number(amount)?,
+    };
+    Ok(Points { fu, han, limit })
+}
+
+/// What a points text says besides the points.
+struct Points {
+    fu: Option<u32>,
+    han: Option<u32>,
+    limit: Option<Limit>,
+}
+
+fn number(digits: &str) -> Result<u32, String> {
+    let n = digits
+        .parse::<u32>()
+        .ok()
+        .filter(|_| digits.bytes().all(|b| b.is_ascii_digit()));
+    n.ok_or_else(|| format!("{digits:?} is not a number"))
+}
+
+/// `混一色(2飜)` or `大三元(役満)`.
+fn parse_yaku(v: &Value) -> Result<Yaku, String> {
+    let text = v.as_str().ok_or_else(|| format!("yaku {} is not a string", show(v)))?;
+    let split = text.strip_suffix(')').and_then(|t| t.rsplit_once('('));
+    let (name, value) = split.ok_or_else(|| format!("yaku {text:?} is not written NAME(N飜) or NAME(役満)"))?;
+    let han = match value {
+        "役満" => YakuHan::Yakuman(1),
+        _ => match value.strip_suffix('飜').map(number) {
+            Some(Ok(han)) => YakuHan::Han(han),
+            _ => return Err(format!("yaku {text:?}: {value:?} is neither N飜 nor 役満")),
+        },
+    };
+    let name = yaku_name(name).ok_or_else(|| format!("unknown yaku name {name:?} in {text:?}"))?;
+    Ok(Yaku { name, han })
+}

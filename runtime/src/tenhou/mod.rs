@@ -1,0 +1,13 @@
+//! Tenhou game records, and replaying them through the red variant.
+//!
+//! * [`log`]    — reads tenhou.net/6 JSON logs (one record per line, or one whole game) into typed
+//!   rounds: starting hands, draws and calls, discards and kans, and the result with its yaku.
+//! * [`plan`]   — a logged round in the order of play: the wall it was dealt from and its decisions
+//! * [`replay`] — drives the environment with the logged decisions and compares every round
+//!
+//! Tenhou's names, once: a round is a kyoku (`East 1` = East round, first dealer), honba are the
+//! repeat counters, riichi sticks are the 1000-point deposits; seat 0 is East 1's dealer.
+
+pub mod log;
+pub mod plan;
+pub mod replay;

@@ -1,0 +1,388 @@
+//! From one logged round to what the replayer feeds the engine: the wall the round was dealt from
+//! and the decisions in the order the game took them.
+//!
+//! A tenhou.net/6 round lists each seat's draws and discards separately; the order of play across
+//! seats follows from the rules of turn order: after a discard, a seat whose next "draw" is a
+//! call on that tile (pon or kan before chi) takes it, a ron on a seat's last discard ends the
+//! round, and otherwise the next seat draws. A kan is followed by a replacement draw from the
+//! dead wall. Walking the round this way gives the live draws and replacement tiles in wall order.
+
+use super::log::{Discard, Draw, DrawKind, Outcome, Round, Tile};
+use crate::generated::red as k;
+
+/// One decision of the logged game.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Move {
+    pub seat: usize,
+    /// Action id of the red variant.
+    pub action: u32,
+    /// A claim on a discard (or on a kan tile): the engine may ask other seats first.
+    pub claim: bool,
+    /// What the log says, for messages (`discard 5m`, `pon 7z from seat 2`).
+    pub what: String,
+}
+
+/// A round ready to replay.
+#[derive(Debug, Clone)]
+pub struct Plan {
+    /// Tile values in the engine's dealing order (`WALL_*` in rules/kernel/game_state.rs).
+    pub wall: [u8; 136],
+    pub moves: Vec<Move>,
+    /// Riichi sticks each seat put on the table (declarations whose discard was not ronned).
+    pub riichi_paid: [u32; 4],
+}
+
+/// Where the engine deals from (rules/kernel/game_state.rs: `WALL_*`).
+const LIVE_START: usize = 52;
+const LIVE_END: usize = 122;
+const DORA: usize = 122;
+const URA: usize = 127;
+const RINSHAN: usize = 132;
+
+/// Short tile names as players write them: `1m`..`9m`, `0m` for a red five, `1z`..`7z` for honors.
+pub fn tile_name(t: Tile) -> String {
+    let kind = t.kind();
+    let suit = ["m", "p", "s", "z"][(kind / 9) as usize];
+    let number = if t.is_red() { 0 } else { kind % 9 + 1 };
+    format!("{number}{suit}")
+}
+
+struct Walker<'a> {
+    round: &'a Round,
+    drawn: [usize; 4],
+    discarded: [usize; 4],
+    live: Vec<Tile>,
+    rinshan: Vec<Tile>,
+    moves: Vec<Move>,
+    riichi: [Option<usize>; 4],
+}
+
+impl<'a> Walker<'a> {
+    fn push(&mut self, seat: usize, action: u32, claim: bool, what: String) {
+        self.moves.push(Move {
+            seat,
+            action,
+            claim,
+            what,
+        });
+    }
+
+    /// Seat `p` draws (a replacement tile after a kan); `false` when its draws are used up.
+    fn draw(&mut self, p: usize, replacement: bool) -> Result<bool, String> {
+        let Some(d) = self.round.draws[p].get(self.drawn[p]) else {
+            return Ok(false);
+        };
+        let Draw::Tile(t) = d else {
+            return Err(format!(
+                "draws of seat {p}, entry {}: seat {p} is to draw here, but the log has a call",
+                self.drawn[p] + 1
+            ));
+        };
+        self.drawn[p] += 1;
+        if replacement {
+            self.rinshan.push(*t);
+        } else {
+            self.live.push(*t);
+        }
+        Ok(true)
+    }
+
+    /// The rons on the tile seat `p` just gave up (its last discard or kan), if the round ended so.
+    fn rons_on(&self, p: usize) -> Vec<usize> {
+        if self.discarded[p] != self.round.discards[p].len() {
+            return Vec::new();
+        }
+        match &self.round.outcome {
+            Outcome::Wins(wins) => {
+                let mut seats: Vec<usize> = wins
+                    .iter()
+                    .filter(|w| !w.tsumo && w.from == p)
+                    .map(|w| w.winner)
+                    .collect();
+                seats.sort_by_key(|&q| (q + 4 - p) % 4);
+                seats
+            }
+            Outcome::Draw {
+                kind: DrawKind::TripleRon,
+                ..
+            } => (1..4).map(|j| (p + j) % 4).collect(),
+            Outcome::Draw { .. } => Vec::new(),
+        }
+    }
+
+    /// A seat whose next draw entry calls tile `t` discarded by `p`: pon and kan first, then chi.
+    fn caller(&self, p: usize, t: Tile) -> Option<(usize, Draw)> {
+        let mut chi = None;
+        for j in 1..4 {
+            let q = (p + j) % 4;
+            let Some(d) = self.round.draws[q].get(self.drawn[q]) else {
+                continue;
+            };
+            match d {
+                Draw::Pon { called, from, .. } | Draw::OpenKan { called, from, .. }
+                    if from.seat_of(q) == p && called.code() == t.code() =>
+                {
+                    return Some((q, *d));
+                }
+                Draw::Chi { called, .. } if j == 1 && called.code() == t.code() => chi = Some((q, *d)),
+                _ => {}
+            }
+        }
+        chi
+    }
+
+    /// Plays seat `p`'s turn from its next discard entry on; returns the seat that draws next
+    /// (with `true` for a replacement draw), or `None` when the round ends.
+    fn turn(&mut self, mut p: usize) -> Result<Option<(usize, bool)>, String> {
+        loop {
+            let entry = self.round.discards[p].get(self.discarded[p]).copied();
+            let at = self.discarded[p] + 1;
+            let Some(entry) = entry else {
+                return self.end_of_turns(p).map(|()| None);
+            };
+            self.discarded[p] += 1;
+            let (tile, tsumogiri) = match entry {
+                Discard::Tile(t) => (Some(t), false),
+                Discard::Tsumogiri => (None, true),
+                Discard::Riichi(t) => {
+                    self.push(p, k::ACTION_RIICHI, false, "riichi".into());
+                    self.riichi[p] = Some(self.discarded[p]);
+                    (t, t.is_none())
+                }
+                Discard::AddedKan { added, .. } | Discard::ClosedKan { tiles: [added, ..] } => {
+                    let kind = if matches!(entry, Discard::AddedKan { .. }) {
+                        "added"
+                    } else {
+                        "closed"
+                    };
+                    self.push(
+                        p,
+                        k::ACTION_SELF_KAN + u32::from(added.kind()),
+                        false,
+                        format!("{kind} kan {}", tile_name(added)),
+                    );
+                    let rons = self.rons_on(p);
+                    if !rons.is_empty() {
+                        for q in rons {
+                            self.push(q, k::ACTION_RON, true, format!("ron (chankan) on {}", tile_name(added)));
+                        }
+                        return Ok(None);
+                    }
+                    return Ok(Some((p, true)));
+                }
+                Discard::Nothing => {
+                    return Err(format!(
+                        "discards of seat {p}, entry {at}: `0` stands only after an open kan"
+                    ))
+                }
+            };
+            let discarded = match (tile, tsumogiri) {
+                (Some(t), false) => {
+                    self.push(
+                        p,
+                        k::ACTION_DISCARD + u32::from(t.value()),
+                        false,
+                        format!("discard {}", tile_name(t)),
+                    );
+                    t
+                }
+                _ => {
+                    self.push(p, k::ACTION_TSUMOGIRI, false, "tsumogiri".into());
+                    match self.last_draw(p) {
+                        Some(t) => t,
+                        None => {
+                            return Err(format!(
+                                "discards of seat {p}, entry {at}: tsumogiri (60) without a drawn tile"
+                            ))
+                        }
+                    }
+                }
+            };
+            let rons = self.rons_on(p);
+            if !rons.is_empty() {
+                for q in rons {
+                    self.push(q, k::ACTION_RON, true, format!("ron on {}", tile_name(discarded)));
+                }
+                return Ok(None);
+            }
+            let Some((q, call)) = self.caller(p, discarded) else {
+                return Ok(Some(((p + 1) % 4, false)));
+            };
+            self.drawn[q] += 1;
+            let name = tile_name(discarded);
+            match call {
+                Draw::Chi { called, own } => {
+                    let (a, b) = (own[0].kind(), own[1].kind());
+                    let c = called.kind();
+                    let red = own.iter().any(|t| t.is_red());
+                    let (plain, reds, shape) = if a > c && b > c {
+                        (k::ACTION_CHI_LEFT, k::ACTION_CHI_LEFT_RED, "left")
+                    } else if a < c && b < c {
+                        (k::ACTION_CHI_RIGHT, k::ACTION_CHI_RIGHT_RED, "right")
+                    } else {
+                        (k::ACTION_CHI_MIDDLE, k::ACTION_CHI_MIDDLE_RED, "middle")
+                    };
+                    let action = if red { reds } else { plain };
+                    self.push(q, action, true, format!("chi ({shape}) {name} from seat {p}"));
+                }
+                Draw::Pon { own, .. } => {
+                    let action = if own.iter().any(|t| t.is_red()) {
+                        k::ACTION_PON_RED
+                    } else {
+                        k::ACTION_PON
+                    };
+                    self.push(q, action, true, format!("pon {name} from seat {p}"));
+                }
+                Draw::OpenKan { .. } => {
+                    self.push(q, k::ACTION_OPEN_KAN, true, format!("open kan {name} from seat {p}"));
+                    match self.round.discards[q].get(self.discarded[q]) {
+                        Some(Discard::Nothing) => self.discarded[q] += 1,
+                        _ => {
+                            return Err(format!(
+                                "discards of seat {q}, entry {}: an open kan is followed by `0`",
+                                self.discarded[q] + 1
+                            ))
+                        }
+                    }
+                    return Ok(Some((q, true)));
+                }
+                Draw::Tile(_) => unreachable!("`caller` returns calls only"),
+            }
+            p = q;
+        }
+    }
+
+    fn last_draw(&self, p: usize) -> Option<Tile> {
+        match self.round.draws[p].get(self.drawn[p].checked_sub(1)?) {
+            Some(Draw::Tile(t)) => Some(*t),
+            _ => None,
+        }
+    }
+
+    /// Seat `p` has no discard left on its turn: it won by tsumo or declared kyuushu.
+    fn end_of_turns(&mut self, p: usize) -> Result<(), String> {
+        match &self.round.outcome {
+            Outcome::Wins(wins) if wins.iter().any(|w| w.tsumo && w.winner == p) => {
+                self.push(p, k::ACTION_TSUMO, false, "tsumo".into());
+                Ok(())
+            }
+            Outcome::Draw {
+                kind: DrawKind::Kyuushu,
+                ..
+            } => {
+                self.push(p, k::ACTION_KYUUSHU, false, "kyuushu kyuuhai".into());
+                Ok(())
+            }
+            _ => Err(format!(
+                "discards of seat {p}: the log stops on seat {p}'s turn, but the round did not end by its tsumo or kyuushu"
+            )),
+        }
+    }
+}
+
+/// Walks `round` in the order of play and builds its wall.
+pub fn plan(round: &Round) -> Result<Plan, String> {
+    let mut w = Walker {
+        round,
+        drawn: [0; 4],
+        discarded: [0; 4],
+        live: Vec::new(),
+        rinshan: Vec::new(),
+        moves: Vec::new(),
+        riichi: [None; 4],
+    };
+    let mut next = Some((round.dealer(), false));
+    while let Some((p, replacement)) = next {
+        if !w.draw(p, replacement)? {
+            if replacement {
+                return Err(format!("draws of seat {p}: a kan with no replacement tile after it"));
+            }
+            break;
+        }
+        next = w.turn(p)?;
+    }
+    for p in 0..4 {
+        if w.drawn[p] != round.draws[p].len() || w.discarded[p] != round.discards[p].len() {
+            return Err(format!(
+                "seat {p}: {} of {} draws and {} of {} discards are reached in turn order; the rest cannot be placed",
+                w.drawn[p],
+                round.draws[p].len(),
+                w.discarded[p],
+                round.discards[p].len()
+            ));
+        }
+    }
+    let riichi_paid: [u32; 4] = std::array::from_fn(|p| match w.riichi[p] {
+        Some(at) => u32::from(at != round.discards[p].len() || w.rons_on(p).is_empty()),
+        None => 0,
+    });
+    Ok(Plan {
+        wall: build_wall(round, &w.live, &w.rinshan)?,
+        moves: w.moves,
+        riichi_paid,
+    })
+}
+
+/// Places the logged tiles where the engine reads them and fills the rest with the unused tiles.
+fn build_wall(round: &Round, live: &[Tile], rinshan: &[Tile]) -> Result<[u8; 136], String> {
+    if rinshan.len() > 4 || round.dora.len() > 5 || round.ura.len() > 5 {
+        return Err(format!(
+            "{} replacement draws, {} dora and {} ura indicators: at most 4, 5 and 5 fit the dead wall",
+            rinshan.len(),
+            round.dora.len(),
+            round.ura.len()
+        ));
+    }
+    if LIVE_START + live.len() > LIVE_END - rinshan.len() {
+        return Err(format!(
+            "{} live draws with {} kans: the live wall holds {}",
+            live.len(),
+            rinshan.len(),
+            LIVE_END - LIVE_START - rinshan.len()
+        ));
+    }
+    let mut slots: [Option<Tile>; 136] = [None; 136];
+    let dealer = round.dealer();
+    for j in 0..4 {
+        let hand = &round.hands[(dealer + j) % 4];
+        for (i, t) in hand.iter().enumerate().take(13) {
+            slots[j * 13 + i] = Some(*t);
+        }
+    }
+    let placed = [
+        (LIVE_START, live),
+        (DORA, round.dora.as_slice()),
+        (URA, round.ura.as_slice()),
+        (RINSHAN, rinshan),
+    ];
+    for (start, tiles) in placed {
+        for (i, t) in tiles.iter().enumerate() {
+            slots[start + i] = Some(*t);
+        }
+    }
+    // Every value's copies: four of each type, one of them red for the fives of the three suits.
+    let mut left = [4i32; 37];
+    for suit in 0..3 {
+        left[suit * 9 + 4] = 3;
+        left[34 + suit] = 1;
+    }
+    for t in slots.iter().flatten() {
+        let v = usize::from(t.value());
+        left[v] -= 1;
+        if left[v] < 0 {
+            return Err(format!(
+                "tile {} appears more often than the set holds (hands, draws and indicators together)",
+                tile_name(*t)
+            ));
+        }
+    }
+    let mut spare = (0..37u8).flat_map(|v| std::iter::repeat_n(v, left[usize::from(v)].max(0) as usize));
+    let mut wall = [0u8; 136];
+    for (i, slot) in slots.iter().enumerate() {
+        wall[i] = match slot {
+            Some(t) => t.value(),
+            None => spare.next().ok_or("more tiles placed than the wall holds")?,
+        };
+    }
+    Ok(wall)
+}

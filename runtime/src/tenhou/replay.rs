@@ -1,0 +1,592 @@
+//! Replays logged games through the red variant and compares every round with the log.
+//!
+//! All games of a replay run side by side, one env each, on either backend: each logged round is
+//! dealt from the wall [`super::plan`] rebuilds ([`Env::deal`]), the logged decisions are played
+//! when the engine asks the logged seat (a claim prompt the log does not take is passed), and when
+//! the engine ends the round its outcome (winners, han, fu, yaku, draw kind), score changes and
+//! the table it moves on to (round, honba, sticks) are compared with the log.
+
+use serde::Serialize;
+
+use super::log::{DrawKind as LogDraw, Game, Outcome, Round, Win, YakuHan};
+use super::plan::{plan, Move, Plan};
+use crate::env::{events, Backend, Config, Deal, DrawKind, Env, EnvError, Mode, Step, Table, WinRecord};
+use crate::generated::red as k;
+use crate::gpu::Gpu;
+use crate::Variant;
+
+/// One disagreement between a log and rinshan.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct Mismatch {
+    pub file: String,
+    /// 1-based line of the round in the file.
+    pub line: usize,
+    /// `East 1, 0 honba`.
+    pub round: String,
+    /// Engine steps into the round when it was found.
+    pub step: usize,
+    pub what: String,
+    pub log: String,
+    pub rinshan: String,
+}
+
+impl std::fmt::Display for Mismatch {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "{}:{} ({}), step {}: {}: log says {}; rinshan says {}",
+            self.file, self.line, self.round, self.step, self.what, self.log, self.rinshan
+        )
+    }
+}
+
+/// Totals of a replay.
+#[derive(Debug, Clone, Default, PartialEq, Eq, Serialize)]
+pub struct Report {
+    pub games: usize,
+    /// Games that ended exactly where their log ends.
+    pub games_ended_right: usize,
+    pub rounds: usize,
+    /// Rounds whose every logged decision was legal and taken, ending where the log ends.
+    pub rounds_replayed: usize,
+    pub actions: usize,
+    pub actions_accepted: usize,
+    /// Rounds whose score change of every seat matches the log.
+    pub score_changes_matching: usize,
+    /// Rounds whose next table (round, dealer, honba, sticks, scores) matches the next logged round.
+    pub tables_matching: usize,
+    pub tables: usize,
+    pub wins: usize,
+    /// Wins whose winner, han, fu and yaku (with their han) match.
+    pub wins_matching: usize,
+    pub draws: usize,
+    pub draws_matching: usize,
+    pub mismatches: Vec<Mismatch>,
+}
+
+impl Report {
+    /// Every count agrees: nothing was found wrong.
+    pub fn all_agree(&self) -> bool {
+        self.mismatches.is_empty()
+            && self.games_ended_right == self.games
+            && self.rounds_replayed == self.rounds
+            && self.actions_accepted == self.actions
+            && self.score_changes_matching == self.rounds
+            && self.tables_matching == self.tables
+            && self.wins_matching == self.wins
+            && self.draws_matching == self.draws
+    }
+}
+
+/// Where one game's replay stands.
+struct Run<'g> {
+    game: &'g Game,
+    /// The round being played (index into `game.rounds`).
+    round: usize,
+    plan: Option<Plan>,
+    next: usize,
+    steps: usize,
+    /// Engine score change of this round so far, in points.
+    change: [i64; 4],
+    finished: bool,
+}
+
+impl<'g> Run<'g> {
+    fn round_log(&self) -> &'g Round {
+        &self.game.rounds[self.round]
+    }
+
+    fn mismatch(&self, what: &str, log: impl Into<String>, rinshan: impl Into<String>) -> Mismatch {
+        let r = self.round_log();
+        Mismatch {
+            file: self.game.path.clone(),
+            line: r.line,
+            round: super::log::round_name(r.kyoku, r.honba),
+            step: self.steps,
+            what: what.into(),
+            log: log.into(),
+            rinshan: rinshan.into(),
+        }
+    }
+
+    /// Plans the current round (and the ones after it that cannot be planned are reported and
+    /// skipped); the deal to start it, or `None` when the log has no round left.
+    fn start_round(&mut self, report: &mut Report) -> Option<Deal> {
+        while self.round < self.game.rounds.len() {
+            let r = self.round_log();
+            report.rounds += 1;
+            self.next = 0;
+            self.steps = 0;
+            self.change = [0; 4];
+            match plan(r) {
+                Ok(p) => {
+                    report.actions += p.moves.len();
+                    let deal = Deal {
+                        round: r.kyoku,
+                        dealer: r.dealer() as u32,
+                        honba: r.honba,
+                        sticks: r.sticks,
+                        scores: r.scores,
+                        wall: p.wall,
+                    };
+                    self.plan = Some(p);
+                    return Some(deal);
+                }
+                Err(e) => {
+                    let m = self.mismatch("the log cannot be placed in turn order", e, "round not replayed");
+                    report.mismatches.push(m);
+                    self.round += 1;
+                }
+            }
+        }
+        self.finished = true;
+        None
+    }
+
+    /// The action for the engine's prompt, without consuming the move.
+    fn decide(&self, step: &Step, i: usize) -> Result<u32, Box<Mismatch>> {
+        let seat = step.current_player[i] as usize;
+        let mask = step.legal_action_mask[i];
+        let legal = |a: u32| mask[(a / 32) as usize] >> (a % 32) & 1 == 1;
+        let claim = legal(k::ACTION_PASS);
+        let moves = self.plan.as_ref().map_or(&[][..], |p| p.moves.as_slice());
+        let Some(m) = moves.get(self.next) else {
+            if claim {
+                return Ok(k::ACTION_PASS);
+            }
+            return Err(Box::new(self.mismatch(
+                "round end",
+                format!("the round ends here ({})", outcome_name(&self.round_log().outcome)),
+                format!("seat {seat} is still to act"),
+            )));
+        };
+        if claim && !(m.claim && m.seat == seat) {
+            return Ok(k::ACTION_PASS);
+        }
+        if m.seat != seat || m.claim != claim {
+            let asked = if claim { "a claim" } else { "its turn" };
+            return Err(Box::new(self.mismatch(
+                "turn order",
+                format!("seat {}: {}", m.seat, m.what),
+                format!("seat {seat} is asked for {asked}"),
+            )));
+        }
+        if !legal(m.action) {
+            return Err(Box::new(self.mismatch(
+                "illegal logged action",
+                format!("seat {}: {}", m.seat, m.what),
+                format!(
+                    "not legal; legal actions {:?}",
+                    step.legal_actions(i).collect::<Vec<_>>()
+                ),
+            )));
+        }
+        Ok(m.action)
+    }
+
+    /// Moves past the logged decision `action` of `seat` just played; `false` for a pass the log
+    /// does not list.
+    fn consume(&mut self, seat: usize, action: u32) -> bool {
+        let moves = self.plan.as_ref().map_or(&[][..], |p| p.moves.as_slice());
+        let taken = moves
+            .get(self.next)
+            .is_some_and(|m| m.seat == seat && m.action == action);
+        if taken {
+            self.next += 1;
+        }
+        taken
+    }
+}
+
+fn outcome_name(o: &Outcome) -> String {
+    match o {
+        Outcome::Wins(ws) => ws
+            .iter()
+            .map(|w| {
+                if w.tsumo {
+                    format!("tsumo by seat {}", w.winner)
+                } else {
+                    format!("ron by seat {} from seat {}", w.winner, w.from)
+                }
+            })
+            .collect::<Vec<_>>()
+            .join(", "),
+        Outcome::Draw { kind, .. } => format!("draw: {kind:?}"),
+    }
+}
+
+/// The yaku of an engine win as (name, han) in the log's terms, sorted; dora kinds with 0 han left out.
+fn engine_yaku(w: &WinRecord) -> Vec<(String, YakuHan)> {
+    let mut out: Vec<(String, YakuHan)> = w
+        .yaku_ids()
+        .map(|id| {
+            let i = id as usize;
+            let han = if k::YAKU_YAKUMAN[i] > 0 {
+                YakuHan::Yakuman(k::YAKU_YAKUMAN[i])
+            } else if w.concealed {
+                YakuHan::Han(k::YAKU_HAN_CLOSED[i])
+            } else {
+                YakuHan::Han(k::YAKU_HAN_OPEN[i])
+            };
+            (k::host::YAKU_NAMES[i].to_string(), han)
+        })
+        .collect();
+    for (name, n) in [("dora", w.dora), ("aka", w.aka), ("ura", w.ura)] {
+        if n > 0 {
+            out.push((name.to_string(), YakuHan::Han(n)));
+        }
+    }
+    out.sort_by(|a, b| a.0.cmp(&b.0));
+    out
+}
+
+fn log_yaku(w: &Win) -> Vec<(String, YakuHan)> {
+    let mut out: Vec<(String, YakuHan)> = w
+        .yaku
+        .iter()
+        .filter(|y| !matches!(y.han, YakuHan::Han(0)))
+        .map(|y| (y.name.to_string(), y.han))
+        .collect();
+    out.sort_by(|a, b| a.0.cmp(&b.0));
+    out
+}
+
+fn yaku_text(list: &[(String, YakuHan)]) -> String {
+    list.iter()
+        .map(|(n, h)| match h {
+            YakuHan::Han(x) => format!("{n} {x}"),
+            YakuHan::Yakuman(x) => format!("{n} yakuman x{x}"),
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// Compares one logged win with the engine's record of it; `None` when they agree.
+fn compare_win(w: &Win, r: &WinRecord) -> Option<(String, String)> {
+    let (ly, ey) = (log_yaku(w), engine_yaku(r));
+    let log_yakuman: u32 = ly
+        .iter()
+        .map(|(_, h)| if let YakuHan::Yakuman(x) = h { *x } else { 0 })
+        .sum();
+    let log_han: u32 = w.han.unwrap_or_else(|| {
+        ly.iter()
+            .map(|(_, h)| if let YakuHan::Han(x) = h { *x } else { 0 })
+            .sum()
+    });
+    let han_ok = if log_yakuman > 0 {
+        r.yakuman == log_yakuman
+    } else {
+        r.yakuman == 0 && r.han == log_han
+    };
+    let fu_ok = w.fu.is_none_or(|fu| fu == r.fu);
+    if han_ok && fu_ok && ly == ey {
+        return None;
+    }
+    let fu = |f: Option<u32>| f.map_or(String::new(), |f| format!("{f} fu "));
+    Some((
+        format!("seat {}: {}{} han [{}]", w.winner, fu(w.fu), log_han, yaku_text(&ly)),
+        format!(
+            "{}{} han{} [{}]",
+            fu(Some(r.fu)),
+            r.han,
+            if r.yakuman > 0 {
+                format!(" yakuman x{}", r.yakuman)
+            } else {
+                String::new()
+            },
+            yaku_text(&ey)
+        ),
+    ))
+}
+
+fn draw_matches(log: LogDraw, table: &Table) -> bool {
+    let tenpai = table.draw.tenpai.iter().filter(|&&t| t).count();
+    match (log, table.draw.kind) {
+        (LogDraw::Exhaustive, Some(DrawKind::Exhaustive)) => (1..4).contains(&tenpai),
+        (LogDraw::AllTenpai, Some(DrawKind::Exhaustive)) => tenpai == 4,
+        (LogDraw::NoTenpai, Some(DrawKind::Exhaustive)) => tenpai == 0,
+        (LogDraw::Nagashi, Some(DrawKind::Nagashi)) => true,
+        (LogDraw::Kyuushu, Some(DrawKind::Kyuushu)) => true,
+        (LogDraw::FourRiichi, Some(DrawKind::FourRiichi)) => true,
+        (LogDraw::TripleRon, Some(DrawKind::TripleRon)) => true,
+        (LogDraw::FourKans, Some(DrawKind::FourKans)) => true,
+        (LogDraw::FourWinds, Some(DrawKind::FourWinds)) => true,
+        _ => false,
+    }
+}
+
+/// What the engine reported for a finished round, for messages.
+fn engine_outcome(step: &Step, i: usize, table: &Table) -> String {
+    let ev = step.events[i];
+    if ev & (events::RON | events::TSUMO) != 0 {
+        let seats: Vec<usize> = (0..4).filter(|p| step.winners[i] >> p & 1 == 1).collect();
+        let how = if ev & events::TSUMO != 0 { "tsumo" } else { "ron" };
+        return format!("{how} by seats {seats:?}");
+    }
+    let tenpai: Vec<usize> = (0..4).filter(|&p| table.draw.tenpai[p]).collect();
+    format!("draw: {:?}, tenpai seats {tenpai:?}", table.draw.kind)
+}
+
+/// The score change of a round by the log: the changes its result lists less the riichi sticks
+/// paid; after the last round of a game, sticks left on the table go to the top seat (ties: the
+/// seat nearer East 1's dealer).
+fn log_change(r: &Round, plan: &Plan, last: bool) -> [i64; 4] {
+    let mut change = [0i64; 4];
+    let mut add = |d: &[i32; 4]| (0..4).for_each(|p| change[p] += i64::from(d[p]));
+    let won = match &r.outcome {
+        Outcome::Wins(ws) => {
+            ws.iter().for_each(|w| add(&w.deltas));
+            true
+        }
+        Outcome::Draw { deltas, .. } => {
+            deltas.iter().for_each(&mut add);
+            false
+        }
+    };
+    for (c, &paid) in change.iter_mut().zip(&plan.riichi_paid) {
+        *c -= 1000 * i64::from(paid);
+    }
+    if last && !won {
+        let sticks = i64::from(r.sticks) + plan.riichi_paid.iter().map(|&x| i64::from(x)).sum::<i64>();
+        let scores: [i64; 4] = std::array::from_fn(|p| i64::from(r.scores[p]) + change[p]);
+        let top = (0..4).fold(0, |best, p| if scores[p] > scores[best] { p } else { best });
+        change[top] += 1000 * sticks;
+    }
+    change
+}
+
+/// Compares the round `run` just finished with its log.
+fn finish_round(run: &mut Run, step: &Step, i: usize, table: &Table, report: &mut Report) {
+    let r = run.round_log();
+    let moves_left = run.plan.as_ref().map_or(0, |p| p.moves.len()) - run.next;
+    if moves_left == 0 {
+        report.rounds_replayed += 1;
+    } else {
+        let m = run.mismatch(
+            "round end",
+            format!("{moves_left} more decisions, then {}", outcome_name(&r.outcome)),
+            format!("the round ended: {}", engine_outcome(step, i, table)),
+        );
+        report.mismatches.push(m);
+    }
+    let ev = step.events[i];
+    match &r.outcome {
+        Outcome::Wins(ws) => {
+            let won_by: u32 = ws.iter().map(|w| 1u32 << w.winner).sum();
+            for w in ws {
+                report.wins += 1;
+                let tsumo_ok = if w.tsumo {
+                    ev & events::TSUMO != 0
+                } else {
+                    ev & events::RON != 0
+                };
+                if !tsumo_ok || step.winners[i] != won_by {
+                    let m = run.mismatch("winners", outcome_name(&r.outcome), engine_outcome(step, i, table));
+                    report.mismatches.push(m);
+                    continue;
+                }
+                match compare_win(w, &table.wins[w.winner]) {
+                    None => report.wins_matching += 1,
+                    Some((log, ours)) => {
+                        let m = run.mismatch("han, fu and yaku", log, ours);
+                        report.mismatches.push(m);
+                    }
+                }
+            }
+        }
+        Outcome::Draw { kind, .. } => {
+            report.draws += 1;
+            let drawn = ev & (events::EXHAUSTIVE_DRAW | events::ABORTIVE_DRAW) != 0;
+            if drawn && draw_matches(*kind, table) {
+                report.draws_matching += 1;
+            } else {
+                let m = run.mismatch("draw kind", format!("{kind:?}"), engine_outcome(step, i, table));
+                report.mismatches.push(m);
+            }
+        }
+    }
+    let next = run.game.rounds.get(run.round + 1);
+    let expected = run
+        .plan
+        .as_ref()
+        .map_or([0; 4], |plan| log_change(r, plan, next.is_none()));
+    if let Some(n) = next {
+        let by_scores: [i64; 4] = std::array::from_fn(|p| i64::from(n.scores[p]) - i64::from(r.scores[p]));
+        if by_scores != expected {
+            let m = run.mismatch(
+                "the log contradicts itself",
+                format!("result {expected:?}, but the next round starts {by_scores:?} from this one"),
+                "(not compared)",
+            );
+            report.mismatches.push(m);
+        }
+    }
+    if expected == run.change {
+        report.score_changes_matching += 1;
+    } else {
+        let m = run.mismatch("score changes", format!("{expected:?}"), format!("{:?}", run.change));
+        report.mismatches.push(m);
+    }
+    match next {
+        Some(n) => {
+            report.tables += 1;
+            let log_table = (n.kyoku, n.dealer() as u32, n.honba, n.sticks, n.scores);
+            let ours = (table.round, table.dealer, table.honba, table.sticks, table.scores);
+            if table.over {
+                let m = run.mismatch(
+                    "game end",
+                    format!(
+                        "the game goes on ({} more rounds)",
+                        run.game.rounds.len() - run.round - 1
+                    ),
+                    "the game is over",
+                );
+                report.mismatches.push(m);
+                run.finished = true;
+            } else if log_table == ours {
+                report.tables_matching += 1;
+            } else {
+                let show = |(round, dealer, honba, sticks, scores): (u32, u32, u32, u32, [i32; 4])| {
+                    format!("round {round}, dealer {dealer}, {honba} honba, {sticks} sticks, scores {scores:?}")
+                };
+                let m = run.mismatch("next round", show(log_table), show(ours));
+                report.mismatches.push(m);
+            }
+        }
+        None => {
+            if table.over {
+                report.games_ended_right += 1;
+            } else {
+                let m = run.mismatch("game end", "the game ends here", "the game goes on");
+                report.mismatches.push(m);
+            }
+            run.finished = true;
+        }
+    }
+}
+
+/// Replays `games` on `backend` (one env per game, all stepped together; the GPU backend opens
+/// the first adapter).
+pub fn replay(games: &[Game], backend: Backend) -> Result<Report, EnvError> {
+    replay_in(games, backend, Env::new)
+}
+
+/// As [`replay`], on an already opened GPU.
+pub fn replay_on_gpu(games: &[Game], gpu: Gpu) -> Result<Report, EnvError> {
+    replay_in(games, Backend::Gpu, |config| Env::with_gpu(config, gpu))
+}
+
+fn replay_in(
+    games: &[Game],
+    backend: Backend,
+    make_env: impl FnOnce(Config) -> Result<Env, EnvError>,
+) -> Result<Report, EnvError> {
+    let mut report = Report {
+        games: games.len(),
+        ..Report::default()
+    };
+    if games.is_empty() {
+        return Ok(report);
+    }
+    let n = games.len();
+    let mut env = make_env(Config {
+        variant: Variant::Red,
+        mode: Mode::Half,
+        batch: n,
+        backend,
+        seed: 0,
+        // Raw points at the end: logs have no uma.
+        uma: Some([0; 4]),
+        penalty: None,
+        auto_reset: false,
+        threads: Some(1),
+    })?;
+    env.try_reset()?;
+    let mut runs: Vec<Run> = games
+        .iter()
+        .map(|game| Run {
+            game,
+            round: 0,
+            plan: None,
+            next: 0,
+            steps: 0,
+            change: [0; 4],
+            finished: false,
+        })
+        .collect();
+    let mut deals: Vec<Option<Deal>> = runs.iter_mut().map(|r| r.start_round(&mut report)).collect();
+    loop {
+        if deals.iter().any(Option::is_some) {
+            env.deal(&deals)?;
+            deals.iter_mut().for_each(|d| *d = None);
+        }
+        if runs.iter().all(|r| r.finished) {
+            break;
+        }
+        let step = env.last().clone();
+        let mut actions = vec![k::ACTION_PASS; n];
+        let mut redealt = false;
+        for (i, run) in runs.iter_mut().enumerate() {
+            actions[i] = step.legal_actions(i).next().unwrap_or(k::ACTION_PASS);
+            if run.finished {
+                continue;
+            }
+            match run.decide(&step, i) {
+                Ok(a) => actions[i] = a,
+                Err(m) => {
+                    let m = *m;
+                    // The rest of this round cannot be replayed; the next logged round is dealt
+                    // from its own table, so one disagreement does not spoil the rest of the game.
+                    report.mismatches.push(m);
+                    run.round += 1;
+                    deals[i] = run.start_round(&mut report);
+                    redealt = true;
+                }
+            }
+        }
+        if redealt {
+            continue;
+        }
+        let after = env.step(&actions)?.clone();
+        let mut ended = Vec::new();
+        for (i, run) in runs.iter_mut().enumerate() {
+            if run.finished {
+                continue;
+            }
+            if run.consume(step.current_player[i] as usize, actions[i]) {
+                report.actions_accepted += 1;
+            }
+            run.steps += 1;
+            for p in 0..4 {
+                run.change[p] += (after.rewards[i][p] * 100.0).round() as i64;
+            }
+            let round_over =
+                after.events[i] & (events::RON | events::TSUMO | events::EXHAUSTIVE_DRAW | events::ABORTIVE_DRAW) != 0;
+            if round_over || after.terminated[i] {
+                ended.push(i);
+            }
+        }
+        if ended.is_empty() {
+            continue;
+        }
+        let tables = env.tables()?;
+        for i in ended {
+            let run = &mut runs[i];
+            finish_round(run, &after, i, &tables[i], &mut report);
+            if !run.finished {
+                run.round += 1;
+                deals[i] = run.start_round(&mut report);
+            }
+        }
+    }
+    Ok(report)
+}
+
+/// A move list as text, for debugging a plan.
+pub fn describe(moves: &[Move]) -> String {
+    moves
+        .iter()
+        .map(|m| format!("{}:{}", m.seat, m.what))
+        .collect::<Vec<_>>()
+        .join(" | ")
+}
