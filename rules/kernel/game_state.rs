@@ -187,12 +187,8 @@ pub struct GameState {
     pub steps: u32,
 }
 
-fn get4(words: [u32; 20], seat: u32, t: u32) -> u32 {
-    (words[(seat * 5u32 + t / 8u32) as usize] >> ((t % 8u32) * 4u32)) & 15u32
-}
-
 fn hand_count(s: &mut GameState, seat: u32, t: u32) -> u32 {
-    get4(s.hands, seat, t)
+    (s.hands[(seat * 5u32 + t / 8u32) as usize] >> ((t % 8u32) * 4u32)) & 15u32
 }
 
 fn hand_add(s: &mut GameState, seat: u32, t: u32) {
@@ -203,10 +199,17 @@ fn hand_remove(s: &mut GameState, seat: u32, t: u32) {
     s.hands[(seat * 5u32 + t / 8u32) as usize] -= 1u32 << ((t % 8u32) * 4u32);
 }
 
+// One read of each packed word (not one per tile type).
 fn hand_counts(s: &mut GameState, seat: u32) -> [u32; 34] {
     let mut c: [u32; 34] = [0u32; 34];
-    for t in 0u32..34u32 {
-        c[t as usize] = get4(s.hands, seat, t);
+    for w in 0u32..5u32 {
+        let word: u32 = s.hands[(seat * 5u32 + w) as usize];
+        for i in 0u32..8u32 {
+            let t: u32 = w * 8u32 + i;
+            if t < 34u32 {
+                c[t as usize] = (word >> (i * 4u32)) & 15u32;
+            }
+        }
     }
     c
 }
