@@ -214,6 +214,40 @@ fn hand_counts(s: &mut GameState, seat: u32) -> [u32; 34] {
     c
 }
 
+// Tiles in the seat's concealed hand: the byte sums of its packed words.
+fn hand_size(s: &mut GameState, seat: u32) -> u32 {
+    let mut n: u32 = 0u32;
+    for w in 0u32..5u32 {
+        let word: u32 = s.hands[(seat * 5u32 + w) as usize];
+        let bytes: u32 = (word & 0x0f0f0f0fu32) + ((word >> 4u32) & 0x0f0f0f0fu32);
+        n += bytes.wrapping_mul(0x01010101u32) >> 24u32;
+    }
+    n
+}
+
+// Bits 0, 4, ..., 28 of `x` gathered into bits 0..7.
+fn gather_nibble_bits(x: u32) -> u32 {
+    let mut y: u32 = (x | (x >> 3u32)) & 0x03030303u32;
+    y = (y | (y >> 6u32)) & 0x000f000fu32;
+    (y | (y >> 12u32)) & 255u32
+}
+
+// The tile types whose count in the seat's hand has one of `bits` set, as a 34-bit set, straight
+// from the packed words: counts are at most 4, so bits 7 means "held" and bits 4 "all four held".
+fn hand_types_with(s: &mut GameState, seat: u32, bits: u32) -> [u32; 2] {
+    let mut set: [u32; 2] = [0u32; 2];
+    for w in 0u32..5u32 {
+        let x: u32 = s.hands[(seat * 5u32 + w) as usize] & (bits * 0x11111111u32);
+        let g: u32 = gather_nibble_bits((x | (x >> 1u32) | (x >> 2u32)) & 0x11111111u32);
+        if w < 4u32 {
+            set[0] |= g << (w * 8u32);
+        } else {
+            set[1] = g;
+        }
+    }
+    set
+}
+
 fn wall_tile(s: &mut GameState, i: u32) -> u32 {
     (s.wall[(i / 4u32) as usize] >> ((i % 4u32) * 8u32)) & 255u32
 }
