@@ -80,6 +80,9 @@ fn yaochu_kinds(s: &mut GameState, p: u32) -> u32 {
 }
 
 fn riichi_possible(s: &mut GameState, p: u32) -> bool {
+    if surely_not_tenpai(s, p, 1u32) {
+        return false;
+    }
     let c: [u32; 34] = hand_counts(s, p);
     if shanten(ShantenInput { hand: c }).shanten > 0i32 {
         return false;
@@ -184,7 +187,11 @@ fn do_discard(s: &mut GameState, v: u32, tsumogiri: bool) -> u32 {
         entry |= 128u32;
     }
     river_push(s, p, entry);
-    update_waits(s, p);
+    // The cached waits are those of the hand before the draw; discarding a tile of the drawn
+    // tile's type gives that hand back.
+    if s.drawn == NO_TILE_VALUE || value_type(s.drawn) != t {
+        update_waits(s, p);
+    }
     s.discarded[(p * 2u32 + t / 32u32) as usize] |= 1u32 << (t % 32u32);
     let mut f: u32 = s.seat_flags[p as usize];
     if !is_terminal_or_honor(t) {
