@@ -174,7 +174,8 @@ fn all_tiles(s: &mut GameState, seat: u32) -> [u32; 34] {
 // one tile is isolated, unless the hand is twelve or more kinds of thirteen orphans. A discard
 // removes at most one isolated tile.
 fn surely_not_tenpai(s: &mut GameState, seat: u32, discards: u32) -> bool {
-    isolated_tiles(s, seat) > 1u32 + discards && orphan_kinds(s, seat) < 12u32
+    let io: [u32; 2] = isolated_and_orphans(s, seat);
+    io[0] > 1u32 + discards && io[1] < 12u32
 }
 
 fn seat_waits(s: &mut GameState, seat: u32) -> [u32; 2] {

@@ -249,33 +249,32 @@ fn hand_types_with(s: &mut GameState, seat: u32, bits: u32) -> [u32; 2] {
 }
 
 // Single tiles with no other tile of their suit within two steps (any single honor): tiles that
-// no set or partial set of the hand can use. Counts straight from the packed words.
-fn isolated_tiles(s: &mut GameState, seat: u32) -> u32 {
-    let held: [u32; 2] = hand_types_with(s, seat, 7u32);
+// no set or partial set of the hand can use; and the kinds of terminals and honors held (thirteen
+// orphans). One pass over the packed words.
+fn isolated_and_orphans(s: &mut GameState, seat: u32) -> [u32; 2] {
+    let mut held: [u32; 2] = [0u32; 2];
     let mut single: [u32; 2] = [0u32; 2];
     for w in 0u32..5u32 {
         let word: u32 = s.hands[(seat * 5u32 + w) as usize];
-        let g: u32 = gather_nibble_bits(word & !(word >> 1u32) & !(word >> 2u32) & 0x11111111u32);
+        let h: u32 = gather_nibble_bits((word | (word >> 1u32) | (word >> 2u32)) & 0x11111111u32);
+        let one: u32 = gather_nibble_bits(word & !(word >> 1u32) & !(word >> 2u32) & 0x11111111u32);
         if w < 4u32 {
-            single[0] |= g << (w * 8u32);
+            held[0] |= h << (w * 8u32);
+            single[0] |= one << (w * 8u32);
         } else {
-            single[1] = g;
+            held[1] = h;
+            single[1] = one;
         }
     }
-    let mut n: u32 = 0u32;
+    let mut isolated: u32 = (single[0] >> 27u32).count_ones() + single[1].count_ones();
     for suit in 0u32..3u32 {
         let h: u32 = (held[0] >> (suit * 9u32)) & 511u32;
         let near: u32 = (h << 1u32) | (h << 2u32) | (h >> 1u32) | (h >> 2u32);
-        n += ((single[0] >> (suit * 9u32)) & 511u32 & !near).count_ones();
+        isolated += ((single[0] >> (suit * 9u32)) & 511u32 & !near).count_ones();
     }
-    n + (single[0] >> 27u32).count_ones() + single[1].count_ones()
-}
-
-// Kinds of terminal and honor tiles held (thirteen orphans).
-fn orphan_kinds(s: &mut GameState, seat: u32) -> u32 {
-    let held: [u32; 2] = hand_types_with(s, seat, 7u32);
-    let low: u32 = 1u32 | (1u32 << 8u32) | (1u32 << 9u32) | (1u32 << 17u32) | (1u32 << 18u32) | (1u32 << 26u32);
-    (held[0] & (low | (31u32 << 27u32))).count_ones() + held[1].count_ones()
+    let terminals: u32 = 1u32 | (1u32 << 8u32) | (1u32 << 9u32) | (1u32 << 17u32) | (1u32 << 18u32) | (1u32 << 26u32);
+    let orphans: u32 = (held[0] & (terminals | (31u32 << 27u32))).count_ones() + held[1].count_ones();
+    [isolated, orphans]
 }
 
 fn wall_tile(s: &mut GameState, i: u32) -> u32 {
