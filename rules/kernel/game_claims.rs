@@ -17,25 +17,20 @@ fn red_count(s: &mut GameState, q: u32, t: u32) -> u32 {
     0u32
 }
 
-// After calling with two tiles `used_a`, `used_b` of the hand `c`, some tile must still be
-// discardable under the kuikae ban.
-fn discard_left_after(c: [u32; 34], used_a: u32, used_b: u32, ban_a: u32, ban_b: u32) -> bool {
-    let mut rest: [u32; 34] = c;
-    rest[used_a as usize] -= 1u32;
-    rest[used_b as usize] -= 1u32;
-    for t in 0u32..34u32 {
-        if rest[t as usize] > 0u32 && t != ban_a && t != ban_b {
-            return true;
-        }
+// Chi options for one shape: the two hand tiles a, b (types); plain and red forms. `size`: tiles
+// in the hand; after the call some tile outside the kuikae ban (types ban_a, ban_b, 255 = none,
+// neither of them a or b) must be left to discard.
+fn chi_options(s: &mut GameState, q: u32, size: u32, a: u32, b: u32, ban_a: u32, ban_b: u32, plain: u32, red: u32) -> u32 {
+    let na: u32 = hand_count(s, q, a);
+    let nb: u32 = hand_count(s, q, b);
+    if na == 0u32 || nb == 0u32 {
+        return 0u32;
     }
-    false
-}
-
-// Chi options for one shape: the two hand tiles a, b (types); plain and red forms.
-fn chi_options(s: &mut GameState, q: u32, c: [u32; 34], a: u32, b: u32, ban_a: u32, ban_b: u32, plain: u32, red: u32) -> u32 {
-    let na: u32 = c[a as usize];
-    let nb: u32 = c[b as usize];
-    if na == 0u32 || nb == 0u32 || !discard_left_after(c, a, b, ban_a, ban_b) {
+    let mut banned: u32 = hand_count(s, q, ban_a);
+    if ban_b != 255u32 {
+        banned += hand_count(s, q, ban_b);
+    }
+    if size - 2u32 <= banned {
         return 0u32;
     }
     let ra: u32 = red_count(s, q, a);
@@ -50,10 +45,11 @@ fn chi_options(s: &mut GameState, q: u32, c: [u32; 34], a: u32, b: u32, ban_a: u
     o
 }
 
+// Reads only the few counts a claim on type t depends on: most seats on most discards hold fewer
+// than two copies and are not the chi seat, and are done after one read.
 fn claim_options_for(s: &mut GameState, q: u32, from: u32, v: u32, kan: u32) -> u32 {
     let t: u32 = value_type(v);
     let mut o: u32 = 0u32;
-    let c: [u32; 34] = hand_counts(s, q);
     if waits_include(s, q, t) && !furiten(s, q) {
         let out: ScoreOutput = score_hand(win_input(s, q, v, false, kan == 1u32));
         let orphans: bool = has_yaku(out.yaku_lo, out.yaku_hi, YAKU_KOKUSHI)
@@ -66,9 +62,15 @@ fn claim_options_for(s: &mut GameState, q: u32, from: u32, v: u32, kan: u32) -> 
     if kan != 0u32 || riichi || s.next_draw >= s.live_end {
         return o;
     }
-    let n: u32 = c[t as usize];
+    let n: u32 = hand_count(s, q, t);
+    let chi_seat: bool = q == (from + 1u32) % 4u32 && t < 27u32;
+    if n < 2u32 && !chi_seat {
+        return o;
+    }
+    let size: u32 = hand_size(s, q);
     let r: u32 = red_count(s, q, t);
-    if n >= 2u32 && discard_left_after(c, t, t, t, 255u32) {
+    // A pon must leave a tile of another type to discard (kuikae bans the called type).
+    if n >= 2u32 && size > n {
         if n - r >= 2u32 {
             o |= CLAIM_PON;
         }
@@ -79,24 +81,24 @@ fn claim_options_for(s: &mut GameState, q: u32, from: u32, v: u32, kan: u32) -> 
     if n == 3u32 && s.kans < 4u32 {
         o |= CLAIM_KAN;
     }
-    if q == (from + 1u32) % 4u32 && t < 27u32 {
+    if chi_seat {
         let pos: u32 = t % 9u32;
         if pos <= 6u32 {
             let mut swap: u32 = 255u32;
             if pos <= 5u32 {
                 swap = t + 3u32;
             }
-            o |= chi_options(s, q, c, t + 1u32, t + 2u32, t, swap, CLAIM_CHI_LEFT, CLAIM_CHI_LEFT_RED);
+            o |= chi_options(s, q, size, t + 1u32, t + 2u32, t, swap, CLAIM_CHI_LEFT, CLAIM_CHI_LEFT_RED);
         }
         if pos >= 1u32 && pos <= 7u32 {
-            o |= chi_options(s, q, c, t - 1u32, t + 1u32, t, 255u32, CLAIM_CHI_MIDDLE, CLAIM_CHI_MIDDLE_RED);
+            o |= chi_options(s, q, size, t - 1u32, t + 1u32, t, 255u32, CLAIM_CHI_MIDDLE, CLAIM_CHI_MIDDLE_RED);
         }
         if pos >= 2u32 {
             let mut swap: u32 = 255u32;
             if pos >= 3u32 {
                 swap = t - 3u32;
             }
-            o |= chi_options(s, q, c, t - 2u32, t - 1u32, t, swap, CLAIM_CHI_RIGHT, CLAIM_CHI_RIGHT_RED);
+            o |= chi_options(s, q, size, t - 2u32, t - 1u32, t, swap, CLAIM_CHI_RIGHT, CLAIM_CHI_RIGHT_RED);
         }
     }
     o

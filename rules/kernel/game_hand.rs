@@ -168,7 +168,21 @@ fn all_tiles(s: &mut GameState, seat: u32) -> [u32; 34] {
     c
 }
 
+// Proof without the shanten tables that no tile completes the seat's hand, nor any hand left by
+// one of `discards` (0 or 1) discards: in a hand that one tile completes, every tile but the
+// single waiting for its pair shares a set, pair or partial set with another tile, so at most
+// one tile is isolated, unless the hand is twelve or more kinds of thirteen orphans. A discard
+// removes at most one isolated tile.
+fn surely_not_tenpai(s: &mut GameState, seat: u32, discards: u32) -> bool {
+    let io: [u32; 2] = isolated_and_orphans(s, seat);
+    io[0] > 1u32 + discards && io[1] < 12u32
+}
+
 fn seat_waits(s: &mut GameState, seat: u32) -> [u32; 2] {
+    // Most hands in play are far from tenpai: settled here, before the shanten's table reads.
+    if surely_not_tenpai(s, seat, 0u32) {
+        return [0u32; 2];
+    }
     let c: [u32; 34] = hand_counts(s, seat);
     let all: [u32; 34] = all_tiles(s, seat);
     waits_of(c, meld_count(s, seat), all)

@@ -222,12 +222,8 @@ pub struct GameState {
     pub draw_kind: u32,
 }
 
-fn get4(words: [u32; 20], seat: u32, t: u32) -> u32 {
-    (words[(seat * 5u32 + t / 8u32) as usize] >> ((t % 8u32) * 4u32)) & 15u32
-}
-
 fn hand_count(s: &mut GameState, seat: u32, t: u32) -> u32 {
-    get4(s.hands, seat, t)
+    (s.hands[(seat * 5u32 + t / 8u32) as usize] >> ((t % 8u32) * 4u32)) & 15u32
 }
 
 fn hand_add(s: &mut GameState, seat: u32, t: u32) {
@@ -238,12 +234,82 @@ fn hand_remove(s: &mut GameState, seat: u32, t: u32) {
     s.hands[(seat * 5u32 + t / 8u32) as usize] -= 1u32 << ((t % 8u32) * 4u32);
 }
 
+// One read of each packed word (not one per tile type).
 fn hand_counts(s: &mut GameState, seat: u32) -> [u32; 34] {
     let mut c: [u32; 34] = [0u32; 34];
-    for t in 0u32..34u32 {
-        c[t as usize] = get4(s.hands, seat, t);
+    for w in 0u32..5u32 {
+        let word: u32 = s.hands[(seat * 5u32 + w) as usize];
+        for i in 0u32..8u32 {
+            let t: u32 = w * 8u32 + i;
+            if t < 34u32 {
+                c[t as usize] = (word >> (i * 4u32)) & 15u32;
+            }
+        }
     }
     c
+}
+
+// Tiles in the seat's concealed hand: the byte sums of its packed words.
+fn hand_size(s: &mut GameState, seat: u32) -> u32 {
+    let mut n: u32 = 0u32;
+    for w in 0u32..5u32 {
+        let word: u32 = s.hands[(seat * 5u32 + w) as usize];
+        let bytes: u32 = (word & 0x0f0f0f0fu32) + ((word >> 4u32) & 0x0f0f0f0fu32);
+        n += bytes.wrapping_mul(0x01010101u32) >> 24u32;
+    }
+    n
+}
+
+// Bits 0, 4, ..., 28 of `x` gathered into bits 0..7.
+fn gather_nibble_bits(x: u32) -> u32 {
+    let mut y: u32 = (x | (x >> 3u32)) & 0x03030303u32;
+    y = (y | (y >> 6u32)) & 0x000f000fu32;
+    (y | (y >> 12u32)) & 255u32
+}
+
+// The tile types whose count in the seat's hand has one of `bits` set, as a 34-bit set, straight
+// from the packed words: counts are at most 4, so bits 7 means "held" and bits 4 "all four held".
+fn hand_types_with(s: &mut GameState, seat: u32, bits: u32) -> [u32; 2] {
+    let mut set: [u32; 2] = [0u32; 2];
+    for w in 0u32..5u32 {
+        let x: u32 = s.hands[(seat * 5u32 + w) as usize] & (bits * 0x11111111u32);
+        let g: u32 = gather_nibble_bits((x | (x >> 1u32) | (x >> 2u32)) & 0x11111111u32);
+        if w < 4u32 {
+            set[0] |= g << (w * 8u32);
+        } else {
+            set[1] = g;
+        }
+    }
+    set
+}
+
+// Single tiles with no other tile of their suit within two steps (any single honor): tiles that
+// no set or partial set of the hand can use; and the kinds of terminals and honors held (thirteen
+// orphans). One pass over the packed words.
+fn isolated_and_orphans(s: &mut GameState, seat: u32) -> [u32; 2] {
+    let mut held: [u32; 2] = [0u32; 2];
+    let mut single: [u32; 2] = [0u32; 2];
+    for w in 0u32..5u32 {
+        let word: u32 = s.hands[(seat * 5u32 + w) as usize];
+        let h: u32 = gather_nibble_bits((word | (word >> 1u32) | (word >> 2u32)) & 0x11111111u32);
+        let one: u32 = gather_nibble_bits(word & !(word >> 1u32) & !(word >> 2u32) & 0x11111111u32);
+        if w < 4u32 {
+            held[0] |= h << (w * 8u32);
+            single[0] |= one << (w * 8u32);
+        } else {
+            held[1] = h;
+            single[1] = one;
+        }
+    }
+    let mut isolated: u32 = (single[0] >> 27u32).count_ones() + single[1].count_ones();
+    for suit in 0u32..3u32 {
+        let h: u32 = (held[0] >> (suit * 9u32)) & 511u32;
+        let near: u32 = (h << 1u32) | (h << 2u32) | (h >> 1u32) | (h >> 2u32);
+        isolated += ((single[0] >> (suit * 9u32)) & 511u32 & !near).count_ones();
+    }
+    let terminals: u32 = 1u32 | (1u32 << 8u32) | (1u32 << 9u32) | (1u32 << 17u32) | (1u32 << 18u32) | (1u32 << 26u32);
+    let orphans: u32 = (held[0] & (terminals | (31u32 << 27u32))).count_ones() + held[1].count_ones();
+    [isolated, orphans]
 }
 
 fn wall_tile(s: &mut GameState, i: u32) -> u32 {

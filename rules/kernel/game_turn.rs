@@ -17,11 +17,6 @@ fn kuikae_banned(s: &mut GameState, t: u32) -> bool {
 
 fn discard_allowed(s: &mut GameState, p: u32, v: u32) -> bool {
     let n: u32 = value_count(s, p, v);
-    discard_allowed_with(s, v, n)
-}
-
-// `n`: copies of value `v` held.
-fn discard_allowed_with(s: &mut GameState, v: u32, n: u32) -> bool {
     if n == 0u32 || kuikae_banned(s, value_type(v)) {
         return false;
     }
@@ -29,29 +24,49 @@ fn discard_allowed_with(s: &mut GameState, v: u32, n: u32) -> bool {
     !(v == s.drawn && n < 2u32)
 }
 
-// Copies of each value 0..36 the seat holds, red fives apart from black ones.
-fn value_counts(s: &mut GameState, p: u32) -> [u32; 37] {
-    let mut n: [u32; 37] = [0u32; 37];
-    for t in 0u32..34u32 {
-        n[t as usize] = hand_count(s, p, t);
-    }
-    for suit in 0u32..3u32 {
-        if holds_red(s, p, suit) {
-            n[(suit * 9u32 + 4u32) as usize] -= 1u32;
-            n[(34u32 + suit) as usize] = 1u32;
+// Sets the action `base + t` for every type t in the 34-bit set.
+fn mask_set_types(m: &mut [u32; 3], base: u32, set: [u32; 2]) {
+    for i in 0u32..2u32 {
+        let mut x: u32 = set[i as usize];
+        while x != 0u32 {
+            mask_set(m, base + i * 32u32 + x.trailing_zeros());
+            x &= x - 1u32;
         }
     }
-    n
 }
 
-fn has_pon(s: &mut GameState, p: u32, t: u32) -> bool {
-    for i in 0u32..meld_count(s, p) {
-        let m: u32 = s.melds[(p * 4u32 + i) as usize];
-        if meld_kind(m) == MELD_PON && meld_tile(m) == t {
-            return true;
+fn set_remove(set: &mut [u32; 2], t: u32) {
+    set[(t / 32u32) as usize] &= !(1u32 << (t % 32u32));
+}
+
+// The discards of the player to move, from the set of types held rather than a count per value:
+// a value is discardable if held, not banned by kuikae, and not the drawn tile's only copy (that
+// one goes by TSUMOGIRI).
+fn discard_mask(s: &mut GameState, p: u32, m: &mut [u32; 3]) {
+    let mut black: [u32; 2] = hand_types_with(s, p, 7u32);
+    for k in 0u32..2u32 {
+        let t: u32 = byte_of(s.kuikae, k);
+        if t < 34u32 {
+            set_remove(&mut black, t);
         }
     }
-    false
+    if ACTION_DISCARD_COUNT > 34u32 {
+        for suit in 0u32..3u32 {
+            if holds_red(s, p, suit) {
+                let t: u32 = suit * 9u32 + 4u32;
+                if hand_count(s, p, t) == 1u32 {
+                    set_remove(&mut black, t);
+                }
+                if !kuikae_banned(s, t) && s.drawn != 34u32 + suit {
+                    mask_set(m, ACTION_DISCARD + 34u32 + suit);
+                }
+            }
+        }
+    }
+    if s.drawn < 34u32 && value_count(s, p, s.drawn) < 2u32 {
+        set_remove(&mut black, s.drawn);
+    }
+    mask_set_types(m, ACTION_DISCARD, black);
 }
 
 fn yaochu_kinds(s: &mut GameState, p: u32) -> u32 {
@@ -65,11 +80,22 @@ fn yaochu_kinds(s: &mut GameState, p: u32) -> u32 {
 }
 
 fn riichi_possible(s: &mut GameState, p: u32) -> bool {
-    if shanten(ShantenInput { hand: hand_counts(s, p) }).shanten > 0i32 {
+    if surely_not_tenpai(s, p, 1u32) {
         return false;
     }
+    let c: [u32; 34] = hand_counts(s, p);
+    if shanten(ShantenInput { hand: c }).shanten > 0i32 {
+        return false;
+    }
+    // With no kan, a 14-tile hand at shanten <= 0 has a discard leaving a 13-tile hand at shanten 0,
+    // and (the shanten's targets respecting the four copies of a tile) such a hand has a wait
+    // that `waits_of` counts. A closed kan can make the only wait a tile that the kan holds all
+    // four of, so then each discard is tried.
+    if meld_count(s, p) == 0u32 {
+        return true;
+    }
     for t in 0u32..34u32 {
-        if tenpai_after_discard(s, p, t) {
+        if c[t as usize] > 0u32 && tenpai_after_discard(s, p, t) {
             return true;
         }
     }
@@ -106,13 +132,8 @@ fn turn_mask(s: &mut GameState) -> [u32; 3] {
         }
         return m;
     }
-    let counts: [u32; 37] = value_counts(s, p);
     if !riichi {
-        for v in 0u32..ACTION_DISCARD_COUNT {
-            if discard_allowed_with(s, v, counts[v as usize]) {
-                mask_set(&mut m, ACTION_DISCARD + v);
-            }
-        }
+        discard_mask(s, p, &mut m);
     }
     if !drew {
         return m;
@@ -122,17 +143,19 @@ fn turn_mask(s: &mut GameState) -> [u32; 3] {
         mask_set(&mut m, ACTION_TSUMO);
     }
     if s.kans < 4u32 && s.next_draw < s.live_end {
-        for t in 0u32..34u32 {
-            let mut n: u32 = counts[t as usize];
-            if t < 27u32 && t % 9u32 == 4u32 {
-                n += counts[(34u32 + t / 9u32) as usize];
-            }
-            if n == 4u32 {
-                if !riichi || (t == value_type(s.drawn) && riichi_kan_keeps_waits(s, p, t)) {
-                    mask_set(&mut m, ACTION_SELF_KAN + t);
-                }
-            } else if n >= 1u32 && !riichi && has_pon(s, p, t) {
+        let fours: [u32; 2] = hand_types_with(s, p, 4u32);
+        if riichi {
+            let t: u32 = value_type(s.drawn);
+            if in_set(fours, t) && riichi_kan_keeps_waits(s, p, t) {
                 mask_set(&mut m, ACTION_SELF_KAN + t);
+            }
+        } else {
+            mask_set_types(&mut m, ACTION_SELF_KAN, fours);
+            for i in 0u32..meld_count(s, p) {
+                let meld: u32 = s.melds[(p * 4u32 + i) as usize];
+                if meld_kind(meld) == MELD_PON && hand_count(s, p, meld_tile(meld)) > 0u32 {
+                    mask_set(&mut m, ACTION_SELF_KAN + meld_tile(meld));
+                }
             }
         }
     }
@@ -164,7 +187,11 @@ fn do_discard(s: &mut GameState, v: u32, tsumogiri: bool) -> u32 {
         entry |= 128u32;
     }
     river_push(s, p, entry);
-    update_waits(s, p);
+    // The cached waits are those of the hand before the draw; discarding a tile of the drawn
+    // tile's type gives that hand back.
+    if s.drawn == NO_TILE_VALUE || value_type(s.drawn) != t {
+        update_waits(s, p);
+    }
     s.discarded[(p * 2u32 + t / 32u32) as usize] |= 1u32 << (t % 32u32);
     let mut f: u32 = s.seat_flags[p as usize];
     if !is_terminal_or_honor(t) {

@@ -12,6 +12,9 @@ macro_rules! invariant_suite {
             let mut rng = Rng::new(42);
             let mut total_steps = 0u64;
             let mut wins = 0u32;
+            // Every action, reward and settlement of every game, so that a change meant to be
+            // behaviour-preserving (a faster kernel) can be checked to play exactly the same games.
+            let mut fingerprint = Fingerprint::new();
             for g in 0..$games {
                 let mut input = k::ResetInput {
                     seed: [g as u32, 0x5eed],
@@ -45,6 +48,15 @@ macro_rules! invariant_suite {
                     k::game_step(&mut s, a);
                     let view = k::game_view(s);
                     assert_eq!(view.illegal, 0);
+                    fingerprint.add(a);
+                    fingerprint.add(view.events);
+                    fingerprint.add(view.winners);
+                    fingerprint.add(view.deal_in);
+                    fingerprint.add(view.yaku[0]);
+                    fingerprint.add(view.yaku[1]);
+                    for r in view.rewards {
+                        fingerprint.add(r.to_bits());
+                    }
                     for p in 0..4 {
                         reward_sum[p] += f64::from(view.rewards[p]);
                     }
@@ -63,10 +75,30 @@ macro_rules! invariant_suite {
                     );
                 }
             }
-            eprintln!("{} games, {total_steps} steps, {wins} winning steps", $games);
+            eprintln!(
+                "{}: {} games, {total_steps} steps, {wins} winning steps, fingerprint {:016x}",
+                stringify!($v),
+                $games,
+                fingerprint.0
+            );
             assert!(wins > 0);
         }
     };
+}
+
+/// FNV-1a over 32-bit words.
+struct Fingerprint(u64);
+
+impl Fingerprint {
+    fn new() -> Fingerprint {
+        Fingerprint(0xcbf2_9ce4_8422_2325)
+    }
+
+    fn add(&mut self, word: u32) {
+        for b in word.to_le_bytes() {
+            self.0 = (self.0 ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
+        }
+    }
 }
 
 /// Tiles held (hands, melds, uncalled river tiles) are exactly the tiles drawn from the wall.
