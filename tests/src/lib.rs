@@ -3,6 +3,7 @@
 
 use std::path::PathBuf;
 
+pub mod policy;
 pub mod scenario;
 
 /// `../shared/data` beside the repository (the oracle data: Tenhou logs, shanten cases).
