@@ -193,6 +193,47 @@ fn selfplay_rejects_bad_options() {
     }
 }
 
+#[test]
+fn selfplay_exports_games_that_replay() {
+    let dir = std::env::temp_dir().join(format!("rinshan-export-{}", std::process::id()));
+    let path = dir.to_str().expect("utf-8 path");
+    let args = ["selfplay", "--games", "6", "--batch", "4", "--json", "--seed", "9"];
+    let plain = json(&rinshan(&args));
+    let exported = json(&rinshan(&[&args[..], &["--export", path]].concat()));
+    // Exporting plays the same games.
+    assert_eq!(plain["rounds"], exported["rounds"]);
+    let mut files: Vec<String> = std::fs::read_dir(&dir)
+        .expect("the export folder")
+        .map(|e| e.expect("an entry").file_name().to_string_lossy().into_owned())
+        .collect();
+    files.sort();
+    let mut expected: Vec<String> = (1..=6).map(|n| format!("game-{n}.json")).collect();
+    expected.sort();
+    assert_eq!(files, expected);
+    let rounds: usize = files
+        .iter()
+        .map(|f| std::fs::read_to_string(dir.join(f)).expect("a game").lines().count())
+        .sum();
+    assert_eq!(serde_json::json!(rounds), plain["rounds"], "one line per round");
+    let v = json(&rinshan(&["replay", path, "--json"]));
+    assert_eq!(v["all_agree"], true, "{v}");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn selfplay_export_says_what_it_needs() {
+    for (option, value, needle) in [
+        ("--backend", "gpu", "--backend cpu"),
+        ("--variant", "no-red", "red variant"),
+        ("--mode", "single", "east or half"),
+    ] {
+        let out = rinshan(&["selfplay", "--games", "1", option, value, "--export", "/tmp/unused"]);
+        assert_eq!(out.status.code(), Some(2), "{option} {value}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(needle), "{option} {value}: {err}");
+    }
+}
+
 const LOGS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/data/tenhou");
 
 #[test]

@@ -3,6 +3,9 @@
 
 use std::path::PathBuf;
 
+pub mod policy;
+pub mod scenario;
+
 /// `../shared/data` beside the repository (the oracle data: Tenhou logs, shanten cases).
 pub fn shared_data() -> PathBuf {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..");

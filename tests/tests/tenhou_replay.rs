@@ -6,7 +6,9 @@ use std::path::{Path, PathBuf};
 
 use rinshan::env::Backend;
 use rinshan::tenhou::log::{collect_files, parse_game, read_game, Game};
+use rinshan::tenhou::plan::plan;
 use rinshan::tenhou::replay::{replay, replay_on_gpu, Report};
+use rinshan_tests::test_data;
 
 fn data_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/data/tenhou")
@@ -120,4 +122,26 @@ fn an_action_the_rules_forbid_is_reported_and_the_game_goes_on() {
     assert!(m.log.contains("discard 7p"), "{m}");
     assert_eq!(r.rounds_replayed, r.rounds - 1);
     assert_eq!(r.games_ended_right, 1, "the later rounds replay from their own tables");
+}
+
+/// Rounds of self-play games recorded as tenhou.net/6 logs where a seat passed a call and made
+/// the same call on a later discard of the same tile from the same seat without drawing in
+/// between (a pon elsewhere skipped its turn): the planner must find that the first discard was
+/// not called.
+#[test]
+fn a_call_passed_and_made_on_a_later_discard_replays() {
+    let text = std::fs::read_to_string(test_data().join("tenhou_passed_calls.json")).expect("test data");
+    for (n, line) in text.lines().enumerate() {
+        let game = parse_game(&format!("line {}", n + 1), line).unwrap_or_else(|e| panic!("{e}"));
+        plan(&game.rounds[0]).unwrap_or_else(|e| panic!("line {}: {e}", n + 1));
+        let report = replay(std::slice::from_ref(&game), Backend::Cpu).expect("cpu replay");
+        // The games go on after these rounds; everything else must agree.
+        assert_eq!(report.mismatches.len(), 1, "{:?}", report.mismatches);
+        assert_eq!(report.mismatches[0].what, "game end");
+        let r = &report;
+        assert_eq!(
+            (r.rounds_replayed, r.score_changes_matching, r.actions_accepted),
+            (1, 1, r.actions)
+        );
+    }
 }

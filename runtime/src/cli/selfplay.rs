@@ -1,12 +1,15 @@
 //! `rinshan selfplay`: a random legal policy plays whole games in a batch of envs; prints how fast,
-//! and how the games went (win, deal-in and draw rates, final scores, yaku frequencies).
+//! and how the games went (win, deal-in and draw rates, final scores, yaku frequencies); with
+//! `--export DIR`, writes each counted game as a tenhou.net/6 log.
 
 use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use indicatif::{ProgressBar, ProgressStyle};
 use rinshan::env::{env_seed, events, Backend, Config, Env, Mode};
 use rinshan::random::Rng;
+use rinshan::tenhou::write::{game_text, Finished, Recorder};
 use rinshan::Variant;
 use serde_json::json;
 
@@ -38,6 +41,11 @@ pub struct Args {
     /// Print the summary as JSON
     #[arg(long)]
     json: bool,
+    /// Also write each counted game as DIR/game-<n>.json (n = 1..games), a tenhou.net/6 log that
+    /// `rinshan replay` reads. Red variant, east or half games, CPU backend only (the games'
+    /// states are read after every step)
+    #[arg(long, value_name = "DIR")]
+    export: Option<PathBuf>,
 }
 
 pub fn parse_variant(name: &str) -> Result<Variant, CliError> {
@@ -107,6 +115,9 @@ pub fn run(args: Args) -> Result<(), CliError> {
     if args.games == 0 {
         return Err(CliError::input("--games must be at least 1"));
     }
+    if let Some(dir) = &args.export {
+        check_export(dir, variant, mode, backend)?;
+    }
     let config = Config {
         variant,
         mode,
@@ -148,12 +159,25 @@ pub fn run(args: Args) -> Result<(), CliError> {
         bar
     };
     let started = Instant::now();
-    let mut step = env.try_reset().map_err(CliError::failure)?;
+    env.try_reset().map_err(CliError::failure)?;
+    let mut recorder = match args.export {
+        Some(_) => Some(Recorder::new(&env).map_err(CliError::failure)?),
+        None => None,
+    };
     while games < args.games {
+        let step = env.last();
         for (i, a) in actions.iter_mut().enumerate() {
             *a = rngs[i].pick_legal(&step.legal_action_mask[i]);
         }
-        step = env.step(&actions).map_err(CliError::failure)?;
+        env.step(&actions).map_err(CliError::failure)?;
+        let mut recorded = match &mut recorder {
+            Some(r) => {
+                r.observe(&env, &actions).map_err(CliError::failure)?;
+                r.take_finished()
+            }
+            None => Vec::new(),
+        };
+        let step = env.last();
         env_steps += b as u64;
         for (i, t) in current.iter_mut().enumerate() {
             t.steps += 1;
@@ -193,6 +217,9 @@ pub fn run(args: Args) -> Result<(), CliError> {
                     total.add(&finished);
                     games += 1;
                     bar.inc(1);
+                    if let Some(dir) = &args.export {
+                        export(dir, games, i, &mut recorded)?;
+                    }
                 }
             }
         }
@@ -210,6 +237,36 @@ pub fn run(args: Args) -> Result<(), CliError> {
         yaku_names,
     );
     Ok(())
+}
+
+/// Why games cannot be exported as asked; creates the folder.
+fn check_export(dir: &Path, variant: Variant, mode: Mode, backend: Backend) -> Result<(), CliError> {
+    if variant != Variant::Red {
+        return Err(CliError::input(
+            "--export writes Tenhou logs of the red variant only (--variant red)",
+        ));
+    }
+    if mode == Mode::Single {
+        return Err(CliError::input(
+            "--export needs --mode east or half: Tenhou has no one-hand games",
+        ));
+    }
+    if backend == Backend::Gpu {
+        return Err(CliError::input(
+            "--export needs --backend cpu: the recorder reads every game's state after each step",
+        ));
+    }
+    std::fs::create_dir_all(dir).map_err(|e| CliError::input(format!("--export {}: {e}", dir.display())))
+}
+
+/// Writes the `n`-th counted game, which env `env` has just finished, from this step's records.
+fn export(dir: &Path, n: u64, env: usize, recorded: &mut Vec<Finished>) -> Result<(), CliError> {
+    let at = recorded.iter().position(|f| f.env == env);
+    let done = at
+        .map(|i| recorded.remove(i))
+        .ok_or_else(|| CliError::failure(format!("game {n} (env {env}) was not recorded")))?;
+    let path = dir.join(format!("game-{n}.json"));
+    std::fs::write(&path, game_text(&done.game)).map_err(|e| CliError::failure(format!("{}: {e}", path.display())))
 }
 
 fn ratio(a: u64, b: u64) -> f64 {

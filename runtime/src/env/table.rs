@@ -45,6 +45,21 @@ pub struct WinRecord {
 }
 
 impl WinRecord {
+    /// Seat `p`'s record in a state's `win_yaku` and `win_score` words (two per seat).
+    pub(crate) fn decode(yaku: &[u32; 8], score: &[u32; 8], p: usize) -> WinRecord {
+        let (points, extra) = (score[2 * p], score[2 * p + 1]);
+        WinRecord {
+            yaku: [yaku[2 * p], yaku[2 * p + 1]],
+            han: points & 255,
+            fu: points >> 8 & 255,
+            yakuman: points >> 16 & 255,
+            concealed: points >> 24 & 1 == 1,
+            dora: extra & 255,
+            aka: extra >> 8 & 255,
+            ura: extra >> 16,
+        }
+    }
+
     /// Yaku ids of the hand, in increasing order.
     pub fn yaku_ids(&self) -> impl Iterator<Item = u32> + '_ {
         (0..64u32).filter(move |i| self.yaku[(i / 32) as usize] >> (i % 32) & 1 == 1)
@@ -78,7 +93,8 @@ pub struct DrawRecord {
 }
 
 impl DrawRecord {
-    fn decode(word: u32) -> DrawRecord {
+    /// A state's `draw_kind` word.
+    pub(crate) fn decode(word: u32) -> DrawRecord {
         let kind = match word & 255 {
             1 => Some(DrawKind::Exhaustive),
             2 => Some(DrawKind::Nagashi),
@@ -195,19 +211,7 @@ impl Env {
                     scores: s.scores,
                     rounds: s.rounds,
                     over: s.terminated != 0,
-                    wins: std::array::from_fn(|p| {
-                        let (score, extra) = (s.win_score[2 * p], s.win_score[2 * p + 1]);
-                        WinRecord {
-                            yaku: [s.win_yaku[2 * p], s.win_yaku[2 * p + 1]],
-                            han: score & 255,
-                            fu: score >> 8 & 255,
-                            yakuman: score >> 16 & 255,
-                            concealed: score >> 24 & 1 == 1,
-                            dora: extra & 255,
-                            aka: extra >> 8 & 255,
-                            ura: extra >> 16,
-                        }
-                    }),
+                    wins: std::array::from_fn(|p| WinRecord::decode(&s.win_yaku, &s.win_score, p)),
                     draw: DrawRecord::decode(s.draw_kind),
                 })
                 .collect()

@@ -40,7 +40,7 @@ mod result;
 mod tests;
 
 pub use moves::{Discard, Draw, Rel, Tile};
-pub use result::{yaku_name, DrawKind, Limit, Outcome, Win, Yaku, YakuHan};
+pub use result::{tenhou_yaku, yaku_name, DrawKind, Limit, Outcome, Win, Yaku, YakuHan};
 
 use moves::{parse_discard, parse_draw, tile};
 

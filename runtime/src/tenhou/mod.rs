@@ -4,6 +4,7 @@
 //!   rounds: starting hands, draws and calls, discards and kans, and the result with its yaku.
 //! * [`plan`]   — a logged round in the order of play: the wall it was dealt from and its decisions
 //! * [`replay`] — drives the environment with the logged decisions and compares every round
+//! * [`write`]  — records games played in rinshan (red variant) as tenhou.net/6 logs
 //!
 //! Tenhou's names, once: a round is a kyoku (`East 1` = East round, first dealer), honba are the
 //! repeat counters, riichi sticks are the 1000-point deposits; seat 0 is East 1's dealer.
@@ -11,3 +12,4 @@
 pub mod log;
 pub mod plan;
 pub mod replay;
+pub mod write;

@@ -6,9 +6,19 @@
 //! call on that tile (pon or kan before chi) takes it, a ron on a seat's last discard ends the
 //! round, and otherwise the next seat draws. A kan is followed by a replacement draw from the
 //! dead wall. Walking the round this way gives the live draws and replacement tiles in wall order.
+//!
+//! The log does not say when a seat passed a call, so a seat's next call on a tile code from the
+//! discarder may belong to a later discard of the same code (the seat passed this one, and a pon
+//! elsewhere skipped its draw in between). Each discard some seat's next entry could call is a
+//! decision (each such call, or none); the walk takes the first choice of each, and when the rest
+//! of the log then cannot be placed, the decisions are searched depth first until it can.
 
 use super::log::{Discard, Draw, DrawKind, Outcome, Round, Tile};
 use crate::generated::red as k;
+
+mod wall;
+
+use wall::build_wall;
 
 /// One decision of the logged game.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -33,11 +43,11 @@ pub struct Plan {
 }
 
 /// Where the engine deals from (rules/kernel/game_state.rs: `WALL_*`).
-const LIVE_START: usize = 52;
-const LIVE_END: usize = 122;
-const DORA: usize = 122;
-const URA: usize = 127;
-const RINSHAN: usize = 132;
+pub(super) const LIVE_START: usize = 52;
+pub(super) const LIVE_END: usize = 122;
+pub(super) const DORA: usize = 122;
+pub(super) const URA: usize = 127;
+pub(super) const RINSHAN: usize = 132;
 
 /// Short tile names as players write them: `1m`..`9m`, `0m` for a red five, `1z`..`7z` for honors.
 pub fn tile_name(t: Tile) -> String {
@@ -47,8 +57,16 @@ pub fn tile_name(t: Tile) -> String {
     format!("{number}{suit}")
 }
 
+/// Walks tried per round before giving up (a wrong call decision is usually caught within a
+/// few turns, so the search stays small).
+const MAX_WALKS: usize = 4096;
+
 struct Walker<'a> {
     round: &'a Round,
+    /// The option to take at each call decision met (index by decision), 0 past the end.
+    choices: &'a [usize],
+    /// How many options each call decision met had.
+    options: Vec<usize>,
     drawn: [usize; 4],
     discarded: [usize; 4],
     live: Vec<Tile>,
@@ -110,8 +128,10 @@ impl<'a> Walker<'a> {
         }
     }
 
-    /// A seat whose next draw entry calls tile `t` discarded by `p`: pon and kan first, then chi.
-    fn caller(&self, p: usize, t: Tile) -> Option<(usize, Draw)> {
+    /// The seat that calls tile `t` discarded by `p`, if any: the seats whose next draw entry
+    /// calls it (pon and kan first, then chi) and nobody are the options of a decision.
+    fn caller(&mut self, p: usize, t: Tile) -> Option<(usize, Draw)> {
+        let mut callers = Vec::new();
         let mut chi = None;
         for j in 1..4 {
             let q = (p + j) % 4;
@@ -122,13 +142,19 @@ impl<'a> Walker<'a> {
                 Draw::Pon { called, from, .. } | Draw::OpenKan { called, from, .. }
                     if from.seat_of(q) == p && called.code() == t.code() =>
                 {
-                    return Some((q, *d));
+                    callers.push((q, *d));
                 }
                 Draw::Chi { called, .. } if j == 1 && called.code() == t.code() => chi = Some((q, *d)),
                 _ => {}
             }
         }
-        chi
+        callers.extend(chi);
+        if callers.is_empty() {
+            return None;
+        }
+        let decision = self.options.len();
+        self.options.push(callers.len() + 1);
+        callers.get(self.choices.get(decision).copied().unwrap_or(0)).copied()
     }
 
     /// Plays seat `p`'s turn from its next discard entry on; returns the seat that draws next
@@ -278,40 +304,78 @@ impl<'a> Walker<'a> {
             )),
         }
     }
+
+    /// Plays the whole round; `Err` when the log cannot be placed with these call decisions.
+    fn walk(&mut self) -> Result<(), String> {
+        let round = self.round;
+        let mut next = Some((round.dealer(), false));
+        while let Some((p, replacement)) = next {
+            if !self.draw(p, replacement)? {
+                if replacement {
+                    return Err(format!("draws of seat {p}: a kan with no replacement tile after it"));
+                }
+                break;
+            }
+            next = self.turn(p)?;
+        }
+        for p in 0..4 {
+            if self.drawn[p] != round.draws[p].len() || self.discarded[p] != round.discards[p].len() {
+                return Err(format!(
+                    "seat {p}: {} of {} draws and {} of {} discards are reached in turn order; the rest cannot be placed",
+                    self.drawn[p],
+                    round.draws[p].len(),
+                    self.discarded[p],
+                    round.discards[p].len()
+                ));
+            }
+        }
+        Ok(())
+    }
 }
 
 /// Walks `round` in the order of play and builds its wall.
 pub fn plan(round: &Round) -> Result<Plan, String> {
-    let mut w = Walker {
-        round,
-        drawn: [0; 4],
-        discarded: [0; 4],
-        live: Vec::new(),
-        rinshan: Vec::new(),
-        moves: Vec::new(),
-        riichi: [None; 4],
-    };
-    let mut next = Some((round.dealer(), false));
-    while let Some((p, replacement)) = next {
-        if !w.draw(p, replacement)? {
-            if replacement {
-                return Err(format!("draws of seat {p}: a kan with no replacement tile after it"));
+    let mut choices: Vec<usize> = Vec::new();
+    let mut first_error = None;
+    for _ in 0..MAX_WALKS {
+        let mut w = Walker {
+            round,
+            choices: &choices,
+            options: Vec::new(),
+            drawn: [0; 4],
+            discarded: [0; 4],
+            live: Vec::new(),
+            rinshan: Vec::new(),
+            moves: Vec::new(),
+            riichi: [None; 4],
+        };
+        match w.walk() {
+            Ok(()) => return finish(w),
+            Err(e) => {
+                // The first walk's error is the one to report: it says where the log stops
+                // fitting the plainest order of play.
+                first_error.get_or_insert(e);
+                // The next decisions depth first: the last decision with an option left takes
+                // its next option, the ones after it start over.
+                let mut next = choices.clone();
+                next.resize(w.options.len(), 0);
+                match (0..next.len()).rev().find(|&i| next[i] + 1 < w.options[i]) {
+                    Some(i) => {
+                        next.truncate(i + 1);
+                        next[i] += 1;
+                        choices = next;
+                    }
+                    None => break,
+                }
             }
-            break;
-        }
-        next = w.turn(p)?;
-    }
-    for p in 0..4 {
-        if w.drawn[p] != round.draws[p].len() || w.discarded[p] != round.discards[p].len() {
-            return Err(format!(
-                "seat {p}: {} of {} draws and {} of {} discards are reached in turn order; the rest cannot be placed",
-                w.drawn[p],
-                round.draws[p].len(),
-                w.discarded[p],
-                round.discards[p].len()
-            ));
         }
     }
+    Err(first_error.unwrap_or_default())
+}
+
+/// The plan of a walk that placed the whole log.
+fn finish(w: Walker) -> Result<Plan, String> {
+    let round = w.round;
     let riichi_paid: [u32; 4] = std::array::from_fn(|p| match w.riichi[p] {
         Some(at) => u32::from(at != round.discards[p].len() || w.rons_on(p).is_empty()),
         None => 0,
@@ -321,68 +385,4 @@ pub fn plan(round: &Round) -> Result<Plan, String> {
         moves: w.moves,
         riichi_paid,
     })
-}
-
-/// Places the logged tiles where the engine reads them and fills the rest with the unused tiles.
-fn build_wall(round: &Round, live: &[Tile], rinshan: &[Tile]) -> Result<[u8; 136], String> {
-    if rinshan.len() > 4 || round.dora.len() > 5 || round.ura.len() > 5 {
-        return Err(format!(
-            "{} replacement draws, {} dora and {} ura indicators: at most 4, 5 and 5 fit the dead wall",
-            rinshan.len(),
-            round.dora.len(),
-            round.ura.len()
-        ));
-    }
-    if LIVE_START + live.len() > LIVE_END - rinshan.len() {
-        return Err(format!(
-            "{} live draws with {} kans: the live wall holds {}",
-            live.len(),
-            rinshan.len(),
-            LIVE_END - LIVE_START - rinshan.len()
-        ));
-    }
-    let mut slots: [Option<Tile>; 136] = [None; 136];
-    let dealer = round.dealer();
-    for j in 0..4 {
-        let hand = &round.hands[(dealer + j) % 4];
-        for (i, t) in hand.iter().enumerate().take(13) {
-            slots[j * 13 + i] = Some(*t);
-        }
-    }
-    let placed = [
-        (LIVE_START, live),
-        (DORA, round.dora.as_slice()),
-        (URA, round.ura.as_slice()),
-        (RINSHAN, rinshan),
-    ];
-    for (start, tiles) in placed {
-        for (i, t) in tiles.iter().enumerate() {
-            slots[start + i] = Some(*t);
-        }
-    }
-    // Every value's copies: four of each type, one of them red for the fives of the three suits.
-    let mut left = [4i32; 37];
-    for suit in 0..3 {
-        left[suit * 9 + 4] = 3;
-        left[34 + suit] = 1;
-    }
-    for t in slots.iter().flatten() {
-        let v = usize::from(t.value());
-        left[v] -= 1;
-        if left[v] < 0 {
-            return Err(format!(
-                "tile {} appears more often than the set holds (hands, draws and indicators together)",
-                tile_name(*t)
-            ));
-        }
-    }
-    let mut spare = (0..37u8).flat_map(|v| std::iter::repeat_n(v, left[usize::from(v)].max(0) as usize));
-    let mut wall = [0u8; 136];
-    for (i, slot) in slots.iter().enumerate() {
-        wall[i] = match slot {
-            Some(t) => t.value(),
-            None => spare.next().ok_or("more tiles placed than the wall holds")?,
-        };
-    }
-    Ok(wall)
 }

@@ -222,7 +222,8 @@ fn engine_yaku(w: &WinRecord) -> Vec<(String, YakuHan)> {
         .map(|id| {
             let i = id as usize;
             let han = if k::YAKU_YAKUMAN[i] > 0 {
-                YakuHan::Yakuman(k::YAKU_YAKUMAN[i])
+                // The spec's double yakuman count once where the variant says so.
+                YakuHan::Yakuman(if k::DOUBLE_YAKUMAN { k::YAKU_YAKUMAN[i] } else { 1 })
             } else if w.concealed {
                 YakuHan::Han(k::YAKU_HAN_CLOSED[i])
             } else {
@@ -465,6 +466,16 @@ fn finish_round(run: &mut Run, step: &Step, i: usize, table: &Table, report: &mu
     }
 }
 
+/// The length of the games: East only when every log's rule says so (`東`, as in `鳳東喰赤`),
+/// else East and South. One replay plays one length: replay East and half games apart.
+fn mode_of(games: &[Game]) -> Mode {
+    if games.iter().all(|g| g.rule.contains('東')) {
+        Mode::East
+    } else {
+        Mode::Half
+    }
+}
+
 /// Replays `games` on `backend` (one env per game, all stepped together; the GPU backend opens
 /// the first adapter).
 pub fn replay(games: &[Game], backend: Backend) -> Result<Report, EnvError> {
@@ -491,7 +502,7 @@ fn replay_in(
     let n = games.len();
     let mut env = make_env(Config {
         variant: Variant::Red,
-        mode: Mode::Half,
+        mode: mode_of(games),
         batch: n,
         backend,
         seed: 0,

@@ -18,6 +18,15 @@ impl Tile {
         matches!(code, 11..=19 | 21..=29 | 31..=39 | 41..=47 | 51..=53).then_some(Tile(code))
     }
 
+    /// The tile of our value (see [`Tile::value`]), `None` past 36.
+    pub fn from_value(value: u8) -> Option<Tile> {
+        match value {
+            0..=33 => Tile::new((value / 9 + 1) * 10 + value % 9 + 1),
+            34..=36 => Tile::new(value - 34 + 51),
+            _ => None,
+        }
+    }
+
     /// The Tenhou code.
     pub fn code(self) -> u8 {
         self.0

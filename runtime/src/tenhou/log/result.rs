@@ -72,6 +72,16 @@ const LIMITS: [(&str, Limit); 7] = [
     ("切り上げ満貫", Limit::Mangan),
 ];
 
+impl Limit {
+    /// The name Tenhou writes in the points text, e.g. `満貫`.
+    pub fn tenhou_name(self) -> &'static str {
+        LIMITS
+            .iter()
+            .find(|(_, limit)| *limit == self)
+            .map_or("", |(name, _)| name)
+    }
+}
+
 /// What a yaku is worth: han, or a number of yakuman.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum YakuHan {
@@ -117,39 +127,43 @@ pub enum Outcome {
     Draw { kind: DrawKind, deltas: Option<[i32; 4]> },
 }
 
-/// Tenhou's yaku names and ours.
+/// Tenhou's yaku names and ours, in the order Tenhou lists a win's yaku (read off the shared
+/// logs: riichi first, then ippatsu and tsumo, dora last; the only disagreements are two hands
+/// where Tenhou lists a yakuhai before a wind or after sanankou, as its order there follows the
+/// hand). Spellings that other converters write come after Tenhou's own, so the first entry of a
+/// yaku is the one a writer uses.
 const YAKU: [(&str, &str); 56] = [
-    ("門前清自摸和", "menzen_tsumo"),
     ("立直", "riichi"),
+    ("両立直", "double_riichi"),
     ("一発", "ippatsu"),
+    ("門前清自摸和", "menzen_tsumo"),
     ("槍槓", "chankan"),
     ("嶺上開花", "rinshan"),
     ("海底摸月", "haitei"),
     ("河底撈魚", "houtei"),
     ("平和", "pinfu"),
-    ("断幺九", "tanyao"),
     ("一盃口", "iipeikou"),
-    ("自風 東", "yakuhai_seat_wind"),
-    ("自風 南", "yakuhai_seat_wind"),
-    ("自風 西", "yakuhai_seat_wind"),
-    ("自風 北", "yakuhai_seat_wind"),
+    ("七対子", "chiitoitsu"),
+    ("一気通貫", "ittsu"),
+    ("三色同順", "sanshoku_doujun"),
+    ("三槓子", "sankantsu"),
+    ("三暗刻", "sanankou"),
+    ("対々和", "toitoi"),
+    ("断幺九", "tanyao"),
+    ("三色同刻", "sanshoku_doukou"),
+    ("小三元", "shousangen"),
     ("場風 東", "yakuhai_round_wind"),
     ("場風 南", "yakuhai_round_wind"),
     ("場風 西", "yakuhai_round_wind"),
     ("場風 北", "yakuhai_round_wind"),
-    ("役牌 白", "yakuhai_white"),
-    ("役牌 發", "yakuhai_green"),
+    ("自風 東", "yakuhai_seat_wind"),
+    ("自風 南", "yakuhai_seat_wind"),
+    ("自風 西", "yakuhai_seat_wind"),
+    ("自風 北", "yakuhai_seat_wind"),
     ("役牌 中", "yakuhai_red"),
-    ("両立直", "double_riichi"),
-    ("七対子", "chiitoitsu"),
+    ("役牌 發", "yakuhai_green"),
+    ("役牌 白", "yakuhai_white"),
     ("混全帯幺九", "chanta"),
-    ("一気通貫", "ittsu"),
-    ("三色同順", "sanshoku_doujun"),
-    ("三色同刻", "sanshoku_doukou"),
-    ("三槓子", "sankantsu"),
-    ("対々和", "toitoi"),
-    ("三暗刻", "sanankou"),
-    ("小三元", "shousangen"),
     ("混老頭", "honroutou"),
     ("二盃口", "ryanpeikou"),
     ("純全帯幺九", "junchan"),
@@ -167,20 +181,37 @@ const YAKU: [(&str, &str); 56] = [
     ("純正九蓮宝燈", "junsei_chuuren"),
     ("国士無双", "kokushi"),
     ("国士無双１３面", "kokushi_13"),
-    ("国士無双13面", "kokushi_13"),
     ("大四喜", "daisuushi"),
     ("小四喜", "shousuushi"),
     ("四槓子", "suukantsu"),
     ("ドラ", "dora"),
     ("赤ドラ", "aka"),
     ("裏ドラ", "ura"),
-    // Converters from other sites write the full name of double riichi.
+    // Converters from other sites write these spellings.
     ("ダブル立直", "double_riichi"),
+    ("国士無双13面", "kokushi_13"),
 ];
+
+/// The wind names of the yakuhai of winds, East to North.
+const WINDS: [char; 4] = ['東', '南', '西', '北'];
 
 /// Our name for a yaku Tenhou writes as `tenhou`.
 pub fn yaku_name(tenhou: &str) -> Option<&'static str> {
     YAKU.iter().find(|(name, _)| *name == tenhou).map(|(_, ours)| *ours)
+}
+
+/// The name Tenhou writes for our yaku `ours` and where Tenhou lists it among a win's yaku. The
+/// yakuhai of winds need the seat's and the round's wind (0 = East .. 3 = North).
+pub fn tenhou_yaku(ours: &str, seat_wind: usize, round_wind: usize) -> Option<(&'static str, usize)> {
+    let wind = match ours {
+        "yakuhai_seat_wind" => WINDS.get(seat_wind),
+        "yakuhai_round_wind" => WINDS.get(round_wind),
+        _ => None,
+    };
+    YAKU.iter()
+        .enumerate()
+        .find(|(_, (name, our))| *our == ours && wind.is_none_or(|&w| name.ends_with(w)))
+        .map(|(rank, (name, _))| (*name, rank))
 }
 
 pub(super) fn parse_result(v: &Value) -> Result<Outcome, String> {
@@ -301,13 +332,16 @@ fn number(digits: &str) -> Result<u32, String> {
     n.ok_or_else(|| format!("{digits:?} is not a number"))
 }
 
-/// `混一色(2飜)` or `大三元(役満)`.
+/// `混一色(2飜)` or `大三元(役満)`; `国士無双１３面(ダブル役満)` for a yakuman that counts double
+/// (Tenhou's rules count each yakuman once and never write it; the writer does for a variant
+/// whose spec makes a yakuman double).
 fn parse_yaku(v: &Value) -> Result<Yaku, String> {
     let text = v.as_str().ok_or_else(|| format!("yaku {} is not a string", show(v)))?;
     let split = text.strip_suffix(')').and_then(|t| t.rsplit_once('('));
     let (name, value) = split.ok_or_else(|| format!("yaku {text:?} is not written NAME(N飜) or NAME(役満)"))?;
     let han = match value {
         "役満" => YakuHan::Yakuman(1),
+        "ダブル役満" => YakuHan::Yakuman(2),
         _ => match value.strip_suffix('飜').map(number) {
             Some(Ok(han)) => YakuHan::Han(han),
             _ => return Err(format!("yaku {text:?}: {value:?} is neither N飜 nor 役満")),

@@ -1,0 +1,68 @@
+//! The wall a logged round was dealt from, as the engine reads it.
+
+use super::{tile_name, DORA, LIVE_END, LIVE_START, RINSHAN, URA};
+use crate::tenhou::log::{Round, Tile};
+
+/// Places the logged tiles where the engine reads them and fills the rest with the unused tiles.
+pub(super) fn build_wall(round: &Round, live: &[Tile], rinshan: &[Tile]) -> Result<[u8; 136], String> {
+    if rinshan.len() > 4 || round.dora.len() > 5 || round.ura.len() > 5 {
+        return Err(format!(
+            "{} replacement draws, {} dora and {} ura indicators: at most 4, 5 and 5 fit the dead wall",
+            rinshan.len(),
+            round.dora.len(),
+            round.ura.len()
+        ));
+    }
+    if LIVE_START + live.len() > LIVE_END - rinshan.len() {
+        return Err(format!(
+            "{} live draws with {} kans: the live wall holds {}",
+            live.len(),
+            rinshan.len(),
+            LIVE_END - LIVE_START - rinshan.len()
+        ));
+    }
+    let mut slots: [Option<Tile>; 136] = [None; 136];
+    let dealer = round.dealer();
+    for j in 0..4 {
+        let hand = &round.hands[(dealer + j) % 4];
+        for (i, t) in hand.iter().enumerate().take(13) {
+            slots[j * 13 + i] = Some(*t);
+        }
+    }
+    let placed = [
+        (LIVE_START, live),
+        (DORA, round.dora.as_slice()),
+        (URA, round.ura.as_slice()),
+        (RINSHAN, rinshan),
+    ];
+    for (start, tiles) in placed {
+        for (i, t) in tiles.iter().enumerate() {
+            slots[start + i] = Some(*t);
+        }
+    }
+    // Every value's copies: four of each type, one of them red for the fives of the three suits.
+    let mut left = [4i32; 37];
+    for suit in 0..3 {
+        left[suit * 9 + 4] = 3;
+        left[34 + suit] = 1;
+    }
+    for t in slots.iter().flatten() {
+        let v = usize::from(t.value());
+        left[v] -= 1;
+        if left[v] < 0 {
+            return Err(format!(
+                "tile {} appears more often than the set holds (hands, draws and indicators together)",
+                tile_name(*t)
+            ));
+        }
+    }
+    let mut spare = (0..37u8).flat_map(|v| std::iter::repeat_n(v, left[usize::from(v)].max(0) as usize));
+    let mut wall = [0u8; 136];
+    for (i, slot) in slots.iter().enumerate() {
+        wall[i] = match slot {
+            Some(t) => t.value(),
+            None => spare.next().ok_or("more tiles placed than the wall holds")?,
+        };
+    }
+    Ok(wall)
+}

@@ -1,0 +1,212 @@
+//! The result of a round as Tenhou writes it: the points text of a win, each win's score changes
+//! (honba, riichi sticks and pao included), the draw names and their tenpai or nagashi payments.
+//!
+//! Payments are worked out here from han, fu and yakuman by the standard table rather than read
+//! off the engine's rewards: a double ron pays two hands in one step, a pao tsumo hides the
+//! shares, and a game's last step adds uma. The recorder checks the sum against the scores the
+//! engine carries into the next round.
+
+use crate::env::{DrawKind as EngineDraw, DrawRecord, WinRecord};
+use crate::generated::red as k;
+use crate::tenhou::log::{tenhou_yaku, DrawKind, Limit, Outcome, Yaku, YakuHan};
+
+/// What a win pays before honba and riichi sticks.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Payment {
+    Ron(u32),
+    /// Each non-dealer pays `others`; the dealer pays `dealer`, `None` when the dealer won.
+    Tsumo {
+        dealer: Option<u32>,
+        others: u32,
+    },
+}
+
+/// Base points of a hand: fu x 2^(han+2) up to the limits (the kernel's `base_points` with this
+/// variant's `kiriage_mangan` and `kazoe_yakuman`).
+pub fn base_points(han: u32, fu: u32, yakuman: u32) -> u32 {
+    match han {
+        _ if yakuman > 0 => 8000 * yakuman,
+        13.. if k::KAZOE_YAKUMAN => 8000,
+        11.. => 6000,
+        8.. => 4000,
+        6.. => 3000,
+        5 => 2000,
+        _ => {
+            let raw = fu << (han + 2);
+            if raw >= 2000 || (k::KIRIAGE_MANGAN && raw == 1920) {
+                2000
+            } else {
+                raw
+            }
+        }
+    }
+}
+
+/// The limit a base reaches, named in the points text instead of fu and han.
+pub fn limit_of(base: u32) -> Option<Limit> {
+    match base {
+        8000.. => Some(Limit::Yakuman),
+        6000.. => Some(Limit::Sanbaiman),
+        4000.. => Some(Limit::Baiman),
+        3000.. => Some(Limit::Haneman),
+        2000.. => Some(Limit::Mangan),
+        _ => None,
+    }
+}
+
+fn round_up_100(x: u32) -> u32 {
+    x.div_ceil(100) * 100
+}
+
+pub fn payment(base: u32, dealer: bool, tsumo: bool) -> Payment {
+    match (tsumo, dealer) {
+        (false, false) => Payment::Ron(round_up_100(base * 4)),
+        (false, true) => Payment::Ron(round_up_100(base * 6)),
+        (true, false) => Payment::Tsumo {
+            dealer: Some(round_up_100(base * 2)),
+            others: round_up_100(base),
+        },
+        (true, true) => Payment::Tsumo {
+            dealer: None,
+            others: round_up_100(base * 2),
+        },
+    }
+}
+
+/// `30符4飜7700点`, `30符2飜500-1000点` (a non-dealer's tsumo: non-dealers, dealer),
+/// `40符3飜2600点∀` (a dealer's tsumo: each pays), `満貫8000点`.
+pub fn points_text(fu: u32, han: u32, limit: Option<Limit>, pay: Payment) -> String {
+    let hand = match limit {
+        Some(l) => l.tenhou_name().to_string(),
+        None => format!("{fu}符{han}飜"),
+    };
+    match pay {
+        Payment::Ron(p) => format!("{hand}{p}点"),
+        Payment::Tsumo {
+            dealer: Some(d),
+            others,
+        } => format!("{hand}{others}-{d}点"),
+        Payment::Tsumo { dealer: None, others } => format!("{hand}{others}点∀"),
+    }
+}
+
+/// Who pays what for one win: `from` is `None` for a tsumo; `honba` and `sticks` (riichi
+/// deposits collected) are counted only for the winner nearest the discarder, so give 0 for the
+/// other one of a double ron. A liable seat (`pao`) pays half of a ron's value (honba to the
+/// discarder) and all of a tsumo.
+pub fn win_deltas(
+    winner: usize,
+    from: Option<usize>,
+    dealer: usize,
+    pay: Payment,
+    honba: u32,
+    sticks: u32,
+    pao: Option<usize>,
+) -> [i32; 4] {
+    let mut d = [0i64; 4];
+    let mut move_points = |payer: usize, points: u32| {
+        d[payer] -= i64::from(points);
+        d[winner] += i64::from(points);
+    };
+    match (pay, from) {
+        (Payment::Ron(value), Some(from)) => {
+            let honba = honba * k::HONBA_RON_POINTS;
+            match pao {
+                Some(liable) if liable != from => {
+                    move_points(liable, value / 2);
+                    move_points(from, value - value / 2 + honba);
+                }
+                _ => move_points(from, value + honba),
+            }
+        }
+        (Payment::Tsumo { dealer: share, others }, _) => {
+            for p in (0..4).filter(|&p| p != winner) {
+                let amount = match share {
+                    Some(d) if p == dealer => d,
+                    _ => others,
+                } + honba * k::HONBA_TSUMO_POINTS;
+                move_points(pao.unwrap_or(p), amount);
+            }
+        }
+        // A ron with no discarder cannot be recorded; the caller always names one.
+        (Payment::Ron(_), None) => {}
+    }
+    d[winner] += i64::from(sticks * k::RIICHI_STICK_POINTS);
+    d.map(|x| x as i32)
+}
+
+/// A win's yaku as Tenhou lists them, dora, red fives and ura last (those with 0 han left out).
+pub fn yaku_list(rec: &WinRecord, seat_wind: usize, round_wind: usize) -> Vec<Yaku> {
+    let mut yaku: Vec<Yaku> = rec
+        .yaku_ids()
+        .map(|id| {
+            let i = id as usize;
+            let han = match k::YAKU_YAKUMAN[i] {
+                0 if rec.concealed => YakuHan::Han(k::YAKU_HAN_CLOSED[i]),
+                0 => YakuHan::Han(k::YAKU_HAN_OPEN[i]),
+                w if k::DOUBLE_YAKUMAN => YakuHan::Yakuman(w),
+                _ => YakuHan::Yakuman(1),
+            };
+            Yaku {
+                name: k::host::YAKU_NAMES[i],
+                han,
+            }
+        })
+        .collect();
+    for (name, n) in [("dora", rec.dora), ("aka", rec.aka), ("ura", rec.ura)] {
+        if n > 0 {
+            yaku.push(Yaku {
+                name,
+                han: YakuHan::Han(n),
+            });
+        }
+    }
+    yaku.sort_by_key(|y| tenhou_yaku(y.name, seat_wind, round_wind).map_or(usize::MAX, |(_, rank)| rank));
+    yaku
+}
+
+/// A round without a win, in engine seats (`dealer` too): the name and the payments Tenhou
+/// lists (tenpai payments for 1-3 tenpai seats, nagashi mangan as a mangan tsumo per seat).
+pub fn draw_outcome(rec: &DrawRecord, dealer: usize) -> Option<(DrawKind, Option<[i32; 4]>)> {
+    let kind = match rec.kind? {
+        EngineDraw::Exhaustive => {
+            let tenpai = rec.tenpai.iter().filter(|&&t| t).count() as i32;
+            return Some(match tenpai {
+                0 => (DrawKind::NoTenpai, None),
+                4 => (DrawKind::AllTenpai, None),
+                n => {
+                    let deltas = rec.tenpai.map(|t| if t { 3000 / n } else { -3000 / (4 - n) });
+                    (DrawKind::Exhaustive, Some(deltas))
+                }
+            });
+        }
+        EngineDraw::Nagashi => {
+            let mut deltas = [0i32; 4];
+            for w in (0..4).filter(|&w| rec.nagashi[w]) {
+                for p in (0..4).filter(|&p| p != w) {
+                    let amount = if p == dealer || w == dealer { 4000 } else { 2000 };
+                    deltas[p] -= amount;
+                    deltas[w] += amount;
+                }
+            }
+            return Some((DrawKind::Nagashi, Some(deltas)));
+        }
+        EngineDraw::Kyuushu => DrawKind::Kyuushu,
+        EngineDraw::FourRiichi => DrawKind::FourRiichi,
+        EngineDraw::TripleRon => DrawKind::TripleRon,
+        EngineDraw::FourKans => DrawKind::FourKans,
+        EngineDraw::FourWinds => DrawKind::FourWinds,
+    };
+    Some((kind, None))
+}
+
+/// The score changes of a result by seat: every win's, or the draw's payments.
+pub fn outcome_deltas(outcome: &Outcome) -> [i32; 4] {
+    let mut sum = [0i32; 4];
+    let mut add = |d: &[i32; 4]| (0..4).for_each(|p| sum[p] += d[p]);
+    match outcome {
+        Outcome::Wins(wins) => wins.iter().for_each(|w| add(&w.deltas)),
+        Outcome::Draw { deltas, .. } => deltas.iter().for_each(add),
+    }
+    sum
+}

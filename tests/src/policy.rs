@@ -1,0 +1,71 @@
+//! A policy for tests that want games to reach every situation: it always wins when it can,
+//! declares riichi and kans, calls often, and otherwise discards towards tenpai (a quarter of
+//! the time at random), so that riichi, tenpai draws, double rons and kans come up often.
+
+use rinshan::generated::red::{self as k, GameState};
+use rinshan::hand::shanten;
+use rinshan::random::Rng;
+
+/// Whether action `a` is set in a legal-action mask.
+pub fn legal(mask: &[u32; 3], a: u32) -> bool {
+    mask[(a / 32) as usize] >> (a % 32) & 1 == 1
+}
+
+/// The biased policy of the red variant, from its own random stream.
+pub struct Policy(pub Rng);
+
+impl Policy {
+    fn pick(&mut self, options: &[u32]) -> Option<u32> {
+        (!options.is_empty()).then(|| options[self.0.below(options.len() as u32) as usize])
+    }
+
+    pub fn act(&mut self, s: &GameState, mask: &[u32; 3]) -> u32 {
+        let all = |range: std::ops::Range<u32>| range.filter(|&a| legal(mask, a)).collect::<Vec<_>>();
+        for (a, percent) in [
+            (k::ACTION_TSUMO, 100),
+            (k::ACTION_RON, 100),
+            (k::ACTION_KYUUSHU, 50),
+            (k::ACTION_RIICHI, 90),
+        ] {
+            if legal(mask, a) && self.0.chance(percent) {
+                return a;
+            }
+        }
+        let kans = all(k::ACTION_SELF_KAN..k::ACTION_SELF_KAN + k::ACTION_SELF_KAN_COUNT);
+        let calls = [
+            (all(k::ACTION_OPEN_KAN..k::ACTION_OPEN_KAN + 1), 70),
+            (all(k::ACTION_PON..k::ACTION_PON_RED + 1), 50),
+            (all(k::ACTION_CHI_LEFT..k::ACTION_CHI_RIGHT_RED + 1), 35),
+            (kans, 80),
+        ];
+        for (options, percent) in calls {
+            if !options.is_empty() && self.0.chance(percent) {
+                return self.pick(&options).unwrap_or(k::ACTION_PASS);
+            }
+        }
+        if legal(mask, k::ACTION_PASS) {
+            return k::ACTION_PASS;
+        }
+        let mut discards = all(k::ACTION_DISCARD..k::ACTION_DISCARD + k::ACTION_DISCARD_COUNT);
+        discards.extend(all(k::ACTION_TSUMOGIRI..k::ACTION_TSUMOGIRI + 1));
+        if self.0.chance(25) {
+            return self.pick(&discards).unwrap_or(k::ACTION_PASS);
+        }
+        let p = s.current as usize;
+        let hand: [u8; 34] = std::array::from_fn(|t| (s.hands[p * 5 + t / 8] >> (t % 8 * 4) & 15) as u8);
+        let after = |a: u32| {
+            let v = if a == k::ACTION_TSUMOGIRI {
+                s.drawn
+            } else {
+                a - k::ACTION_DISCARD
+            };
+            let t = if v >= 34 { (v - 34) * 9 + 4 } else { v } as usize;
+            let mut h = hand;
+            h[t] -= 1;
+            shanten(&h).shanten
+        };
+        let best = discards.iter().map(|&a| after(a)).min();
+        let best: Vec<u32> = discards.iter().copied().filter(|&a| Some(after(a)) == best).collect();
+        self.pick(&best).unwrap_or(k::ACTION_PASS)
+    }
+}

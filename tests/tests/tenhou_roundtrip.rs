@@ -1,0 +1,399 @@
+//! Games played in rinshan, written as tenhou.net/6 logs (`tenhou::write`), read back
+//! (`tenhou::log`) and replayed (`tenhou::replay`): every round must replay as it was played.
+//!
+//! * random half games with a policy that takes every win, riichi, kan and many calls;
+//! * the scenarios' prepared rounds for what random play rarely reaches (triple ron, nagashi,
+//!   pao, four kans, four riichi, four winds, kyuushu), each the first round of a half game;
+//! * the Tenhou logs themselves: each logged round played on the kernel and recorded must give
+//!   back the logged line.
+
+use std::collections::BTreeMap;
+
+use rinshan::env::{Backend, Config, Env, Mode};
+use rinshan::generated::red::{self as k, GameState};
+use rinshan::random::Rng;
+use rinshan::tenhou::log::{collect_files, parse_game, read_game, Discard, Draw, Game, Outcome, Round, YakuHan};
+use rinshan::tenhou::plan::plan;
+use rinshan::tenhou::replay::replay;
+use rinshan::tenhou::write::{game_text, round_value, GameRecorder, Recorder, WriteError};
+use rinshan::Variant;
+use rinshan_tests::policy::{legal, Policy};
+use rinshan_tests::scenario::{build_wall, load, Actions};
+use rinshan_tests::shared_data;
+
+fn env(mode: Mode, batch: usize, seed: u64, auto_reset: bool) -> Env {
+    let mut config = Config::new(Variant::Red, batch);
+    config.mode = mode;
+    config.seed = seed;
+    config.auto_reset = auto_reset;
+    config.threads = Some(1);
+    Env::new(config).expect("a cpu env")
+}
+
+fn states(env: &Env) -> Vec<GameState> {
+    let words = env.states_words();
+    bytemuck::cast_slice::<u32, GameState>(&words).to_vec()
+}
+
+/// Writes each game, reads it back (it must read as what was recorded) and replays them all.
+fn round_trip(games: &[Game]) {
+    let read: Vec<Game> = games
+        .iter()
+        .enumerate()
+        .map(|(n, g)| {
+            let path = format!("game-{n}.json");
+            let back = parse_game(&path, &game_text(g)).unwrap_or_else(|e| panic!("{e}"));
+            let recorded = Game { path, ..g.clone() };
+            assert_eq!(back, recorded, "game {n} reads back as something else");
+            back
+        })
+        .collect();
+    let report = replay(&read, Backend::Cpu).expect("cpu replay");
+    for m in &report.mismatches {
+        eprintln!("{m}");
+        if let Some(g) = read.iter().find(|g| g.path == m.file) {
+            eprintln!("{}", game_text(g).lines().nth(m.line - 1).unwrap_or_default());
+        }
+    }
+    assert!(
+        report.all_agree(),
+        "{} mismatches (listed above): {report:?}",
+        report.mismatches.len()
+    );
+    assert_eq!((report.games, report.games_ended_right), (games.len(), games.len()));
+}
+
+/// How often each situation the format can hold came up.
+fn tally(games: &[Game]) -> BTreeMap<&'static str, usize> {
+    let mut n: BTreeMap<&'static str, usize> = BTreeMap::new();
+    let mut add = |what: &'static str, yes: bool| *n.entry(what).or_default() += usize::from(yes);
+    for r in games.iter().flat_map(|g| &g.rounds) {
+        for seat in 0..4 {
+            for d in &r.draws[seat] {
+                add("chi", matches!(d, Draw::Chi { .. }));
+                add("pon", matches!(d, Draw::Pon { .. }));
+                add("open kan", matches!(d, Draw::OpenKan { .. }));
+            }
+            for d in &r.discards[seat] {
+                add("closed kan", matches!(d, Discard::ClosedKan { .. }));
+                add("added kan", matches!(d, Discard::AddedKan { .. }));
+                add("riichi", matches!(d, Discard::Riichi(_)));
+                add("tsumogiri riichi (r60)", matches!(d, Discard::Riichi(None)));
+            }
+        }
+        add("kan dora", r.dora.len() > 1);
+        match &r.outcome {
+            Outcome::Wins(ws) => {
+                add("double ron", ws.len() == 2);
+                for w in ws {
+                    add("tsumo", w.tsumo);
+                    add("ron", !w.tsumo);
+                    let robbed = (!w.tsumo).then(|| r.discards[w.from].last()).flatten();
+                    add("robbed closed kan", matches!(robbed, Some(Discard::ClosedKan { .. })));
+                    add("ronned riichi discard", matches!(robbed, Some(Discard::Riichi(_))));
+                    add("yakuman", w.yaku.iter().any(|y| matches!(y.han, YakuHan::Yakuman(_))));
+                    add("pao", w.pao != w.winner);
+                    add("limit hand", w.limit.is_some());
+                    for (yaku, name) in [
+                        ("chankan", "chankan"),
+                        ("rinshan", "rinshan"),
+                        ("haitei", "haitei"),
+                        ("houtei", "houtei"),
+                        ("ura dora", "ura"),
+                        ("ippatsu", "ippatsu"),
+                    ] {
+                        add(yaku, w.yaku.iter().any(|y| y.name == name));
+                    }
+                }
+            }
+            Outcome::Draw { kind, .. } => add(kind.tenhou_name(), true),
+        }
+    }
+    n.retain(|_, v| *v > 0);
+    n
+}
+
+/// `games` games of `mode` played by the policy, as the recorder wrote them.
+fn play(mode: Mode, games: usize, seed: u64) -> Vec<Game> {
+    let batch = 48;
+    let mut env = env(mode, batch, seed, true);
+    env.reset();
+    let mut recorder = Recorder::new(&env).expect("recorder");
+    let mut policies: Vec<Policy> = (0..batch as u64).map(|i| Policy(Rng::new(seed * 1000 + i))).collect();
+    let mut done = Vec::new();
+    while done.len() < games {
+        let masks = env.last().legal_action_mask.clone();
+        let actions: Vec<u32> = states(&env)
+            .iter()
+            .zip(&masks)
+            .zip(&mut policies)
+            .map(|((s, m), policy)| policy.act(s, m))
+            .collect();
+        env.step(&actions).expect("step");
+        recorder.observe(&env, &actions).expect("recorded");
+        done.extend(recorder.take_finished().into_iter().map(|f| f.game));
+    }
+    assert_eq!(recorder.dropped(), 0);
+    done
+}
+
+#[test]
+fn random_half_games_round_trip() {
+    let games = play(Mode::Half, 400, 7);
+    let counts = tally(&games);
+    let rounds: usize = games.iter().map(|g| g.rounds.len()).sum();
+    eprintln!("{} half games, {rounds} rounds: {counts:?}", games.len());
+    let common = [
+        "closed kan",
+        "added kan",
+        "open kan",
+        "chankan",
+        "double ron",
+        "kan dora",
+        "ura dora",
+    ];
+    let draws = ["流局", "全員不聴", "全員聴牌", "九種九牌", "四槓散了"];
+    for what in common.iter().chain(&draws) {
+        assert!(counts.contains_key(what), "no {what} in {} random games", games.len());
+    }
+    round_trip(&games);
+}
+
+#[test]
+fn random_east_games_round_trip() {
+    let games = play(Mode::East, 60, 3);
+    assert!(games.iter().all(|g| g.rule == "鳳東喰赤"));
+    assert!(
+        games.iter().all(|g| g.rounds.iter().all(|r| r.kyoku < 8)),
+        "east games end in the South round at the latest"
+    );
+    round_trip(&games);
+}
+
+/// The first round of each of these scenarios, then the rest of a half game by the policy.
+const PREPARED: [(&str, &str); 10] = [
+    ("triple_ron_aborts", "三家和了"),
+    ("nagashi_mangan", "流し満貫"),
+    ("pao_daisangen_ron_split", "pao"),
+    ("pao_daisangen_tsumo_liable_pays_all", "pao"),
+    ("four_kans_two_players", "四槓散了"),
+    ("four_riichi", "四家立直"),
+    ("four_winds", "四風連打"),
+    ("kyuushu_kyuuhai", "九種九牌"),
+    ("chankan_on_added_kan", "chankan"),
+    ("chankan_on_closed_kan_kokushi", "robbed closed kan"),
+];
+
+#[test]
+fn prepared_rounds_round_trip() {
+    let all = load();
+    let scenarios: Vec<_> = PREPARED
+        .iter()
+        .map(|(name, _)| {
+            all.iter()
+                .find(|s| s.name == *name)
+                .unwrap_or_else(|| panic!("no scenario {name}"))
+        })
+        .collect();
+    let acts = Actions {
+        blocks: k::host::ACTION_BLOCKS.to_vec(),
+        red: true,
+    };
+    let walls: Vec<[u8; 136]> = scenarios
+        .iter()
+        .map(|sc| {
+            assert!(
+                sc.start.is_none(),
+                "{}: a prepared round starts from East 1's table",
+                sc.name
+            );
+            build_wall(sc, true)
+                .unwrap_or_else(|e| panic!("{}: {e}", sc.name))
+                .map(|v| v as u8)
+        })
+        .collect();
+    let dealers: Vec<u32> = scenarios.iter().map(|sc| sc.dealer).collect();
+    let n = scenarios.len();
+    let mut env = env(Mode::Half, n, 11, false);
+    env.reset_with_walls(&walls, &dealers).expect("walls");
+    let mut recorder = Recorder::new(&env).expect("recorder");
+    let mut policies: Vec<Policy> = (0..n as u64).map(|i| Policy(Rng::new(77 + i))).collect();
+    let mut next_step = vec![0usize; n];
+    let mut games: Vec<Option<Game>> = vec![None; n];
+    while games.iter().any(Option::is_none) {
+        let step = env.last().clone();
+        let now = states(&env);
+        let mut actions = vec![k::ACTION_PASS; n];
+        for (i, sc) in scenarios.iter().enumerate() {
+            let mask = &step.legal_action_mask[i];
+            let scripted = sc
+                .steps
+                .get(next_step[i])
+                .filter(|_| now[i].rounds == 0 && !step.terminated[i]);
+            actions[i] = match scripted {
+                Some(s) if s.auto.is_some() => {
+                    if legal(mask, k::ACTION_TSUMOGIRI) {
+                        k::ACTION_TSUMOGIRI
+                    } else {
+                        k::ACTION_PASS
+                    }
+                }
+                Some(s) => {
+                    let action = s.action.as_deref().unwrap_or_default();
+                    assert_eq!(
+                        Some(step.current_player[i]),
+                        s.seat,
+                        "{}: step {}",
+                        sc.name,
+                        next_step[i]
+                    );
+                    next_step[i] += 1;
+                    acts.id(action).unwrap_or_else(|e| panic!("{}: {e}", sc.name))
+                }
+                None => policies[i].act(&now[i], mask),
+            };
+        }
+        env.step(&actions).expect("step");
+        recorder.observe(&env, &actions).expect("recorded");
+        for f in recorder.take_finished() {
+            games[f.env] = Some(f.game);
+        }
+    }
+    let games: Vec<Game> = games.into_iter().flatten().collect();
+    for ((name, what), g) in PREPARED.iter().zip(&games) {
+        let first = tally(std::slice::from_ref(&Game {
+            rounds: g.rounds[..1].to_vec(),
+            ..g.clone()
+        }));
+        assert!(
+            first.contains_key(what),
+            "{name}: its first round has no {what}: {first:?}"
+        );
+    }
+    eprintln!("prepared games: {:?}", tally(&games));
+    round_trip(&games);
+}
+
+/// Plays a logged round on the kernel from the wall the planner rebuilds, records it, and
+/// returns the recorded round.
+fn record_logged(r: &Round) -> Round {
+    let p = plan(r).unwrap_or_else(|e| panic!("{r}: {e}"));
+    let wall = p.wall.map(u32::from);
+    let dealer = r.dealer() as u32;
+    let mut s = k::game_new(k::ResetInput {
+        seed: [1, 2],
+        mode: 2,
+        dealer,
+        use_wall: 1,
+        wall,
+        uma: [0; 4],
+        penalty: -1.0,
+        auto_reset: 0,
+    });
+    let (round, honba, sticks, scores) = (r.kyoku, r.honba, r.sticks, r.scores);
+    k::game_deal(
+        &mut s,
+        k::DealInput {
+            deal: 1,
+            round,
+            dealer,
+            honba,
+            sticks,
+            scores,
+            wall,
+        },
+    );
+    let mut recorder = GameRecorder::new(&s).unwrap_or_else(|e| panic!("{r}: {e}"));
+    let mut moves = p.moves.iter().peekable();
+    loop {
+        let claim = legal(&s.mask, k::ACTION_PASS);
+        let action = match moves.peek() {
+            Some(m) if m.seat == s.current as usize && m.claim == claim => moves.next().map_or(0, |m| m.action),
+            _ if claim => k::ACTION_PASS,
+            m => panic!("{r}: the log's {m:?} does not fit seat {}", s.current),
+        };
+        let before = s;
+        k::game_step(&mut s, action);
+        let game = recorder
+            .record(&before, action, &s)
+            .unwrap_or_else(|e| panic!("{r}: {e}"));
+        if let Some(round) = game
+            .map(|g| g.rounds[0].clone())
+            .or_else(|| recorder.rounds().first().cloned())
+        {
+            return round;
+        }
+    }
+}
+
+#[test]
+fn logged_rounds_are_recorded_as_tenhou_wrote_them() {
+    let files = collect_files(&[shared_data().join("tenhou")]).expect("the log folder lists");
+    let mut rounds = 0;
+    for f in &files {
+        let game = read_game(f).unwrap_or_else(|e| panic!("{e}"));
+        for r in &game.rounds {
+            let mut ours = record_logged(r);
+            ours.line = r.line;
+            let mut theirs = r.clone();
+            // Tenhou lists yakuhai in the order of the hand's sets (two wins of the logs): compare
+            // the yaku as sets.
+            for outcome in [&mut ours.outcome, &mut theirs.outcome] {
+                if let Outcome::Wins(ws) = outcome {
+                    ws.iter_mut().for_each(|w| w.yaku.sort_by_key(|y| y.name));
+                }
+            }
+            assert_eq!(
+                ours,
+                theirs,
+                "{}: {r}:\n ours {}\n log  {}",
+                f.display(),
+                round_value(&ours),
+                round_value(&theirs)
+            );
+            rounds += 1;
+        }
+    }
+    assert_eq!(rounds, 232);
+}
+
+#[test]
+fn the_recorder_says_what_it_cannot_follow() {
+    let mut no_red = Env::new(Config::new(Variant::NoRed, 2)).expect("a cpu env");
+    no_red.reset();
+    assert!(matches!(
+        Recorder::new(&no_red),
+        Err(WriteError::Variant(Variant::NoRed))
+    ));
+    let mut single = env(Mode::Single, 2, 1, false);
+    single.reset();
+    let err = Recorder::new(&single).err().map(|e| e.to_string()).unwrap_or_default();
+    assert!(err.contains("one-hand"), "{err}");
+
+    let mut env = env(Mode::Half, 2, 1, false);
+    env.reset();
+    let mut recorder = Recorder::new(&env).expect("recorder");
+    assert!(matches!(
+        recorder.observe(&env, &[0]),
+        Err(WriteError::WrongLength { expected: 2, got: 1 })
+    ));
+    let first_legal = |env: &Env| {
+        (0..2)
+            .map(|i| env.last().legal_actions(i).next().unwrap_or(0))
+            .collect::<Vec<u32>>()
+    };
+    let actions = first_legal(&env);
+    env.step(&actions).expect("step");
+    let later = first_legal(&env);
+    env.step(&later).expect("step");
+    // The recorder missed a step.
+    let err = recorder
+        .observe(&env, &later)
+        .err()
+        .map(|e| e.to_string())
+        .unwrap_or_default();
+    assert!(err.contains("without the recorder"), "{err}");
+    // A game already under way cannot be picked up.
+    let err = Recorder::new(&env).err().map(|e| e.to_string()).unwrap_or_default();
+    assert!(err.contains("not at the start of a round"), "{err}");
+}
