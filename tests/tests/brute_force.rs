@@ -933,18 +933,18 @@ const PICKED: [Picked; 11] = [
     ("123m456p789s345s11z", "8s", &[], false, true, 0, 0, Ok((1, 40, 0))),
     // tanyao; the triplet completed by ron counts open: 20 + 10 + 4 + 4 + 2 = 40 fu, no sanankou.
     ("222m444p666s345m88m", "6s", &[], false, false, 0, 1, Ok((1, 40, 0))),
-    // junsei chuuren (double).
-    ("11123455678999m", "5m", &[], false, false, 0, 1, Ok((0, 0, 2))),
+    // junsei chuuren: a single yakuman under Tenhou's rules (the red spec).
+    ("11123455678999m", "5m", &[], false, false, 0, 1, Ok((0, 0, 1))),
     // chuuren: before the win 1112345778999m, not the nine-sided wait.
     ("11123456778999m", "6m", &[], false, false, 0, 1, Ok((0, 0, 1))),
-    // daisuushi (double) + suuankou tanki (double).
-    ("111222333444z55m", "5m", &[], true, false, 0, 1, Ok((0, 0, 4))),
+    // daisuushi + suuankou tanki: two yakuman add up, each single under Tenhou's rules.
+    ("111222333444z55m", "5m", &[], true, false, 0, 1, Ok((0, 0, 2))),
     // shousuushi.
     ("11122233344z123m", "3m", &[], false, false, 0, 1, Ok((0, 0, 1))),
     // chinroutou (the ron on 999s leaves three concealed triplets: no suuankou).
     ("111999m111p99911s", "9s", &[], false, false, 0, 1, Ok((0, 0, 1))),
-    // kokushi with the thirteen-sided wait (double).
-    ("19m19p19s12345677z", "7z", &[], false, false, 0, 1, Ok((0, 0, 2))),
+    // kokushi with the thirteen-sided wait: single under Tenhou's rules.
+    ("19m19p19s12345677z", "7z", &[], false, false, 0, 1, Ok((0, 0, 1))),
     // open, complete, no yaku.
     (
         "456p789s234s55p",

@@ -115,7 +115,10 @@ fn edited_specs_change_results_on_the_gpu() {
     assert!(yaku_text.contains(tanyao), "yaku.toml layout changed; update this test");
     let edited = yaku_text.replace(tanyao, "name = \"tanyao\"\nhan_closed = 3\nhan_open = 2")
         + "\n[[yaku]]\nname = \"daisharin\"\ndescription = \"seven pairs of 2-8 in one suit\"\nyakuman = 2\nwhen = \"seven_pairs && all_simples && suits == 1\"\n";
-    let results = judge(&mut gpu, &compile("red", &variant_text, &edited), &hands);
+    // Tenhou (the red spec) counts no yakuman double; the edited variant does.
+    assert!(variant_text.contains("double_yakuman = false"));
+    let doubles = variant_text.replace("double_yakuman = false", "double_yakuman = true");
+    let results = judge(&mut gpu, &compile("red", &doubles, &edited), &hands);
     assert_eq!(results[0], (0, 4, 0), "closed tanyao now 3 han");
     assert_eq!(results[1], (0, 2, 0), "open tanyao now 2 han");
     // The standard reading now has 13 han (kazoe yakuman, base 8000); the double yakuman pays more.
