@@ -39,23 +39,23 @@ const CLAIM_CHI_MIDDLE_RED: u32 = 128;
 const CLAIM_CHI_RIGHT: u32 = 256;
 const CLAIM_CHI_RIGHT_RED: u32 = 512;
 
-// What a step settled (StepView.events).
-const EVENT_RON: u32 = 1;
-const EVENT_TSUMO: u32 = 2;
-const EVENT_EXHAUSTIVE_DRAW: u32 = 4;
-const EVENT_ABORTIVE_DRAW: u32 = 8;
-const EVENT_GAME_OVER: u32 = 16;
-const EVENT_NAGASHI: u32 = 32;
+// What a step settled (StepView.events). `pub`: hosts read these numbers (rinshan::env::events).
+pub const EVENT_RON: u32 = 1;
+pub const EVENT_TSUMO: u32 = 2;
+pub const EVENT_EXHAUSTIVE_DRAW: u32 = 4;
+pub const EVENT_ABORTIVE_DRAW: u32 = 8;
+pub const EVENT_GAME_OVER: u32 = 16;
+pub const EVENT_NAGASHI: u32 = 32;
 
 // How a round ended without a win (GameState.draw_kind, low byte); the tenpai seats follow in
 // bits 8..11 and, for nagashi, the nagashi seats in bits 12..15.
-const DRAW_EXHAUSTIVE: u32 = 1;
-const DRAW_NAGASHI: u32 = 2;
-const DRAW_KYUUSHU: u32 = 3;
-const DRAW_FOUR_RIICHI: u32 = 4;
-const DRAW_TRIPLE_RON: u32 = 5;
-const DRAW_FOUR_KANS: u32 = 6;
-const DRAW_FOUR_WINDS: u32 = 7;
+pub const DRAW_EXHAUSTIVE: u32 = 1;
+pub const DRAW_NAGASHI: u32 = 2;
+pub const DRAW_KYUUSHU: u32 = 3;
+pub const DRAW_FOUR_RIICHI: u32 = 4;
+pub const DRAW_TRIPLE_RON: u32 = 5;
+pub const DRAW_FOUR_KANS: u32 = 6;
+pub const DRAW_FOUR_WINDS: u32 = 7;
 
 // The continuations of a step (see `run_tasks`): each piece of the game that can follow an action
 // runs from one place, so the GPU compiler inlines each heavy function once.
@@ -72,11 +72,12 @@ const END_DEALER_CONTINUES: u32 = 1;
 const END_DRAWN: u32 = 2;
 
 // Dead wall layout (indices into the 136-tile wall): replacement tiles, dora and ura indicators.
-const WALL_LIVE_START: u32 = 52;
-const WALL_LIVE_END: u32 = 122;
-const WALL_DORA: u32 = 122;
-const WALL_URA: u32 = 127;
-const WALL_RINSHAN: u32 = 132;
+// `pub`: log replay builds walls in this layout.
+pub const WALL_LIVE_START: u32 = 52;
+pub const WALL_LIVE_END: u32 = 122;
+pub const WALL_DORA: u32 = 122;
+pub const WALL_URA: u32 = 127;
+pub const WALL_RINSHAN: u32 = 132;
 
 #[derive(Clone, Copy)]
 #[repr(C)]

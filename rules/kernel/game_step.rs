@@ -89,13 +89,18 @@ pub fn game_new(inp: ResetInput) -> GameState {
     s
 }
 
-pub fn game_step(s: &mut GameState, action: u32) {
+// A step's outputs start empty: rewards and events report this step only.
+fn clear_step_outputs(s: &mut GameState) {
     s.rewards = [0i32; 4];
     s.events = 0u32;
     s.winners = 0u32;
     s.deal_in = 0u32;
     s.yaku = [0u32; 2];
     s.illegal = 0u32;
+}
+
+pub fn game_step(s: &mut GameState, action: u32) {
+    clear_step_outputs(s);
     if s.terminated != 0u32 {
         if s.auto_reset == 0u32 {
             // A finished game without auto-reset stays finished; its view repeats with no reward.
@@ -144,12 +149,7 @@ pub fn game_deal(s: &mut GameState, inp: DealInput) {
     s.honba = inp.honba;
     s.sticks = inp.sticks;
     s.scores = inp.scores;
-    s.rewards = [0i32; 4];
-    s.events = 0u32;
-    s.winners = 0u32;
-    s.deal_in = 0u32;
-    s.yaku = [0u32; 2];
-    s.illegal = 0u32;
+    clear_step_outputs(s);
     s.terminated = 0u32;
     start_round(s, inp.wall);
     s.mask = compute_mask(s);

@@ -7,6 +7,16 @@ fn round_up_100(x: u32) -> u32 {
     (x + 99u32) / 100u32 * 100u32
 }
 
+// What a hand of `base` points costs, before honba: [a ron, the dealer's share of a non-dealer's
+// tsumo (0 when the dealer won), each other payer's share of a tsumo]. `pub`: the Tenhou log
+// writer prints these amounts.
+pub fn hand_payments(base: u32, dealer: bool) -> [u32; 3] {
+    if dealer {
+        return [round_up_100(base * 6u32), 0u32, round_up_100(base * 2u32)];
+    }
+    [round_up_100(base * 4u32), round_up_100(base * 2u32), round_up_100(base)]
+}
+
 pub fn score_hand(inp: ScoreInput) -> ScoreOutput {
     if !input_is_valid(inp) {
         return empty_output(STATUS_BAD_INPUT);
@@ -38,22 +48,19 @@ pub fn score_hand(inp: ScoreInput) -> ScoreOutput {
     out.concealed = h.concealed as u32;
     let dealer: bool = flag(inp, FLAG_DEALER);
     let sticks: u32 = inp.sticks * RIICHI_STICK_POINTS;
+    let pays: [u32; 3] = hand_payments(best.base, dealer);
     if flag(inp, FLAG_TSUMO) {
         let honba: u32 = inp.honba * HONBA_TSUMO_POINTS;
         if dealer {
-            out.others_pay = round_up_100(best.base * 2u32) + honba;
+            out.others_pay = pays[2] + honba;
             out.gain = out.others_pay * 3u32 + sticks;
         } else {
-            out.dealer_pays = round_up_100(best.base * 2u32) + honba;
-            out.others_pay = round_up_100(best.base) + honba;
+            out.dealer_pays = pays[1] + honba;
+            out.others_pay = pays[2] + honba;
             out.gain = out.dealer_pays + out.others_pay * 2u32 + sticks;
         }
     } else {
-        let mut mult: u32 = 4u32;
-        if dealer {
-            mult = 6u32;
-        }
-        out.ron = round_up_100(best.base * mult) + inp.honba * HONBA_RON_POINTS;
+        out.ron = pays[0] + inp.honba * HONBA_RON_POINTS;
         out.gain = out.ron + sticks;
     }
     out

@@ -15,7 +15,8 @@ struct Judged {
     base: u32,
 }
 
-fn base_points(han: u32, fu: u32, yakuman: u32) -> u32 {
+// `pub`: the Tenhou log writer names a hand's limit from it.
+pub fn base_points(han: u32, fu: u32, yakuman: u32) -> u32 {
     if yakuman > 0u32 {
         return 8000u32 * yakuman;
     }

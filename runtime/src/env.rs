@@ -182,14 +182,16 @@ pub struct Step {
     pub rounds: Vec<u32>,
 }
 
-/// The `events` bits of a [`Step`] (the kernel's `EVENT_*`).
+/// The `events` bits of a [`Step`]: the kernel's `EVENT_*` (every variant compiles the same kernel
+/// source, so any variant's module has the same numbers).
 pub mod events {
-    pub const RON: u32 = 1;
-    pub const TSUMO: u32 = 2;
-    pub const EXHAUSTIVE_DRAW: u32 = 4;
-    pub const ABORTIVE_DRAW: u32 = 8;
-    pub const GAME_OVER: u32 = 16;
-    pub const NAGASHI: u32 = 32;
+    use crate::generated::red as k;
+    pub const RON: u32 = k::EVENT_RON;
+    pub const TSUMO: u32 = k::EVENT_TSUMO;
+    pub const EXHAUSTIVE_DRAW: u32 = k::EVENT_EXHAUSTIVE_DRAW;
+    pub const ABORTIVE_DRAW: u32 = k::EVENT_ABORTIVE_DRAW;
+    pub const GAME_OVER: u32 = k::EVENT_GAME_OVER;
+    pub const NAGASHI: u32 = k::EVENT_NAGASHI;
 }
 
 impl Step {

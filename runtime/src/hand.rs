@@ -273,6 +273,21 @@ pub fn score_input(win: &Win) -> Result<[u32; SCORE_IN_WORDS], ScoreError> {
     Ok(w)
 }
 
+/// What yaku `id` of `variant` is worth in a hand: `(han, false)` (closed or open han), or
+/// `(weight, true)` for a yakuman (its weight capped at 1 where the variant counts no double
+/// yakuman).
+pub fn yaku_worth(variant: Variant, id: usize, concealed: bool) -> (u32, bool) {
+    with_variant!(variant, v => {
+        if v::YAKU_YAKUMAN[id] > 0 {
+            (if v::DOUBLE_YAKUMAN { v::YAKU_YAKUMAN[id] } else { 1 }, true)
+        } else if concealed {
+            (v::YAKU_HAN_CLOSED[id], false)
+        } else {
+            (v::YAKU_HAN_OPEN[id], false)
+        }
+    })
+}
+
 /// Decodes one score output (SCORE_OUT_WORDS words) of `variant`.
 pub fn decode_score(variant: Variant, w: &[u32]) -> Result<Score, ScoreError> {
     match w[0] {
@@ -288,13 +303,7 @@ pub fn decode_score(variant: Variant, w: &[u32]) -> Result<Score, ScoreError> {
         for i in 0..v::YAKU_COUNT as usize {
             let held = if i < 32 { lo >> i & 1 } else { hi >> (i - 32) & 1 };
             if held == 1 {
-                let value = if v::YAKU_YAKUMAN[i] > 0 {
-                    if v::DOUBLE_YAKUMAN { v::YAKU_YAKUMAN[i] } else { 1 }
-                } else if concealed {
-                    v::YAKU_HAN_CLOSED[i]
-                } else {
-                    v::YAKU_HAN_OPEN[i]
-                };
+                let (value, _) = yaku_worth(variant, i, concealed);
                 yaku.push(Yaku { name: v::host::YAKU_NAMES[i], han: value });
             }
         }

@@ -266,6 +266,15 @@ pub fn tile_name(t: Tile) -> String {
     }
 }
 
+/// Writes a tile value back in notation: a type as [`tile_name`] does, a red five (34, 35, 36)
+/// as `0m`, `0p`, `0s`.
+pub fn value_name(v: u8) -> String {
+    match v {
+        34..=36 => format!("0{}", ['m', 'p', 's'][usize::from(v - 34)]),
+        _ => tile_name(v),
+    }
+}
+
 /// A wind as written on the command line: E, S, W or N.
 pub fn parse_wind(input: &str) -> Result<u8, NotationError> {
     match input.to_ascii_uppercase().as_str() {

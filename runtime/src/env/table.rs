@@ -95,14 +95,16 @@ pub struct DrawRecord {
 impl DrawRecord {
     /// A state's `draw_kind` word.
     pub(crate) fn decode(word: u32) -> DrawRecord {
+        // The kernel's DRAW_* (the same in every variant's module: one kernel source).
+        use crate::generated::red as k;
         let kind = match word & 255 {
-            1 => Some(DrawKind::Exhaustive),
-            2 => Some(DrawKind::Nagashi),
-            3 => Some(DrawKind::Kyuushu),
-            4 => Some(DrawKind::FourRiichi),
-            5 => Some(DrawKind::TripleRon),
-            6 => Some(DrawKind::FourKans),
-            7 => Some(DrawKind::FourWinds),
+            k::DRAW_EXHAUSTIVE => Some(DrawKind::Exhaustive),
+            k::DRAW_NAGASHI => Some(DrawKind::Nagashi),
+            k::DRAW_KYUUSHU => Some(DrawKind::Kyuushu),
+            k::DRAW_FOUR_RIICHI => Some(DrawKind::FourRiichi),
+            k::DRAW_TRIPLE_RON => Some(DrawKind::TripleRon),
+            k::DRAW_FOUR_KANS => Some(DrawKind::FourKans),
+            k::DRAW_FOUR_WINDS => Some(DrawKind::FourWinds),
             _ => None,
         };
         DrawRecord {

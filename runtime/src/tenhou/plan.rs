@@ -43,18 +43,15 @@ pub struct Plan {
 }
 
 /// Where the engine deals from (rules/kernel/game_state.rs: `WALL_*`).
-pub(super) const LIVE_START: usize = 52;
-pub(super) const LIVE_END: usize = 122;
-pub(super) const DORA: usize = 122;
-pub(super) const URA: usize = 127;
-pub(super) const RINSHAN: usize = 132;
+pub(super) const LIVE_START: usize = k::WALL_LIVE_START as usize;
+pub(super) const LIVE_END: usize = k::WALL_LIVE_END as usize;
+pub(super) const DORA: usize = k::WALL_DORA as usize;
+pub(super) const URA: usize = k::WALL_URA as usize;
+pub(super) const RINSHAN: usize = k::WALL_RINSHAN as usize;
 
-/// Short tile names as players write them: `1m`..`9m`, `0m` for a red five, `1z`..`7z` for honors.
+/// A tile as players write it (`5m`, `0m` for the red five, `7z`), for messages.
 pub fn tile_name(t: Tile) -> String {
-    let kind = t.kind();
-    let suit = ["m", "p", "s", "z"][(kind / 9) as usize];
-    let number = if t.is_red() { 0 } else { kind % 9 + 1 };
-    format!("{number}{suit}")
+    crate::notation::value_name(t.value())
 }
 
 /// Walks tried per round before giving up (a wrong call decision is usually caught within a

@@ -43,7 +43,7 @@ use super::log::Game;
 
 pub use game::GameRecorder;
 pub use json::{discard_value, draw_value, game_text, round_line, round_value, yaku_text};
-pub use outcome::{base_points, limit_of, payment, points_text, win_deltas, Payment};
+pub use outcome::{base_points, limit_of, payment, points_text, win_deltas, win_yaku, Payment};
 
 /// Why a game could not be recorded.
 #[derive(Debug, Clone, PartialEq)]

@@ -5,7 +5,7 @@ use super::super::log::{DrawKind as LogDraw, Outcome, Round, Win, YakuHan};
 use super::super::plan::Plan;
 use super::{Report, Run};
 use crate::env::{events, DrawKind, Step, Table, WinRecord};
-use crate::generated::red as k;
+use crate::tenhou::write::win_yaku;
 
 pub(super) fn outcome_name(o: &Outcome) -> String {
     match o {
@@ -26,26 +26,7 @@ pub(super) fn outcome_name(o: &Outcome) -> String {
 
 /// The yaku of an engine win as (name, han) in the log's terms, sorted; dora kinds with 0 han left out.
 fn engine_yaku(w: &WinRecord) -> Vec<(String, YakuHan)> {
-    let mut out: Vec<(String, YakuHan)> = w
-        .yaku_ids()
-        .map(|id| {
-            let i = id as usize;
-            let han = if k::YAKU_YAKUMAN[i] > 0 {
-                // The spec's double yakuman count once where the variant says so.
-                YakuHan::Yakuman(if k::DOUBLE_YAKUMAN { k::YAKU_YAKUMAN[i] } else { 1 })
-            } else if w.concealed {
-                YakuHan::Han(k::YAKU_HAN_CLOSED[i])
-            } else {
-                YakuHan::Han(k::YAKU_HAN_OPEN[i])
-            };
-            (k::host::YAKU_NAMES[i].to_string(), han)
-        })
-        .collect();
-    for (name, n) in [("dora", w.dora), ("aka", w.aka), ("ura", w.ura)] {
-        if n > 0 {
-            out.push((name.to_string(), YakuHan::Han(n)));
-        }
-    }
+    let mut out: Vec<(String, YakuHan)> = win_yaku(w).into_iter().map(|y| (y.name.to_string(), y.han)).collect();
     out.sort_by(|a, b| a.0.cmp(&b.0));
     out
 }

@@ -1,14 +1,16 @@
 //! The result of a round as Tenhou writes it: the points text of a win, each win's score changes
 //! (honba, riichi sticks and pao included), the draw names and their tenpai or nagashi payments.
 //!
-//! Payments are worked out here from han, fu and yakuman by the standard table rather than read
-//! off the engine's rewards: a double ron pays two hands in one step, a pao tsumo hides the
-//! shares, and a game's last step adds uma. The recorder checks the sum against the scores the
+//! Payments are worked out from han, fu and yakuman by the scoring kernel's own functions
+//! (`base_points`, `hand_payments`) rather than read off the engine's rewards: a double ron pays
+//! two hands in one step, a pao tsumo hides the shares, and a game's last step adds uma. The recorder checks the sum against the scores the
 //! engine carries into the next round.
 
 use crate::env::{DrawKind as EngineDraw, DrawRecord, WinRecord};
 use crate::generated::red as k;
+use crate::hand::yaku_worth;
 use crate::tenhou::log::{tenhou_yaku, DrawKind, Limit, Outcome, Yaku, YakuHan};
+use crate::Variant;
 
 /// What a win pays before honba and riichi sticks.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -21,25 +23,10 @@ pub enum Payment {
     },
 }
 
-/// Base points of a hand: fu x 2^(han+2) up to the limits (the kernel's `base_points` with this
-/// variant's `kiriage_mangan` and `kazoe_yakuman`).
+/// Base points of a hand: fu x 2^(han+2) up to the limits (the scoring kernel's own rule, with
+/// this variant's `kiriage_mangan` and `kazoe_yakuman`).
 pub fn base_points(han: u32, fu: u32, yakuman: u32) -> u32 {
-    match han {
-        _ if yakuman > 0 => 8000 * yakuman,
-        13.. if k::KAZOE_YAKUMAN => 8000,
-        11.. => 6000,
-        8.. => 4000,
-        6.. => 3000,
-        5 => 2000,
-        _ => {
-            let raw = fu << (han + 2);
-            if raw >= 2000 || (k::KIRIAGE_MANGAN && raw == 1920) {
-                2000
-            } else {
-                raw
-            }
-        }
-    }
+    k::base_points(han, fu, yakuman)
 }
 
 /// The limit a base reaches, named in the points text instead of fu and han.
@@ -54,22 +41,16 @@ pub fn limit_of(base: u32) -> Option<Limit> {
     }
 }
 
-fn round_up_100(x: u32) -> u32 {
-    x.div_ceil(100) * 100
-}
-
+/// What a hand of `base` points costs before honba (the scoring kernel's `hand_payments`).
 pub fn payment(base: u32, dealer: bool, tsumo: bool) -> Payment {
+    let [ron, dealer_share, others] = k::hand_payments(base, dealer);
     match (tsumo, dealer) {
-        (false, false) => Payment::Ron(round_up_100(base * 4)),
-        (false, true) => Payment::Ron(round_up_100(base * 6)),
+        (false, _) => Payment::Ron(ron),
         (true, false) => Payment::Tsumo {
-            dealer: Some(round_up_100(base * 2)),
-            others: round_up_100(base),
+            dealer: Some(dealer_share),
+            others,
         },
-        (true, true) => Payment::Tsumo {
-            dealer: None,
-            others: round_up_100(base * 2),
-        },
+        (true, true) => Payment::Tsumo { dealer: None, others },
     }
 }
 
@@ -135,17 +116,16 @@ pub fn win_deltas(
     d.map(|x| x as i32)
 }
 
-/// A win's yaku as Tenhou lists them, dora, red fives and ura last (those with 0 han left out).
-pub fn yaku_list(rec: &WinRecord, seat_wind: usize, round_wind: usize) -> Vec<Yaku> {
+/// A win's yaku with what each is worth (as Tenhou counts them under the red spec), then dora, red
+/// fives and ura (those with 0 han left out).
+pub fn win_yaku(rec: &WinRecord) -> Vec<Yaku> {
     let mut yaku: Vec<Yaku> = rec
         .yaku_ids()
         .map(|id| {
             let i = id as usize;
-            let han = match k::YAKU_YAKUMAN[i] {
-                0 if rec.concealed => YakuHan::Han(k::YAKU_HAN_CLOSED[i]),
-                0 => YakuHan::Han(k::YAKU_HAN_OPEN[i]),
-                w if k::DOUBLE_YAKUMAN => YakuHan::Yakuman(w),
-                _ => YakuHan::Yakuman(1),
+            let han = match yaku_worth(Variant::Red, i, rec.concealed) {
+                (w, true) => YakuHan::Yakuman(w),
+                (h, false) => YakuHan::Han(h),
             };
             Yaku {
                 name: k::host::YAKU_NAMES[i],
@@ -161,6 +141,12 @@ pub fn yaku_list(rec: &WinRecord, seat_wind: usize, round_wind: usize) -> Vec<Ya
             });
         }
     }
+    yaku
+}
+
+/// A win's yaku in the order Tenhou lists them, dora, red fives and ura last.
+pub fn yaku_list(rec: &WinRecord, seat_wind: usize, round_wind: usize) -> Vec<Yaku> {
+    let mut yaku = win_yaku(rec);
     yaku.sort_by_key(|y| tenhou_yaku(y.name, seat_wind, round_wind).map_or(usize::MAX, |(_, rank)| rank));
     yaku
 }
