@@ -10,6 +10,16 @@ fn furiten(s: &mut GameState, q: u32) -> bool {
         || (s.waits[(q * 2u32 + 1u32) as usize] & s.discarded[(q * 2u32 + 1u32) as usize]) != 0u32
 }
 
+// A winning tile of the seat's passed by (declined, or not offered: furiten, or no yaku): furiten
+// until its next own draw, or for the rest of the round in riichi.
+fn miss_win(s: &mut GameState, q: u32) {
+    if (s.seat_flags[q as usize] & SEAT_RIICHI) != 0u32 {
+        s.seat_flags[q as usize] |= SEAT_FURITEN_RIICHI;
+    } else {
+        s.seat_flags[q as usize] |= SEAT_FURITEN_TEMP;
+    }
+}
+
 fn red_count(s: &mut GameState, q: u32, t: u32) -> u32 {
     if t < 27u32 && t % 9u32 == 4u32 && holds_red(s, q, t / 9u32) {
         return 1u32;
@@ -121,6 +131,12 @@ fn open_claims(s: &mut GameState) -> u32 {
     for j in 1u32..4u32 {
         let q: u32 = (from + j) % 4u32;
         let o: u32 = claim_options_for(s, q, from, v, kan);
+        // Furiten does not depend on yaku: a wait passing by unclaimable still binds the seat
+        // (a declined ron does so in do_claim_decision). Only thirteen orphans may rob a closed
+        // kan, so another hand waiting on its tile is not furiten.
+        if (o & CLAIM_RON) == 0u32 && kan != 2u32 && waits_include(s, q, value_type(v)) {
+            miss_win(s, q);
+        }
         s.claim_options[q as usize] = o;
         s.claim_choices[q as usize] = NO_CHOICE;
         if o != 0u32 && !any {
@@ -165,12 +181,7 @@ fn do_claim_decision(s: &mut GameState, a: u32) -> u32 {
     let q: u32 = s.current;
     s.claim_choices[q as usize] = a;
     if (s.claim_options[q as usize] & CLAIM_RON) != 0u32 && a != ACTION_RON {
-        // Declining a ron: furiten until the next own draw, or for the rest of the round in riichi.
-        if (s.seat_flags[q as usize] & SEAT_RIICHI) != 0u32 {
-            s.seat_flags[q as usize] |= SEAT_FURITEN_RIICHI;
-        } else {
-            s.seat_flags[q as usize] |= SEAT_FURITEN_TEMP;
-        }
+        miss_win(s, q);
     }
     let from: u32 = s.claim_from;
     let mut j: u32 = (q + 4u32 - from) % 4u32 + 1u32;

@@ -123,18 +123,20 @@ fn hand_complete(c: [u32; 34], n_melds: u32) -> bool {
     sevens || (orphans && orphan_pair)
 }
 
-// Tile types that complete the hand, as a 34-bit set. A wait on a tile whose four copies the seat
-// already holds (melds included) does not count: that tile can never arrive.
-fn waits_of(c: [u32; 34], n_melds: u32, all: [u32; 34]) -> [u32; 2] {
+// Tile types that complete the hand, as a 34-bit set. A wait on a tile whose four copies are all
+// in the concealed hand does not count (that tile can never arrive); copies in the seat's own
+// melds do not void a wait (Tenhou: a tanki on the fourth tile of one's pon is tenpai).
+fn waits_of(c: [u32; 34], n_melds: u32) -> [u32; 2] {
     let mut w: [u32; 2] = [0u32; 2];
-    // Exact shanten (whose targets respect the four copies of a tile) says at once whether any
-    // tile can complete the hand; most hands are not tenpai, and then 34 trials are saved.
+    // Exact shanten (whose targets respect the four copies of a concealed tile, as this rule
+    // does) says at once whether any tile can complete the hand; most hands are not tenpai,
+    // and then 34 trials are saved.
     if shanten(ShantenInput { hand: c }).shanten > 0i32 {
         return w;
     }
     let mut h: [u32; 34] = c;
     for t in 0u32..34u32 {
-        if all[t as usize] < 4u32 {
+        if c[t as usize] < 4u32 {
             h[t as usize] += 1u32;
             if hand_complete(h, n_melds) {
                 w[(t / 32u32) as usize] |= 1u32 << (t % 32u32);
@@ -147,25 +149,6 @@ fn waits_of(c: [u32; 34], n_melds: u32, all: [u32; 34]) -> [u32; 2] {
 
 fn in_set(set: [u32; 2], t: u32) -> bool {
     ((set[(t / 32u32) as usize] >> (t % 32u32)) & 1u32) != 0u32
-}
-
-// Concealed counts plus meld tiles: what the seat holds in all.
-fn all_tiles(s: &mut GameState, seat: u32) -> [u32; 34] {
-    let mut c: [u32; 34] = hand_counts(s, seat);
-    for i in 0u32..meld_count(s, seat) {
-        let m: u32 = s.melds[(seat * 4u32 + i) as usize];
-        let t: u32 = meld_tile(m);
-        if meld_kind(m) == MELD_CHI {
-            c[t as usize] += 1u32;
-            c[(t + 1u32) as usize] += 1u32;
-            c[(t + 2u32) as usize] += 1u32;
-        } else if meld_kind(m) == MELD_PON {
-            c[t as usize] += 3u32;
-        } else {
-            c[t as usize] += 4u32;
-        }
-    }
-    c
 }
 
 // Proof without the shanten tables that no tile completes the seat's hand, nor any hand left by
@@ -183,9 +166,7 @@ fn seat_waits(s: &mut GameState, seat: u32) -> [u32; 2] {
     if surely_not_tenpai(s, seat, 0u32) {
         return [0u32; 2];
     }
-    let c: [u32; 34] = hand_counts(s, seat);
-    let all: [u32; 34] = all_tiles(s, seat);
-    waits_of(c, meld_count(s, seat), all)
+    waits_of(hand_counts(s, seat), meld_count(s, seat))
 }
 
 fn update_waits(s: &mut GameState, seat: u32) {
@@ -209,8 +190,6 @@ fn tenpai_after_discard(s: &mut GameState, seat: u32, t: u32) -> bool {
         return false;
     }
     c[t as usize] -= 1u32;
-    let mut all: [u32; 34] = all_tiles(s, seat);
-    all[t as usize] -= 1u32;
-    let w: [u32; 2] = waits_of(c, meld_count(s, seat), all);
+    let w: [u32; 2] = waits_of(c, meld_count(s, seat));
     (w[0] | w[1]) != 0u32
 }

@@ -83,35 +83,21 @@ fn riichi_possible(s: &mut GameState, p: u32) -> bool {
     if surely_not_tenpai(s, p, 1u32) {
         return false;
     }
-    let c: [u32; 34] = hand_counts(s, p);
-    if shanten(ShantenInput { hand: c }).shanten > 0i32 {
-        return false;
-    }
-    // With no kan, a 14-tile hand at shanten <= 0 has a discard leaving a 13-tile hand at shanten 0,
-    // and (the shanten's targets respecting the four copies of a tile) such a hand has a wait
-    // that `waits_of` counts. A closed kan can make the only wait a tile that the kan holds all
-    // four of, so then each discard is tried.
-    if meld_count(s, p) == 0u32 {
-        return true;
-    }
-    for t in 0u32..34u32 {
-        if c[t as usize] > 0u32 && tenpai_after_discard(s, p, t) {
-            return true;
-        }
-    }
-    false
+    // A 14-tile hand (less three a closed kan) at shanten <= 0 has a discard leaving a hand at
+    // shanten 0, and (the shanten's targets respecting the four copies of a concealed tile, as
+    // `waits_of` does) such a hand has a wait that counts: no per-discard waits search.
+    shanten(ShantenInput { hand: hand_counts(s, p) }).shanten <= 0i32
 }
 
 // In riichi a closed kan is allowed only of the drawn tile and only if the waits stay the same.
 fn riichi_kan_keeps_waits(s: &mut GameState, p: u32, t: u32) -> bool {
-    let all: [u32; 34] = all_tiles(s, p);
     let n: u32 = meld_count(s, p);
     let mut before: [u32; 34] = hand_counts(s, p);
     before[value_type(s.drawn) as usize] -= 1u32;
-    let w0: [u32; 2] = waits_of(before, n, all);
+    let w0: [u32; 2] = waits_of(before, n);
     let mut after: [u32; 34] = hand_counts(s, p);
     after[t as usize] -= 4u32;
-    let w1: [u32; 2] = waits_of(after, n + 1u32, all);
+    let w1: [u32; 2] = waits_of(after, n + 1u32);
     w0[0] == w1[0] && w0[1] == w1[1] && (w0[0] | w0[1]) != 0u32
 }
 

@@ -234,10 +234,10 @@ fn selfplay_export_says_what_it_needs() {
     }
 }
 
-const LOGS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/data/tenhou");
+const LOGS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/data/tenhou");
 
 #[test]
-fn replay_of_the_shared_logs_agrees_everywhere() {
+fn replay_of_the_real_logs_agrees_everywhere() {
     let out = rinshan(&["replay", LOGS]);
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(out.status.success(), "{text}\n{}", String::from_utf8_lossy(&out.stderr));

@@ -1,4 +1,4 @@
-//! Shared helpers for rinshan's test suite: where the shared oracle data lives, and a GPU that
+//! Helpers for rinshan's test suite: where the test data lives, and a GPU that
 //! skips politely on machines without one (unless `RINSHAN_REQUIRE_GPU=1`, as in CI).
 
 use std::path::PathBuf;
@@ -6,18 +6,7 @@ use std::path::PathBuf;
 pub mod policy;
 pub mod scenario;
 
-/// `../shared/data` beside the repository (the oracle data: Tenhou logs, shanten cases).
-pub fn shared_data() -> PathBuf {
-    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..");
-    for candidate in [root.join("../shared/data"), root.join("shared/data")] {
-        if candidate.is_dir() {
-            return candidate;
-        }
-    }
-    panic!("shared data not found beside the repository (expected ../shared/data)");
-}
-
-/// This crate's own data files (`tests/data`).
+/// The test data the project carries (`tests/data`: Tenhou logs, shanten cases, scenarios).
 pub fn test_data() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("data")
 }

@@ -2,11 +2,11 @@
 
 use rinshan::hand::shanten;
 use rinshan::random::{random_hand, Rng};
-use rinshan_tests::shared_data;
+use rinshan_tests::test_data;
 
 /// Each line: 14 tile ids 0..33, then the expected normal, kokushi and chiitoitsu shanten.
 fn cases() -> Vec<([u8; 34], [i32; 3], String)> {
-    let dir = shared_data().join("shanten");
+    let dir = test_data().join("shanten");
     let mut out = Vec::new();
     for name in [
         "p_normal_10000.txt",

@@ -1,5 +1,5 @@
 //! Real games are the judge of the red rules: every round of the Phoenix-room logs in
-//! `shared/data/tenhou` replays through rinshan with every logged action legal and every score
+//! `tests/data/tenhou` replays through rinshan with every logged action legal and every score
 //! change, win (han, fu, yaku) and draw as the log has it, on the CPU and on the GPU.
 
 use std::path::{Path, PathBuf};
@@ -11,12 +11,12 @@ use rinshan::tenhou::replay::{replay, replay_on_gpu, Report};
 use rinshan_tests::test_data;
 
 fn data_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/data/tenhou")
+    test_data().join("tenhou")
 }
 
 fn all_games() -> Vec<Game> {
     let files = collect_files(&[data_dir()]).expect("the log folder lists");
-    assert_eq!(files.len(), 21, "the shared folder holds 21 games");
+    assert_eq!(files.len(), 21, "the log folder holds 21 games");
     files
         .iter()
         .map(|f| read_game(f).unwrap_or_else(|e| panic!("{e}")))

@@ -19,7 +19,7 @@ use rinshan::tenhou::write::{game_text, round_value, GameRecorder, Recorder, Wri
 use rinshan::Variant;
 use rinshan_tests::policy::{legal, Policy};
 use rinshan_tests::scenario::{build_wall, load, Actions};
-use rinshan_tests::shared_data;
+use rinshan_tests::test_data;
 
 fn env(mode: Mode, batch: usize, seed: u64, auto_reset: bool) -> Env {
     let mut config = Config::new(Variant::Red, batch);
@@ -328,7 +328,7 @@ fn record_logged(r: &Round) -> Round {
 
 #[test]
 fn logged_rounds_are_recorded_as_tenhou_wrote_them() {
-    let files = collect_files(&[shared_data().join("tenhou")]).expect("the log folder lists");
+    let files = collect_files(&[test_data().join("tenhou")]).expect("the log folder lists");
     let mut rounds = 0;
     for f in &files {
         let game = read_game(f).unwrap_or_else(|e| panic!("{e}"));

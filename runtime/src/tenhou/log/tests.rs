@@ -6,7 +6,7 @@ use serde_json::{json, Value};
 use super::moves::{parse_discard, parse_draw};
 use super::*;
 
-const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/data/tenhou");
+const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/data/tenhou");
 const FIRST: &str = "2010081709gm-00a9-0000-fe3371ad.json";
 
 fn t(code: u8) -> Tile {

@@ -1,4 +1,4 @@
-//! The writer's text against the shared Tenhou logs: every line written back from its parse,
+//! The writer's text against the real Tenhou logs in tests/data/tenhou: every line written back from its parse,
 //! every win's points text and score changes worked out from fu, han and the table.
 
 use std::path::PathBuf;
@@ -10,15 +10,15 @@ use crate::tenhou::log::{
     collect_files, parse_game, tenhou_yaku, Discard, Draw, Limit, Outcome, Rel, Round, Tile, Yaku, YakuHan,
 };
 
-const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/data/tenhou");
+const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/data/tenhou");
 
-/// Every shared log file's text and its parse.
-fn shared_logs() -> Vec<(String, Game)> {
+/// Every real log file's text and its parse.
+fn real_logs() -> Vec<(String, Game)> {
     let files = collect_files(&[PathBuf::from(DATA)]).expect("the data folder lists");
     files
         .iter()
         .map(|f| {
-            let text = std::fs::read_to_string(f).expect("a shared log reads");
+            let text = std::fs::read_to_string(f).expect("a real log reads");
             let game = parse_game(&f.display().to_string(), &text).unwrap_or_else(|e| panic!("{e}"));
             (text, game)
         })
@@ -30,9 +30,9 @@ fn t(code: u8) -> Tile {
 }
 
 #[test]
-fn every_shared_line_is_written_back_as_tenhou_wrote_it() {
+fn every_real_line_is_written_back_as_tenhou_wrote_it() {
     let mut lines = 0;
-    for (text, game) in shared_logs() {
+    for (text, game) in real_logs() {
         let records: Vec<&str> = text.lines().filter(|l| !l.trim().is_empty()).collect();
         assert_eq!(records.len(), game.rounds.len(), "{}: one round per line", game.path);
         for (line, round) in records.iter().zip(&game.rounds) {
@@ -134,9 +134,9 @@ fn sticks_collected(r: &Round) -> u32 {
 }
 
 #[test]
-fn every_shared_win_has_the_points_text_and_score_changes_of_its_fu_and_han() {
+fn every_real_win_has_the_points_text_and_score_changes_of_its_fu_and_han() {
     let mut wins = 0;
-    for (_, game) in shared_logs() {
+    for (_, game) in real_logs() {
         for r in &game.rounds {
             let Outcome::Wins(ws) = &r.outcome else { continue };
             for (n, w) in ws.iter().enumerate() {
@@ -189,7 +189,7 @@ fn points_texts_of_each_form() {
 #[test]
 fn yaku_in_tenhou_order_except_two_yakuhai() {
     let (mut same, mut differ) = (0, 0);
-    for (_, game) in shared_logs() {
+    for (_, game) in real_logs() {
         for r in &game.rounds {
             let Outcome::Wins(ws) = &r.outcome else { continue };
             for w in ws {
