@@ -1,5 +1,5 @@
 //! Runs the rules compiler: `rules/` -> tables, kernel-subset Rust and WGSL in OUT_DIR.
-//! A malformed spec or kernel fails the build with file:line:col.
+//! A malformed spec or kernel fails the build with file:line:col, as cargo's own `error:` lines.
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -9,9 +9,23 @@ use rinshan_shaders_gen::Source;
 
 include!("src/entries.rs");
 
+/// Fails the build with each line of `message` as a `cargo::error`, so cargo shows the located
+/// message first and plainly (a script that exits non-zero would bury it under cargo's "failed to
+/// run custom build command" and the script's whole output). Cargo fails the build on its own
+/// after a script that printed an error.
 fn fail(message: impl std::fmt::Display) -> ! {
-    eprintln!("error: {message}");
-    exit(1);
+    for line in message.to_string().lines() {
+        println!("cargo::error={line}");
+    }
+    exit(0);
+}
+
+/// `file:line:col: message`, the file relative to the workspace root (`rules/yaku.toml`), as
+/// the user who edits it knows it.
+fn located(root: &Path, file: &str, line: usize, column: usize, message: &str) -> String {
+    let file = Path::new(file);
+    let file = file.strip_prefix(root).unwrap_or(file);
+    format!("{}:{line}:{column}: {message}", file.display())
 }
 
 fn write(path: &Path, text: impl AsRef<[u8]>) {
@@ -53,7 +67,8 @@ fn main() {
     let manifest =
         PathBuf::from(std::env::var("CARGO_MANIFEST_DIR").unwrap_or_else(|_| fail("CARGO_MANIFEST_DIR unset")));
     let out = PathBuf::from(std::env::var("OUT_DIR").unwrap_or_else(|_| fail("OUT_DIR unset")));
-    let rules = manifest.join("..").join("rules");
+    let root = manifest.join("..");
+    let rules = root.join("rules");
     println!("cargo:rerun-if-changed={}", rules.display());
     for sub in ["variants", "kernel"] {
         println!("cargo:rerun-if-changed={}", rules.join(sub).display());
@@ -74,84 +89,108 @@ fn main() {
         fail(format!("no variant specs in {}", rules.join("variants").display()));
     }
 
-    let mut modules = String::new();
+    let mut generated = Vec::new();
     for variant in &variants {
         let spec = match rinshan_codegen::load(&rules, variant) {
             Ok(spec) => spec,
             Err(diags) => {
-                for d in &diags {
-                    eprintln!("{d}");
-                }
-                fail(format!("the spec of variant `{variant}` has {} error(s)", diags.len()));
+                let lines: Vec<String> = diags
+                    .iter()
+                    .map(|d| located(&root, &d.file, d.line, d.column, &d.message))
+                    .collect();
+                fail(lines.join("\n"));
             }
         };
-        let generated = rinshan_codegen::generate(&spec);
+        let code = rinshan_codegen::generate(&spec);
         let consts_file = out.join(format!("{variant}_consts.rs"));
-        write(&consts_file, &generated.kernel_rust);
-        write(&out.join(format!("{variant}_host.rs")), &generated.host_rust);
+        write(&consts_file, &code.kernel_rust);
+        write(&out.join(format!("{variant}_host.rs")), &code.host_rust);
+        generated.push(Source {
+            path: consts_file.display().to_string(),
+            text: code.kernel_rust,
+        });
+    }
+    let kernel_sources: Vec<Source> = kernel
+        .iter()
+        .map(|(p, t)| Source {
+            path: p.display().to_string(),
+            text: t.clone(),
+        })
+        .collect();
+    let shared = match rinshan_shaders_gen::shared_files(&kernel_sources, &generated) {
+        Ok(s) => s,
+        Err(e) => fail(located(&root, &e.file, e.line, e.column, &e.message)),
+    };
 
+    // One `kernel` module holds what every variant shares (the state and I/O structs, their
+    // constants, the code that names no variant constant); each variant's module inside it adds
+    // its constants and the rest of the kernel. Host code names shared things `kernel::X`, so no
+    // host code reaches into one variant's module to mean any variant.
+    let include = |module: &mut String, path: &Path| {
+        let _ = writeln!(module, "    include!({:?});", path.display().to_string());
+    };
+    let mut modules = String::from("pub mod kernel {\n");
+    modules.push_str("    #![allow(dead_code, clippy::all, unused_parens, unused_variables)]\n");
+    modules.push_str("    use crate::tables::table;\n");
+    include(&mut modules, &out.join("table_consts.rs"));
+    for ((path, _), &is_shared) in kernel.iter().zip(&shared) {
+        if is_shared {
+            include(&mut modules, path);
+        }
+    }
+    let mut io_types: Vec<&str> = ENTRIES
+        .iter()
+        .chain(UPDATE_ENTRIES.iter())
+        .flat_map(|(_, _, input, output)| [*input, *output])
+        .filter(|ty| !matches!(*ty, "u32" | "i32" | "f32"))
+        .collect();
+    io_types.sort_unstable();
+    io_types.dedup();
+    for ty in io_types {
+        let _ = writeln!(modules, "    unsafe impl bytemuck::Zeroable for {ty} {{}}");
+        let _ = writeln!(modules, "    unsafe impl bytemuck::Pod for {ty} {{}}");
+    }
+
+    for (variant, consts) in variants.iter().zip(&generated) {
         let mut sources = vec![
-            Source {
-                path: consts_file.display().to_string(),
-                text: generated.kernel_rust.clone(),
-            },
+            consts.clone(),
             Source {
                 path: out.join("table_consts.rs").display().to_string(),
                 text: table_consts.clone(),
             },
         ];
-        sources.extend(kernel.iter().map(|(p, t)| Source {
-            path: p.display().to_string(),
-            text: t.clone(),
-        }));
+        sources.extend(kernel_sources.iter().cloned());
         let entries = rinshan_shaders_gen::entry_points(&ENTRIES, &UPDATE_ENTRIES);
         let wgsl = match rinshan_shaders_gen::translate_entry_points(&sources, &entries) {
             Ok(w) => w,
-            Err(e) => fail(e),
+            Err(e) => fail(located(&root, &e.file, e.line, e.column, &e.message)),
         };
         write(&out.join(format!("{variant}.wgsl")), &wgsl);
 
-        let mut module = String::new();
-        let _ = writeln!(module, "pub mod {variant} {{");
+        let _ = writeln!(modules, "    pub mod {variant} {{");
         let _ = writeln!(
-            module,
+            modules,
             "    #![allow(dead_code, clippy::all, unused_parens, unused_variables)]"
         );
-        let _ = writeln!(module, "    use crate::tables::table;");
-        let _ = writeln!(
-            module,
-            "    include!(concat!(env!(\"OUT_DIR\"), \"/{variant}_consts.rs\"));"
-        );
-        let _ = writeln!(
-            module,
-            "    include!(concat!(env!(\"OUT_DIR\"), \"/table_consts.rs\"));"
-        );
-        for (path, _) in &kernel {
-            let _ = writeln!(module, "    include!({:?});", path.display().to_string());
-        }
-        let mut io_types: Vec<&str> = ENTRIES
-            .iter()
-            .chain(UPDATE_ENTRIES.iter())
-            .flat_map(|(_, _, input, output)| [*input, *output])
-            .filter(|ty| !matches!(*ty, "u32" | "i32" | "f32"))
-            .collect();
-        io_types.sort_unstable();
-        io_types.dedup();
-        for ty in io_types {
-            let _ = writeln!(module, "    unsafe impl bytemuck::Zeroable for {ty} {{}}");
-            let _ = writeln!(module, "    unsafe impl bytemuck::Pod for {ty} {{}}");
+        let _ = writeln!(modules, "    use super::*;");
+        include(&mut modules, Path::new(&consts.path));
+        for ((path, _), &is_shared) in kernel.iter().zip(&shared) {
+            if !is_shared {
+                include(&mut modules, path);
+            }
         }
         let _ = writeln!(
-            module,
+            modules,
             "    pub mod host {{ include!(concat!(env!(\"OUT_DIR\"), \"/{variant}_host.rs\")); }}"
         );
         let _ = writeln!(
-            module,
+            modules,
             "    pub const WGSL: &str = include_str!(concat!(env!(\"OUT_DIR\"), \"/{variant}.wgsl\"));"
         );
-        let _ = writeln!(module, "}}");
-        modules.push_str(&module);
+        let _ = writeln!(modules, "    }}");
     }
+    modules.push_str("}\n");
+    let _ = writeln!(modules, "pub use kernel::{{{}}};", variants.join(", "));
 
     // The variant enum and a dispatch macro, so the host code is written once for every variant.
     let mut enum_src = String::from("#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]\npub enum Variant {\n");

@@ -6,37 +6,20 @@
 use crate::diag::{did_you_mean, Diagnostic, Source};
 use crate::expr::{self, Scope, Type};
 use crate::model::{ActionsSection, VariantFile, YakuFile, YakuRaw};
-use crate::spec::{discard_count, ActionBlock, Feature, Need, Spec, Variant, Yaku, ACTION_KINDS};
+use crate::spec::{discard_count, ActionBlock, Feature, Need, OptionValue, Spec, Variant, Yaku, ACTION_KINDS};
 use std::collections::{BTreeMap, BTreeSet};
 use std::ops::Range;
+
+mod options;
 
 /// The yaku mask is two u32 words in the kernel.
 pub const MAX_YAKU: usize = 64;
 
-/// Names of the emitted variant consts (lowercase); a `[yaku_rules]` option may not reuse one.
-const VARIANT_FIELDS: [&str; 21] = [
-    "red_fives",
-    "kiriage_mangan",
-    "kazoe_yakuman",
-    "multiple_yakuman",
-    "double_yakuman",
-    "honba_ron_points",
-    "honba_tsumo_points",
-    "riichi_stick_points",
-    "double_ron",
-    "triple_ron_abort",
-    "abortive_draws",
-    "nagashi_mangan",
-    "pao",
-    "starting_points",
-    "riichi_min_points",
-    "bust_below_zero",
-    "target_points",
-    "west_extension",
-    "dealer_top_stop",
-    "num_actions",
-    "yaku_count",
-];
+/// Whether `name` in SCREAMING_CASE is a constant the emitter makes from something other than an
+/// option (the action layout and the yaku table), so no option may take it.
+fn generated_name(name: &str) -> bool {
+    name == "num_actions" || name.starts_with("yaku_") || name.starts_with("action_")
+}
 
 fn is_snake_ident(s: &str) -> bool {
     let mut chars = s.chars();
@@ -199,11 +182,13 @@ impl Checker<'_> {
     }
 }
 
-/// Checks a parsed variant, yaku file and feature list.
+/// Checks a parsed variant, yaku file and feature list; with `kernel_names` (every identifier in
+/// the kernel code), also that the kernel names every plain option's constant.
 pub fn check(
     (variant_path, variant_text): (&str, &str),
     (yaku_path, yaku_text): (&str, &str),
     features: Vec<Feature>,
+    kernel_names: Option<&BTreeSet<String>>,
 ) -> Result<Spec, Vec<Diagnostic>> {
     let variant_src = Source::new(variant_path, variant_text);
     let yaku_src = Source::new(yaku_path, yaku_text);
@@ -224,7 +209,7 @@ pub fn check(
         yaku_src,
         errors,
     };
-    let variant = check_variant(&mut c, &vf, &features);
+    let variant = check_variant(&mut c, &vf, &features, kernel_names);
     let yaku = check_yaku(&mut c, &yf, &vf, &features);
     if c.errors.is_empty() {
         Ok(Spec {
@@ -237,7 +222,12 @@ pub fn check(
     }
 }
 
-fn check_variant(c: &mut Checker<'_>, vf: &VariantFile, features: &[Feature]) -> Variant {
+fn check_variant(
+    c: &mut Checker<'_>,
+    vf: &VariantFile,
+    features: &[Feature],
+    kernel_names: Option<&BTreeSet<String>>,
+) -> Variant {
     let name = vf.variant.name.get_ref().clone();
     let stem = std::path::Path::new(c.variant_src.path)
         .file_stem()
@@ -250,6 +240,8 @@ fn check_variant(c: &mut Checker<'_>, vf: &VariantFile, features: &[Feature]) ->
             format!("variant name `{name}` differs from its file name; write `name = \"{stem}\"`"),
         );
     }
+
+    let options = options::read(c, vf, kernel_names);
 
     for key in vf.yaku_rules.keys() {
         let k = key.get_ref();
@@ -266,7 +258,16 @@ fn check_variant(c: &mut Checker<'_>, vf: &VariantFile, features: &[Feature]) ->
                     "option `{k}` has the name of a feature; conditions could not tell them apart, rename the option"
                 ),
             );
-        } else if VARIANT_FIELDS.contains(&k.as_str()) || k.starts_with("yaku_") || k.starts_with("action_") {
+        } else if let Some(o) = options.iter().find(|o| o.option.name == *k) {
+            c.variant_err(
+                at,
+                format!(
+                    "option `{k}` would clash with the constant of `[{}] {k}` (`{}`); rename it",
+                    o.option.section,
+                    k.to_ascii_uppercase()
+                ),
+            );
+        } else if generated_name(k) {
             c.variant_err(
                 at,
                 format!(
@@ -277,79 +278,100 @@ fn check_variant(c: &mut Checker<'_>, vf: &VariantFile, features: &[Feature]) ->
         }
     }
 
-    let g = &vf.game;
-    let uma_vec = g.uma.get_ref();
+    let uma = check_uma(c, vf);
+    let illegal_action_penalty = check_penalty(c, vf);
+    if let Some(o) = options.iter().find(|o| o.option.name == "starting_points") {
+        if !matches!(o.option.value, OptionValue::U32(1..)) {
+            c.variant_err(o.value_at, "starting_points must be positive, e.g. `25000`");
+        }
+    }
+
+    let red_fives = options::required_bool(
+        c,
+        &options,
+        ("tiles", &vf.tiles),
+        "red_fives",
+        "the discard ids and the `*_red` actions follow it",
+    );
+    let abortive_draws = options::required_bool(
+        c,
+        &options,
+        ("draws", &vf.draws),
+        "abortive_draws",
+        "the `kyuushu` action follows it",
+    );
+    let (actions, num_actions) = check_actions(c, &vf.actions, red_fives, abortive_draws);
+
+    Variant {
+        name,
+        description: vf.variant.description.clone(),
+        red_fives,
+        abortive_draws,
+        yaku_rules: vf
+            .yaku_rules
+            .iter()
+            .map(|(k, v)| (k.get_ref().clone(), *v.get_ref()))
+            .collect(),
+        options: options.into_iter().map(|o| o.option).collect(),
+        uma,
+        illegal_action_penalty,
+        num_actions,
+        actions,
+    }
+}
+
+/// `[game] uma`: four integers (thousands of points) summing to 0.
+fn check_uma(c: &mut Checker<'_>, vf: &VariantFile) -> [i32; 4] {
     let mut uma = [0i32; 4];
+    let Some(value) = options::special(c, &vf.game, "uma", "uma = [30, 10, -10, -30]") else {
+        return uma;
+    };
+    let at = value.span().start;
+    let Ok(uma_vec) = value.get_ref().clone().try_into::<Vec<i32>>() else {
+        c.variant_err(
+            at,
+            "uma must be a list of integers, one per place in thousands of points, e.g. `uma = [30, 10, -10, -30]`",
+        );
+        return uma;
+    };
     if uma_vec.len() != 4 {
         c.variant_err(
-            g.uma.span().start,
+            at,
             format!(
                 "uma has {} entries; write one per place, in thousands of points, e.g. `uma = [30, 10, -10, -30]`",
                 uma_vec.len()
             ),
         );
     } else {
-        uma.copy_from_slice(uma_vec);
+        uma.copy_from_slice(&uma_vec);
         let sum: i64 = uma.iter().map(|&u| i64::from(u)).sum();
         if sum != 0 {
             c.variant_err(
-                g.uma.span().start,
+                at,
                 format!("uma sums to {sum}, not 0; uma only moves points between players"),
             );
         }
     }
-    let penalty = *g.illegal_action_penalty.get_ref();
-    let penalty_f32 = penalty as f32;
-    if !penalty_f32.is_finite() {
+    uma
+}
+
+/// `[game] illegal_action_penalty`: a finite f32 reward.
+fn check_penalty(c: &mut Checker<'_>, vf: &VariantFile) -> f32 {
+    let Some(value) = options::special(c, &vf.game, "illegal_action_penalty", "illegal_action_penalty = -1.0") else {
+        return 0.0;
+    };
+    let penalty = match value.get_ref() {
+        toml::Value::Float(x) => *x as f32,
+        toml::Value::Integer(n) => *n as f32,
+        _ => f32::NAN,
+    };
+    if !penalty.is_finite() {
         c.variant_err(
-            g.illegal_action_penalty.span().start,
+            value.span().start,
             "illegal_action_penalty must be a finite number (an f32 reward), e.g. `-1.0`",
         );
     }
-    if *g.starting_points.get_ref() == 0 {
-        c.variant_err(
-            g.starting_points.span().start,
-            "starting_points must be positive, e.g. `25000`",
-        );
-    }
-
-    let red_fives = *vf.tiles.red_fives.get_ref();
-    let abortive_draws = *vf.draws.abortive_draws.get_ref();
-    let (actions, num_actions) = check_actions(c, &vf.actions, red_fives, abortive_draws);
-
-    let s = &vf.scoring;
-    Variant {
-        name,
-        description: vf.variant.description.clone(),
-        red_fives,
-        yaku_rules: vf
-            .yaku_rules
-            .iter()
-            .map(|(k, v)| (k.get_ref().clone(), *v.get_ref()))
-            .collect(),
-        kiriage_mangan: s.kiriage_mangan,
-        kazoe_yakuman: s.kazoe_yakuman,
-        multiple_yakuman: s.multiple_yakuman,
-        double_yakuman: s.double_yakuman,
-        honba_ron_points: s.honba_ron_points,
-        honba_tsumo_points: s.honba_tsumo_points,
-        riichi_stick_points: s.riichi_stick_points,
-        double_ron: vf.claims.double_ron,
-        triple_ron_abort: vf.claims.triple_ron_abort,
-        abortive_draws,
-        nagashi_mangan: vf.draws.nagashi_mangan,
-        pao: vf.liability.pao,
-        starting_points: *g.starting_points.get_ref(),
-        riichi_min_points: g.riichi_min_points,
-        bust_below_zero: g.bust_below_zero,
-        target_points: g.target_points,
-        west_extension: g.west_extension,
-        dealer_top_stop: g.dealer_top_stop,
-        uma,
-        illegal_action_penalty: penalty_f32,
-        num_actions,
-        actions,
-    }
+    penalty
 }
 
 fn check_actions(

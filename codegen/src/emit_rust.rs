@@ -6,7 +6,7 @@
 //! (or `[u32; N]`), and one `fn` using typed `let`s, bool/integer ops and `as` casts.
 
 use crate::expr::{BinOp, Expr, Type};
-use crate::spec::{Spec, ACTION_KINDS};
+use crate::spec::{OptionValue, Spec, ACTION_KINDS};
 use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
 
@@ -84,33 +84,20 @@ fn kernel_tokens(spec: &Spec) -> TokenStream {
     let v = &spec.variant;
     let mut items = TokenStream::new();
 
-    let bools: [(&str, bool); 13] = [
-        ("red_fives", v.red_fives),
-        ("kiriage_mangan", v.kiriage_mangan),
-        ("kazoe_yakuman", v.kazoe_yakuman),
-        ("multiple_yakuman", v.multiple_yakuman),
-        ("double_yakuman", v.double_yakuman),
-        ("double_ron", v.double_ron),
-        ("triple_ron_abort", v.triple_ron_abort),
-        ("abortive_draws", v.abortive_draws),
-        ("nagashi_mangan", v.nagashi_mangan),
-        ("pao", v.pao),
-        ("bust_below_zero", v.bust_below_zero),
-        ("west_extension", v.west_extension),
-        ("dealer_top_stop", v.dealer_top_stop),
-    ];
+    // Bools first, then integers, each in file order: a reader scanning the generated file finds
+    // the flags together, as they were when these constants were listed by hand.
+    let bools = v.options.iter().filter_map(|o| match o.value {
+        OptionValue::Bool(b) => Some((&o.name, b)),
+        OptionValue::U32(_) => None,
+    });
     for (name, value) in bools {
         let id = format_ident!("{}", upper(name));
         items.extend(quote!(pub const #id: bool = #value;));
     }
-    let u32s: [(&str, u32); 6] = [
-        ("honba_ron_points", v.honba_ron_points),
-        ("honba_tsumo_points", v.honba_tsumo_points),
-        ("riichi_stick_points", v.riichi_stick_points),
-        ("starting_points", v.starting_points),
-        ("riichi_min_points", v.riichi_min_points),
-        ("target_points", v.target_points),
-    ];
+    let u32s = v.options.iter().filter_map(|o| match o.value {
+        OptionValue::U32(n) => Some((&o.name, n)),
+        OptionValue::Bool(_) => None,
+    });
     for (name, value) in u32s {
         let id = format_ident!("{}", upper(name));
         let lit = u32_lit(value);
@@ -291,6 +278,11 @@ fn host_tokens(spec: &Spec) -> TokenStream {
     });
     let m = Literal::usize_unsuffixed(v.yaku_rules.len());
     let rules = v.yaku_rules.iter().map(|(n, b)| quote!((#n, #b)));
+    let o = Literal::usize_unsuffixed(v.options.len());
+    let options = v.options.iter().map(|opt| {
+        let (section, name, value) = (&opt.section, &opt.name, opt.value.to_string());
+        quote!((#section, #name, #value))
+    });
     let uma = v.uma.iter().map(|&u| i32_tokens(u));
     let penalty = f32_tokens(v.illegal_action_penalty);
     quote! {
@@ -308,6 +300,9 @@ fn host_tokens(spec: &Spec) -> TokenStream {
         pub const ACTION_BLOCKS: [(&str, u32, u32); #k] = [#(#blocks),*];
         /// `[yaku_rules]` options: (name, value).
         pub const YAKU_RULES: [(&str, bool); #m] = [#(#rules),*];
+        /// Plain options: (section, name, value), in file order. Each is also a kernel
+        /// constant, the name in SCREAMING_CASE.
+        pub const OPTIONS: [(&str, &str, &str); #o] = [#(#options),*];
         /// Uma by final place (1st..4th), in thousands of points (30 = 30,000 points = 300 reward units).
         pub const UMA: [i32; 4] = [#(#uma),*];
         /// Reward given to a seat that plays an illegal action (the game ends).

@@ -5,7 +5,9 @@
 //! * `model`    — the spec files as written (serde, with spans)
 //! * `expr`     — the yaku condition language: parser, type checker, interpreter
 //! * `check`    — semantic checks over the model (unknown features, duplicates, supersedes cycles,
-//!   ranges, action layout), producing the checked `spec`
+//!   ranges, action layout, plain options typed by their values), producing the checked `spec`
+//! * `option_rules` — options that mean nothing without another, as data
+//! * `kernel_names` — the names the kernel code mentions, so an option it never reads is an error
 //! * `spec`     — the checked spec the emitters read
 //! * `emit_rust`— kernel-subset Rust (variant consts, yaku table, yaku conditions) and host-only metadata
 //! * `tables`   — per-suit base-5 tables (shanten costs, decompositions) built from first principles
@@ -13,7 +15,9 @@ pub mod check;
 pub mod diag;
 pub mod emit_rust;
 pub mod expr;
+pub mod kernel_names;
 pub mod model;
+pub mod option_rules;
 pub mod spec;
 pub mod tables;
 
@@ -32,8 +36,8 @@ fn read(path: &Path) -> Result<String, Diagnostic> {
     })
 }
 
-/// The files [`load`] reads for `variant`: the variant file, the yaku file and the features file
-/// (a build script prints them as `cargo:rerun-if-changed`).
+/// The spec files [`load`] reads for `variant`: the variant file, the yaku file and the features
+/// file (a build script prints them as `cargo:rerun-if-changed`, with [`kernel_paths`]).
 pub fn source_paths(rules_dir: &Path, variant: &str) -> [PathBuf; 3] {
     [
         rules_dir.join("variants").join(format!("{variant}.toml")),
@@ -42,8 +46,23 @@ pub fn source_paths(rules_dir: &Path, variant: &str) -> [PathBuf; 3] {
     ]
 }
 
+/// `rules_dir/kernel/*.rs`, sorted: [`load`] reads them for the option constants the kernel names.
+pub fn kernel_paths(rules_dir: &Path) -> Vec<PathBuf> {
+    let Ok(dir) = std::fs::read_dir(rules_dir.join("kernel")) else {
+        return Vec::new();
+    };
+    let mut paths: Vec<PathBuf> = dir
+        .filter_map(Result::ok)
+        .map(|e| e.path())
+        .filter(|p| p.extension().is_some_and(|x| x == "rs"))
+        .collect();
+    paths.sort();
+    paths
+}
+
 /// Load, parse and check `rules/variants/<variant>.toml` + `rules/yaku.toml` +
-/// `rules/kernel/features.rs` under `rules_dir`.
+/// `rules/kernel/features.rs` under `rules_dir`; every plain option must be named by some
+/// `rules/kernel/*.rs`.
 pub fn load(rules_dir: &Path, variant: &str) -> Result<Spec, Vec<Diagnostic>> {
     let paths = source_paths(rules_dir, variant);
     let mut texts = Vec::new();
@@ -66,19 +85,43 @@ pub fn load(rules_dir: &Path, variant: &str) -> Result<Spec, Vec<Diagnostic>> {
         );
         return Err(errors);
     }
+    let mut kernel = Vec::new();
+    for p in kernel_paths(rules_dir) {
+        kernel.push((p.display().to_string(), read(&p).map_err(|e| vec![e])?));
+    }
+    let kernel: Vec<(&str, &str)> = kernel.iter().map(|(p, t)| (p.as_str(), t.as_str())).collect();
     let names: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
-    load_sources((&names[0], &texts[0]), (&names[1], &texts[1]), (&names[2], &texts[2]))
+    load_sources_with_kernel(
+        (&names[0], &texts[0]),
+        (&names[1], &texts[1]),
+        (&names[2], &texts[2]),
+        &kernel,
+    )
 }
 
-/// Same as [`load`] from in-memory sources, as (path used in diagnostics, text) pairs. The variant
-/// name in the file must equal the variant path's file stem.
+/// Same as [`load`] from in-memory sources, as (path used in diagnostics, text) pairs, but without
+/// the kernel code: an option no kernel code names is not caught here. The variant name in the
+/// file must equal the variant path's file stem.
 pub fn load_sources(
     variant: (&str, &str),
     yaku: (&str, &str),
     features: (&str, &str),
 ) -> Result<Spec, Vec<Diagnostic>> {
     let features = check::parse_features(features.0, features.1)?;
-    check::check(variant, yaku, features)
+    check::check(variant, yaku, features, None)
+}
+
+/// [`load_sources`] plus the kernel sources (path, text): every plain option's constant must be
+/// named in them.
+pub fn load_sources_with_kernel(
+    variant: (&str, &str),
+    yaku: (&str, &str),
+    features: (&str, &str),
+    kernel: &[(&str, &str)],
+) -> Result<Spec, Vec<Diagnostic>> {
+    let kernel_names = kernel_names::collect(kernel)?;
+    let features = check::parse_features(features.0, features.1)?;
+    check::check(variant, yaku, features, Some(&kernel_names))
 }
 
 /// File stems of `rules_dir/variants/*.toml`, sorted; empty if the folder cannot be read.

@@ -11,17 +11,36 @@ use std::collections::BTreeMap;
 #[serde(deny_unknown_fields)]
 pub struct VariantFile {
     pub variant: VariantSection,
-    pub tiles: TilesSection,
+    pub tiles: OptionTable,
     /// Free-form bool options that yaku conditions may name (e.g. `open_tanyao`); a variant may
     /// have none.
     #[serde(default)]
     pub yaku_rules: BTreeMap<Spanned<String>, Spanned<bool>>,
-    pub scoring: ScoringSection,
-    pub claims: ClaimsSection,
-    pub draws: DrawsSection,
-    pub liability: LiabilitySection,
-    pub game: GameSection,
+    pub scoring: OptionTable,
+    pub claims: OptionTable,
+    pub draws: OptionTable,
+    pub liability: OptionTable,
+    pub game: OptionTable,
     pub actions: ActionsSection,
+}
+
+/// A section of plain options, read as whatever values it holds so that a new option needs no
+/// field here; `check::options` types them. The map is sorted by key; the key spans give the file
+/// order.
+pub type OptionTable = Spanned<BTreeMap<Spanned<String>, Spanned<toml::Value>>>;
+
+impl VariantFile {
+    /// The option sections with their names.
+    pub fn option_sections(&self) -> [(&'static str, &OptionTable); 6] {
+        [
+            ("tiles", &self.tiles),
+            ("scoring", &self.scoring),
+            ("claims", &self.claims),
+            ("draws", &self.draws),
+            ("liability", &self.liability),
+            ("game", &self.game),
+        ]
+    }
 }
 
 #[derive(Debug, Deserialize)]
@@ -29,57 +48,6 @@ pub struct VariantFile {
 pub struct VariantSection {
     pub name: Spanned<String>,
     pub description: String,
-}
-
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct TilesSection {
-    pub red_fives: Spanned<bool>,
-}
-
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct ScoringSection {
-    pub kiriage_mangan: bool,
-    pub kazoe_yakuman: bool,
-    pub multiple_yakuman: bool,
-    pub double_yakuman: bool,
-    pub honba_ron_points: u32,
-    pub honba_tsumo_points: u32,
-    pub riichi_stick_points: u32,
-}
-
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct ClaimsSection {
-    pub double_ron: bool,
-    pub triple_ron_abort: bool,
-}
-
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct DrawsSection {
-    pub abortive_draws: Spanned<bool>,
-    pub nagashi_mangan: bool,
-}
-
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct LiabilitySection {
-    pub pao: bool,
-}
-
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct GameSection {
-    pub starting_points: Spanned<u32>,
-    pub riichi_min_points: u32,
-    pub bust_below_zero: bool,
-    pub target_points: u32,
-    pub west_extension: bool,
-    pub dealer_top_stop: bool,
-    pub uma: Spanned<Vec<i32>>,
-    pub illegal_action_penalty: Spanned<f64>,
 }
 
 #[derive(Debug, Deserialize)]

@@ -2,6 +2,7 @@
 //! every rule in the files passed the checker.
 
 use crate::expr::{Expr, Type};
+use std::fmt;
 
 /// Action kinds the kernel knows, in the reference order. `count` is the block size, except for
 /// `discard`, whose size follows `red_fives` (34 tile types, plus 3 red fives).
@@ -91,36 +92,82 @@ pub struct Yaku {
     pub description: String,
 }
 
+/// A plain option: a bool or integer key of `[tiles]`, `[scoring]`, `[claims]`, `[draws]`,
+/// `[liability]` or `[game]`. Each becomes `pub const <KEY IN SCREAMING_CASE>` in the kernel code,
+/// so a new option needs only its line in the variant files and the kernel code that reads it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct VariantOption {
+    pub section: String,
+    pub name: String,
+    pub value: OptionValue,
+}
+
+/// The value of a plain option: a TOML boolean, or a TOML integer that fits a `u32`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum OptionValue {
+    Bool(bool),
+    U32(u32),
+}
+
+impl OptionValue {
+    /// `true`, or an integer above 0: what an option that needs another asks of it.
+    pub fn is_set(self) -> bool {
+        match self {
+            OptionValue::Bool(b) => b,
+            OptionValue::U32(n) => n > 0,
+        }
+    }
+}
+
+impl fmt::Display for OptionValue {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            OptionValue::Bool(b) => write!(f, "{b}"),
+            OptionValue::U32(n) => write!(f, "{n}"),
+        }
+    }
+}
+
 #[derive(Clone, Debug)]
 pub struct Variant {
     pub name: String,
     pub description: String,
+    /// Also in `options`; a field because the action layout depends on it.
     pub red_fives: bool,
+    /// Also in `options`; a field because the `kyuushu` action depends on it.
+    pub abortive_draws: bool,
     /// `[yaku_rules]`: bool options visible to conditions, sorted by name.
     pub yaku_rules: Vec<(String, bool)>,
-    pub kiriage_mangan: bool,
-    pub kazoe_yakuman: bool,
-    pub multiple_yakuman: bool,
-    pub double_yakuman: bool,
-    pub honba_ron_points: u32,
-    pub honba_tsumo_points: u32,
-    pub riichi_stick_points: u32,
-    pub double_ron: bool,
-    pub triple_ron_abort: bool,
-    pub abortive_draws: bool,
-    pub nagashi_mangan: bool,
-    pub pao: bool,
-    pub starting_points: u32,
-    pub riichi_min_points: u32,
-    pub bust_below_zero: bool,
-    pub target_points: u32,
-    pub west_extension: bool,
-    pub dealer_top_stop: bool,
+    /// The plain options, in file order (section by section, keys as written).
+    pub options: Vec<VariantOption>,
     /// In thousands of points, first place first.
     pub uma: [i32; 4],
     pub illegal_action_penalty: f32,
     pub num_actions: u32,
     pub actions: Vec<ActionBlock>,
+}
+
+impl Variant {
+    /// The plain option `name`, from whichever section declares it.
+    pub fn option_value(&self, name: &str) -> Option<OptionValue> {
+        self.options.iter().find(|o| o.name == name).map(|o| o.value)
+    }
+
+    /// A plain bool option; `None` if absent or an integer.
+    pub fn bool_option(&self, name: &str) -> Option<bool> {
+        match self.option_value(name)? {
+            OptionValue::Bool(b) => Some(b),
+            OptionValue::U32(_) => None,
+        }
+    }
+
+    /// A plain integer option; `None` if absent or a bool.
+    pub fn u32_option(&self, name: &str) -> Option<u32> {
+        match self.option_value(name)? {
+            OptionValue::U32(n) => Some(n),
+            OptionValue::Bool(_) => None,
+        }
+    }
 }
 
 /// A checked spec: one variant, the yaku table and the feature list.

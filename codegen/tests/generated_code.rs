@@ -1,8 +1,7 @@
 //! The generated kernel code stays inside the portable kernel subset, compiles without warnings,
 //! and computes exactly what the interpreter says the spec means.
 
-mod common;
-use common::*;
+use crate::common::*;
 use rinshan_codegen::expr::{eval, Type, Value};
 use rinshan_codegen::{generate, Spec};
 use syn::visit::Visit;
@@ -232,4 +231,41 @@ fn compiled_conditions_match_the_interpreter_modified_no_red() {
     let spec = load_texts("no_red", &v, &y, &f).unwrap_or_else(|e| panic!("{}", render(&e)));
     assert_in_subset(&spec);
     differential(&spec, "no_red_modified");
+}
+
+/// A new option takes only its line in the variant file: it comes out as a typed constant, in
+/// file order, and in the host's option list.
+#[test]
+fn a_new_option_needs_no_codegen_edit() {
+    let (v, y, f) = sources("red");
+    let v = replace_once(&v, "pao = true\n", "pao = true\nmy_new_rule = true\n");
+    let v = replace_once(&v, "[actions]", "my_limit = 7\n\n[actions]");
+    let spec = load_texts("red", &v, &y, &f).unwrap_or_else(|e| panic!("{}", render(&e)));
+    let g = generate(&spec);
+    assert!(
+        g.kernel_rust.contains("pub const MY_NEW_RULE: bool = true;\n"),
+        "{}",
+        g.kernel_rust
+    );
+    assert!(
+        g.kernel_rust.contains("pub const MY_LIMIT: u32 = 7u32;\n"),
+        "{}",
+        g.kernel_rust
+    );
+    assert!(
+        g.host_rust.contains("(\"liability\", \"my_new_rule\", \"true\"),"),
+        "{}",
+        g.host_rust
+    );
+    assert!(
+        g.host_rust.contains("(\"game\", \"my_limit\", \"7\"),"),
+        "{}",
+        g.host_rust
+    );
+    // Nothing else changes.
+    let (before, after) = (items(&generate(&load_real("red")).kernel_rust), items(&g.kernel_rust));
+    let added: Vec<&String> = after.keys().filter(|k| !before.contains_key(*k)).collect();
+    assert_eq!(added, ["MY_LIMIT", "MY_NEW_RULE"]);
+    assert!(before.iter().all(|(k, item)| after.get(k) == Some(item)));
+    assert_in_subset(&spec);
 }

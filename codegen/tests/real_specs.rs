@@ -1,8 +1,7 @@
 //! The real spec files: they load, they say what the rules say, and the generated code means what
 //! the spec means.
 
-mod common;
-use common::*;
+use crate::common::*;
 use rinshan_codegen::expr::{eval, Value};
 use rinshan_codegen::{generate, Spec};
 
@@ -220,26 +219,67 @@ fn action_layouts_match_the_reference() {
 fn variant_options() {
     let red = load_real("red").variant;
     let no_red = load_real("no_red").variant;
-    assert!(red.red_fives && red.double_ron && red.triple_ron_abort && red.abortive_draws);
-    assert!(red.nagashi_mangan && red.pao);
-    assert!(!no_red.red_fives && !no_red.double_ron && !no_red.triple_ron_abort);
-    assert!(!no_red.abortive_draws && !no_red.nagashi_mangan && !no_red.pao);
+    let flag = |v: &rinshan_codegen::spec::Variant, name: &str| {
+        v.bool_option(name)
+            .unwrap_or_else(|| panic!("{}: no bool option `{name}`", v.name))
+    };
+    let number = |v: &rinshan_codegen::spec::Variant, name: &str| {
+        v.u32_option(name)
+            .unwrap_or_else(|| panic!("{}: no integer option `{name}`", v.name))
+    };
+    assert!(red.red_fives && red.abortive_draws && !no_red.red_fives && !no_red.abortive_draws);
+    for name in [
+        "red_fives",
+        "double_ron",
+        "triple_ron_abort",
+        "abortive_draws",
+        "nagashi_mangan",
+        "pao",
+    ] {
+        assert!(flag(&red, name) && !flag(&no_red, name), "{name}");
+    }
     // Tenhou counts the "double" yakuman once; no_red keeps the reference's doubles.
-    assert!(!red.double_yakuman && no_red.double_yakuman);
+    assert!(!flag(&red, "double_yakuman") && flag(&no_red, "double_yakuman"));
     for v in [&red, &no_red] {
-        assert!(!v.kiriage_mangan && v.kazoe_yakuman && v.multiple_yakuman);
+        assert!(!flag(v, "kiriage_mangan") && flag(v, "kazoe_yakuman") && flag(v, "multiple_yakuman"));
         assert_eq!(
-            (v.honba_ron_points, v.honba_tsumo_points, v.riichi_stick_points),
-            (300, 100, 1000)
+            ["honba_ron_points", "honba_tsumo_points", "riichi_stick_points"].map(|n| number(v, n)),
+            [300, 100, 1000]
         );
         assert_eq!(
-            (v.starting_points, v.riichi_min_points, v.target_points),
-            (25000, 1000, 30000)
+            ["starting_points", "riichi_min_points", "target_points"].map(|n| number(v, n)),
+            [25000, 1000, 30000]
         );
-        assert!(v.bust_below_zero && v.west_extension && v.dealer_top_stop);
+        assert!(flag(v, "bust_below_zero") && flag(v, "west_extension") && flag(v, "dealer_top_stop"));
         assert_eq!(v.uma, [30, 10, -10, -30]);
         assert_eq!(v.illegal_action_penalty, -1.0);
         assert_eq!(v.yaku_rules, [("open_tanyao".to_string(), true)]);
+        // File order, section by section; uma and the penalty are not plain options.
+        let names: Vec<&str> = v.options.iter().map(|o| o.name.as_str()).collect();
+        assert_eq!(
+            names,
+            [
+                "red_fives",
+                "kiriage_mangan",
+                "kazoe_yakuman",
+                "multiple_yakuman",
+                "double_yakuman",
+                "honba_ron_points",
+                "honba_tsumo_points",
+                "riichi_stick_points",
+                "double_ron",
+                "triple_ron_abort",
+                "abortive_draws",
+                "nagashi_mangan",
+                "pao",
+                "starting_points",
+                "riichi_min_points",
+                "bust_below_zero",
+                "target_points",
+                "west_extension",
+                "dealer_top_stop",
+            ]
+        );
     }
 }
 
@@ -345,4 +385,21 @@ fn rules_are_data_local_yaku() {
 fn generation_is_deterministic() {
     let spec = load_real("red");
     assert_eq!(generate(&spec), generate(&load_real("red")));
+}
+
+/// A combination rule naming an option no variant has would never fire.
+#[test]
+fn option_rules_name_real_options() {
+    for variant in ["red", "no_red"] {
+        let v = load_real(variant).variant;
+        for rule in rinshan_codegen::option_rules::OPTION_RULES {
+            for path in [rule.option, rule.needs] {
+                let (section, name) = path.split_once('.').expect("section.name");
+                assert!(
+                    v.options.iter().any(|o| o.section == section && o.name == name),
+                    "{variant}: no option `{path}`"
+                );
+            }
+        }
+    }
 }

@@ -1,8 +1,7 @@
 //! Reviewed snapshots of the generated code: a change to the spec or the emitter shows up as a
 //! diff to review (`cargo insta review`). Insta never writes snapshots under CI.
 
-mod common;
-use common::*;
+use crate::common::*;
 use rinshan_codegen::generate;
 
 #[test]

@@ -414,7 +414,7 @@ fn do_call(s: &mut GameState, q: u32, from: u32, v: u32, a: u32) -> u32 {
     }
     let n: u32 = meld_count(s, q);
     let src: u32 = (from + 4u32 - q) % 4u32;
-    s.melds[(q * 4u32 + n) as usize] = kind | (low << 4u32) | (src << 10u32) | (reds << 12u32);
+    s.melds[(q * 4u32 + n) as usize] = meld_word(kind, low) | (src << MELD_FROM_SHIFT) | (reds << MELD_REDS_SHIFT);
     s.meld_counts = with_byte(s.meld_counts, q, n + 1u32);
     if PAO && kind != MELD_CHI && t >= FIRST_HONOR {
         note_liability(s, q, from, t);

@@ -12,7 +12,7 @@ fn red_bit(seat: u32, suit: u32) -> u32 {
     1u32 << (seat * 3u32 + suit)
 }
 
-fn holds_red(s: &mut GameState, seat: u32, suit: u32) -> bool {
+pub fn holds_red(s: &mut GameState, seat: u32, suit: u32) -> bool {
     (s.red & red_bit(seat, suit)) != 0u32
 }
 
@@ -54,7 +54,7 @@ fn take_type(s: &mut GameState, seat: u32, t: u32, prefer_red: bool) -> u32 {
     v
 }
 
-fn meld_count(s: &mut GameState, seat: u32) -> u32 {
+pub fn meld_count(s: &mut GameState, seat: u32) -> u32 {
     byte_of(s.meld_counts, seat)
 }
 

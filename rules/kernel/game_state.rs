@@ -2,10 +2,10 @@
 // lives in a GPU storage buffer and in a CPU array. Small counts are packed into words; the
 // accessors below are the only code that knows the packing.
 
-// Game modes.
-const MODE_SINGLE: u32 = 0;
-const MODE_EAST: u32 = 1;
-const MODE_HALF: u32 = 2;
+// Game modes (ResetInput.mode). `pub`: hosts pass them.
+pub const MODE_SINGLE: u32 = 0;
+pub const MODE_EAST: u32 = 1;
+pub const MODE_HALF: u32 = 2;
 
 // What the current player is deciding.
 const PHASE_TURN: u32 = 0; // after a draw or a call: discard, tsumo, kan, riichi, kyuushu
@@ -47,8 +47,9 @@ pub const EVENT_ABORTIVE_DRAW: u32 = 8;
 pub const EVENT_GAME_OVER: u32 = 16;
 pub const EVENT_NAGASHI: u32 = 32;
 
-// How a round ended without a win (GameState.draw_kind, low byte); the tenpai seats follow in
-// bits 8..11 and, for nagashi, the nagashi seats in bits 12..15.
+// How a round ended without a win (GameState.draw_kind, low byte); the tenpai seats follow from
+// bit DRAW_TENPAI_SHIFT and, for nagashi, the nagashi seats from bit DRAW_NAGASHI_SHIFT (a bit
+// per seat).
 pub const DRAW_EXHAUSTIVE: u32 = 1;
 pub const DRAW_NAGASHI: u32 = 2;
 pub const DRAW_KYUUSHU: u32 = 3;
@@ -56,6 +57,18 @@ pub const DRAW_FOUR_RIICHI: u32 = 4;
 pub const DRAW_TRIPLE_RON: u32 = 5;
 pub const DRAW_FOUR_KANS: u32 = 6;
 pub const DRAW_FOUR_WINDS: u32 = 7;
+pub const DRAW_KIND_MASK: u32 = 255;
+pub const DRAW_TENPAI_SHIFT: u32 = 8;
+pub const DRAW_NAGASHI_SHIFT: u32 = 12;
+
+// The two `win_score` words of a winning seat: han | fu | yakuman | concealed, and dora | aka |
+// ura, each field WIN_FIELD_MASK wide at its shift. `pub`: hosts unpack them (log replay).
+pub const WIN_FIELD_MASK: u32 = 255;
+pub const WIN_FU_SHIFT: u32 = 8;
+pub const WIN_YAKUMAN_SHIFT: u32 = 16;
+pub const WIN_CONCEALED_SHIFT: u32 = 24;
+pub const WIN_AKA_SHIFT: u32 = 8;
+pub const WIN_URA_SHIFT: u32 = 16;
 
 // The continuations of a step (see `run_tasks`): each piece of the game that can follow an action
 // runs from one place, so the GPU compiler inlines each heavy function once.
@@ -168,7 +181,7 @@ pub struct GameState {
     pub hands: [u32; 20],
     // Red fives held: bit seat * 3 + suit.
     pub red: u32,
-    // Melds: 4 per seat (see `meld_word`); counts 8 bits per seat.
+    // Melds: 4 per seat (`meld_word` with MELD_FROM_SHIFT / MELD_REDS_SHIFT fields); counts 8 bits per seat.
     pub melds: [u32; 16],
     pub meld_counts: u32,
     // Rivers: 24 discards per seat, 8 bits each (value | 64 called | 128 tsumogiri); lengths 8 bits per seat.
@@ -214,16 +227,15 @@ pub struct GameState {
     pub rounds: u32,
     pub steps: u32,
     // What the last settlement scored, per winning seat (valid for the seats in `winners`): the
-    // yaku bits (2 words); han | fu << 8 | yakuman << 16 | concealed << 24; dora | aka << 8 |
-    // ura << 16. Written only when a hand wins, so the hot path pays nothing for it; hosts read it
-    // (log replay).
+    // yaku bits (2 words) and the two packed words of WIN_* fields. Written only when a hand
+    // wins, so the hot path pays nothing for it; hosts read it (log replay).
     pub win_yaku: [u32; 8],
     pub win_score: [u32; 8],
     // DRAW_* of the last round that ended without a win, with its tenpai / nagashi seats.
     pub draw_kind: u32,
 }
 
-fn hand_count(s: &mut GameState, seat: u32, t: u32) -> u32 {
+pub fn hand_count(s: &mut GameState, seat: u32, t: u32) -> u32 {
     (s.hands[(seat * 5u32 + t / 8u32) as usize] >> ((t % 8u32) * 4u32)) & 15u32
 }
 
@@ -313,11 +325,11 @@ fn isolated_and_orphans(s: &mut GameState, seat: u32) -> [u32; 2] {
     [isolated, orphans]
 }
 
-fn wall_tile(s: &mut GameState, i: u32) -> u32 {
+pub fn wall_tile(s: &mut GameState, i: u32) -> u32 {
     (s.wall[(i / 4u32) as usize] >> ((i % 4u32) * 8u32)) & 255u32
 }
 
-fn byte_of(word: u32, i: u32) -> u32 {
+pub fn byte_of(word: u32, i: u32) -> u32 {
     (word >> (i * 8u32)) & 255u32
 }
 

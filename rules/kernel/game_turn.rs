@@ -214,7 +214,7 @@ fn do_self_kan(s: &mut GameState, t: u32) -> u32 {
     if hand_count(s, p, t) == 4u32 {
         let reds: u32 = take_all_of_type(s, p, t, 4u32);
         let n: u32 = meld_count(s, p);
-        s.melds[(p * 4u32 + n) as usize] = MELD_CLOSED_KAN | (t << 4u32) | (reds << 12u32);
+        s.melds[(p * 4u32 + n) as usize] = meld_word(MELD_CLOSED_KAN, t) | (reds << MELD_REDS_SHIFT);
         s.meld_counts = with_byte(s.meld_counts, p, n + 1u32);
         // A closed kan shows its dora at once.
         s.dora_revealed += 1u32;

@@ -24,8 +24,8 @@ fn win_input(s: &mut GameState, seat: u32, v: u32, tsumo: bool, chankan: bool) -
     let n: u32 = meld_count(s, seat);
     for i in 0u32..n {
         let m: u32 = s.melds[(seat * 4u32 + i) as usize];
-        melds[i as usize] = m & 1023u32;
-        aka += (m >> 12u32) & 7u32;
+        melds[i as usize] = m & ((1u32 << MELD_FROM_SHIFT) - 1u32);
+        aka += (m >> MELD_REDS_SHIFT) & 7u32;
     }
     let f: u32 = s.seat_flags[seat as usize];
     let mut flags: u32 = 0u32;
@@ -123,8 +123,11 @@ fn note_win(s: &mut GameState, seat: u32, out: ScoreOutput) {
     s.yaku[1] |= out.yaku_hi;
     s.win_yaku[(seat * 2u32) as usize] = out.yaku_lo;
     s.win_yaku[(seat * 2u32 + 1u32) as usize] = out.yaku_hi;
-    s.win_score[(seat * 2u32) as usize] = out.han | (out.fu << 8u32) | (out.yakuman << 16u32) | (out.concealed << 24u32);
-    s.win_score[(seat * 2u32 + 1u32) as usize] = out.dora | (out.aka << 8u32) | (out.ura << 16u32);
+    s.win_score[(seat * 2u32) as usize] = out.han
+        | (out.fu << WIN_FU_SHIFT)
+        | (out.yakuman << WIN_YAKUMAN_SHIFT)
+        | (out.concealed << WIN_CONCEALED_SHIFT);
+    s.win_score[(seat * 2u32 + 1u32) as usize] = out.dora | (out.aka << WIN_AKA_SHIFT) | (out.ura << WIN_URA_SHIFT);
 }
 
 // Pays a ron; `first` is the winner nearest the discarder, who also takes honba and sticks.
@@ -203,7 +206,7 @@ fn settle_exhaustive_draw(s: &mut GameState) -> bool {
             }
         }
         s.events |= EVENT_NAGASHI;
-        s.draw_kind = DRAW_NAGASHI | (tenpai << 8u32) | (nagashi << 12u32);
+        s.draw_kind = DRAW_NAGASHI | (tenpai << DRAW_TENPAI_SHIFT) | (nagashi << DRAW_NAGASHI_SHIFT);
     } else if n_tenpai > 0u32 && n_tenpai < 4u32 {
         let gain: u32 = 3000u32 / n_tenpai;
         let loss: u32 = 3000u32 / (4u32 - n_tenpai);
@@ -218,7 +221,7 @@ fn settle_exhaustive_draw(s: &mut GameState) -> bool {
         }
     }
     if nagashi == 0u32 {
-        s.draw_kind = DRAW_EXHAUSTIVE | (tenpai << 8u32);
+        s.draw_kind = DRAW_EXHAUSTIVE | (tenpai << DRAW_TENPAI_SHIFT);
     }
     s.events |= EVENT_EXHAUSTIVE_DRAW;
     ((tenpai >> s.dealer) & 1u32) != 0u32

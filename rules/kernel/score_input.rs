@@ -1,29 +1,35 @@
 // The scoring kernel's input and output, and the reading-independent facts about a hand.
 
 // Meld word: kind in bits 0-3, tile type in bits 4-9 (for a chi: the lowest tile of the run).
-const MELD_CHI: u32 = 0;
-const MELD_PON: u32 = 1;
-const MELD_OPEN_KAN: u32 = 2;
-const MELD_CLOSED_KAN: u32 = 3;
-const MELD_ADDED_KAN: u32 = 4;
+// The meld kinds, flags and statuses are `pub`: hosts build inputs and read outputs with them.
+pub const MELD_CHI: u32 = 0;
+pub const MELD_PON: u32 = 1;
+pub const MELD_OPEN_KAN: u32 = 2;
+pub const MELD_CLOSED_KAN: u32 = 3;
+pub const MELD_ADDED_KAN: u32 = 4;
+pub const MELD_TILE_SHIFT: u32 = 4;
+// In the game state a meld word also holds the seat it was called from (relative, bits 10-11)
+// and its red fives (bits 12-14); the scoring input masks them off.
+pub const MELD_FROM_SHIFT: u32 = 10;
+pub const MELD_REDS_SHIFT: u32 = 12;
 
 // Situation flags of a win.
-const FLAG_TSUMO: u32 = 1;
-const FLAG_RIICHI: u32 = 2;
-const FLAG_DOUBLE_RIICHI: u32 = 4;
-const FLAG_IPPATSU: u32 = 8;
-const FLAG_HAITEI: u32 = 16;
-const FLAG_HOUTEI: u32 = 32;
-const FLAG_RINSHAN: u32 = 64;
-const FLAG_CHANKAN: u32 = 128;
-const FLAG_TENHOU: u32 = 256;
-const FLAG_CHIIHOU: u32 = 512;
-const FLAG_DEALER: u32 = 1024;
+pub const FLAG_TSUMO: u32 = 1;
+pub const FLAG_RIICHI: u32 = 2;
+pub const FLAG_DOUBLE_RIICHI: u32 = 4;
+pub const FLAG_IPPATSU: u32 = 8;
+pub const FLAG_HAITEI: u32 = 16;
+pub const FLAG_HOUTEI: u32 = 32;
+pub const FLAG_RINSHAN: u32 = 64;
+pub const FLAG_CHANKAN: u32 = 128;
+pub const FLAG_TENHOU: u32 = 256;
+pub const FLAG_CHIIHOU: u32 = 512;
+pub const FLAG_DEALER: u32 = 1024;
 
-const STATUS_WIN: u32 = 0;
-const STATUS_NOT_COMPLETE: u32 = 1;
-const STATUS_NO_YAKU: u32 = 2;
-const STATUS_BAD_INPUT: u32 = 3;
+pub const STATUS_WIN: u32 = 0;
+pub const STATUS_NOT_COMPLETE: u32 = 1;
+pub const STATUS_NO_YAKU: u32 = 2;
+pub const STATUS_BAD_INPUT: u32 = 3;
 
 // Which set of the reading the winning tile completed.
 const SLOT_PAIR: u32 = 0;
@@ -101,12 +107,16 @@ fn flag(inp: ScoreInput, f: u32) -> bool {
     (inp.flags & f) != 0u32
 }
 
-fn meld_kind(m: u32) -> u32 {
+pub fn meld_kind(m: u32) -> u32 {
     m & 15u32
 }
 
-fn meld_tile(m: u32) -> u32 {
-    (m >> 4u32) & 63u32
+pub fn meld_tile(m: u32) -> u32 {
+    (m >> MELD_TILE_SHIFT) & 63u32
+}
+
+pub fn meld_word(kind: u32, tile: u32) -> u32 {
+    kind | (tile << MELD_TILE_SHIFT)
 }
 
 fn empty_output(status: u32) -> ScoreOutput {

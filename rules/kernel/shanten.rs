@@ -18,7 +18,7 @@ pub struct ShantenOutput {
 }
 
 // Reported for chiitoitsu and kokushi when the hand has too few tiles for them (it has melds).
-const SHANTEN_NOT_APPLICABLE: i32 = 99;
+pub const SHANTEN_NOT_APPLICABLE: i32 = 99;
 
 // Costs of one group, index m * 2 + h, decoded from its packed table word: bits 2(m-1)..2m hold
 // D(m, 0) - D(m-1, 0) for m = 1..4 (D(0, 0) is 0) and bits 8+2m..10+2m hold D(m, 1) - D(m, 0).

@@ -17,7 +17,7 @@ macro_rules! play {
         let mut hash = 0xcbf2_9ce4_8422_2325u64;
         let started = Instant::now();
         for g in 0..$games {
-            let input = k::ResetInput {
+            let input = rinshan::generated::kernel::ResetInput {
                 seed: [g, 0x5eed],
                 mode: 2,
                 dealer: 4,

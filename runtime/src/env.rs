@@ -17,6 +17,7 @@ mod table;
 use rayon::prelude::*;
 
 use crate::env_gpu::GpuEnv;
+use crate::generated::kernel;
 use crate::gpu::{Gpu, GpuError};
 use crate::Variant;
 
@@ -37,20 +38,39 @@ impl Mode {
     /// The kernel's `MODE_*` value.
     pub fn kernel(self) -> u32 {
         match self {
-            Mode::Single => 0,
-            Mode::East => 1,
-            Mode::Half => 2,
+            Mode::Single => kernel::MODE_SINGLE,
+            Mode::East => kernel::MODE_EAST,
+            Mode::Half => kernel::MODE_HALF,
         }
     }
 
-    /// Parses `single`, `east` or `half`.
-    pub fn from_name(name: &str) -> Option<Mode> {
-        match name {
-            "single" => Some(Mode::Single),
-            "east" => Some(Mode::East),
-            "half" => Some(Mode::Half),
-            _ => None,
+    /// Every mode, shortest first.
+    pub const ALL: [Mode; 3] = [Mode::Single, Mode::East, Mode::Half];
+
+    /// The name users write: `single`, `east` or `half`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Mode::Single => "single",
+            Mode::East => "east",
+            Mode::Half => "half",
         }
+    }
+}
+
+impl std::fmt::Display for Mode {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl std::str::FromStr for Mode {
+    type Err = crate::UnknownName;
+
+    fn from_str(name: &str) -> Result<Mode, crate::UnknownName> {
+        Mode::ALL
+            .into_iter()
+            .find(|m| m.name() == name)
+            .ok_or_else(|| crate::UnknownName::new("mode", name, &Mode::ALL))
     }
 }
 
@@ -59,6 +79,36 @@ impl Mode {
 pub enum Backend {
     Cpu,
     Gpu,
+}
+
+impl Backend {
+    /// Both backends.
+    pub const ALL: [Backend; 2] = [Backend::Cpu, Backend::Gpu];
+
+    /// The name users write: `cpu` or `gpu`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Backend::Cpu => "cpu",
+            Backend::Gpu => "gpu",
+        }
+    }
+}
+
+impl std::fmt::Display for Backend {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl std::str::FromStr for Backend {
+    type Err = crate::UnknownName;
+
+    fn from_str(name: &str) -> Result<Backend, crate::UnknownName> {
+        Backend::ALL
+            .into_iter()
+            .find(|b| b.name() == name)
+            .ok_or_else(|| crate::UnknownName::new("backend", name, &Backend::ALL))
+    }
 }
 
 /// An environment's configuration; [`Config::new`] gives the defaults.
@@ -182,10 +232,9 @@ pub struct Step {
     pub rounds: Vec<u32>,
 }
 
-/// The `events` bits of a [`Step`]: the kernel's `EVENT_*` (every variant compiles the same kernel
-/// source, so any variant's module has the same numbers).
+/// The `events` bits of a [`Step`]: the kernel's `EVENT_*`.
 pub mod events {
-    use crate::generated::red as k;
+    use crate::generated::kernel as k;
     pub const RON: u32 = k::EVENT_RON;
     pub const TSUMO: u32 = k::EVENT_TSUMO;
     pub const EXHAUSTIVE_DRAW: u32 = k::EVENT_EXHAUSTIVE_DRAW;
@@ -218,9 +267,9 @@ impl Step {
     }
 
     /// Fills the arrays from kernel `StepView` words (one record per env).
-    pub(crate) fn fill(&mut self, variant: Variant, view_words: &[u32]) {
-        with_variant!(variant, v => {
-            let views: &[v::StepView] = bytemuck::cast_slice(view_words);
+    pub(crate) fn fill(&mut self, view_words: &[u32]) {
+        {
+            let views: &[kernel::StepView] = bytemuck::cast_slice(view_words);
             for (i, w) in views.iter().enumerate() {
                 self.current_player[i] = w.current_player;
                 self.legal_action_mask[i] = w.mask;
@@ -234,7 +283,7 @@ impl Step {
                 self.yaku[i] = w.yaku;
                 self.rounds[i] = w.rounds;
             }
-        })
+        }
     }
 }
 
@@ -243,14 +292,12 @@ pub fn yaku_names(variant: Variant) -> &'static [&'static str] {
     with_variant!(variant, v => &v::host::YAKU_NAMES)
 }
 
-/// Sizes of the kernel records of `variant`, in 32-bit words: (ResetInput, GameState, StepView).
-pub(crate) fn record_words(variant: Variant) -> (usize, usize, usize) {
-    with_variant!(variant, v => (
-        std::mem::size_of::<v::ResetInput>() / 4,
-        std::mem::size_of::<v::GameState>() / 4,
-        std::mem::size_of::<v::StepView>() / 4,
-    ))
-}
+/// Sizes of the kernel records, in 32-bit words: (ResetInput, GameState, StepView).
+pub(crate) const RECORD_WORDS: (usize, usize, usize) = (
+    crate::hand::words::<kernel::ResetInput>(),
+    crate::hand::words::<kernel::GameState>(),
+    crate::hand::words::<kernel::StepView>(),
+);
 
 /// splitmix64's finalizer.
 fn mix64(mut z: u64) -> u64 {
@@ -325,10 +372,10 @@ impl CpuEnv {
         let views = &mut self.views;
         let mut job = move || {
             with_variant!(variant, v => {
-                let ins: &[v::ResetInput] = bytemuck::cast_slice(inputs);
-                let sts: &mut [v::GameState] = bytemuck::cast_slice_mut(states);
-                let vws: &mut [v::StepView] = bytemuck::cast_slice_mut(views);
-                let one = |((s, w), i): ((&mut v::GameState, &mut v::StepView), &v::ResetInput)| {
+                let ins: &[kernel::ResetInput] = bytemuck::cast_slice(inputs);
+                let sts: &mut [kernel::GameState] = bytemuck::cast_slice_mut(states);
+                let vws: &mut [kernel::StepView] = bytemuck::cast_slice_mut(views);
+                let one = |((s, w), i): ((&mut kernel::GameState, &mut kernel::StepView), &kernel::ResetInput)| {
                     *s = v::game_new(*i);
                     *w = v::game_view(*s);
                 };
@@ -351,9 +398,9 @@ impl CpuEnv {
         let views = &mut self.views;
         let mut job = move || {
             with_variant!(variant, v => {
-                let sts: &mut [v::GameState] = bytemuck::cast_slice_mut(states);
-                let vws: &mut [v::StepView] = bytemuck::cast_slice_mut(views);
-                let one = |((s, w), a): ((&mut v::GameState, &mut v::StepView), &u32)| {
+                let sts: &mut [kernel::GameState] = bytemuck::cast_slice_mut(states);
+                let vws: &mut [kernel::StepView] = bytemuck::cast_slice_mut(views);
+                let one = |((s, w), a): ((&mut kernel::GameState, &mut kernel::StepView), &u32)| {
                     v::game_step(s, *a);
                     *w = v::game_view(*s);
                 };
@@ -437,20 +484,14 @@ impl Env {
         Env::check(&config)?;
         let variant = config.variant;
         let b = config.batch;
-        let words = record_words(variant);
+        let words = RECORD_WORDS;
         let (uma, penalty, num_actions) = with_variant!(variant, v => (
             config.uma.unwrap_or(v::host::UMA.map(|x| x * 1000)),
             config.penalty.unwrap_or(v::host::ILLEGAL_ACTION_PENALTY),
             v::NUM_ACTIONS,
         ));
         let backing = match gpu {
-            Some(gpu) => Backing::Gpu(Box::new(GpuEnv::new(
-                gpu,
-                variant,
-                b,
-                words,
-                table::gpu_deal_words(variant),
-            )?)),
+            Some(gpu) => Backing::Gpu(Box::new(GpuEnv::new(gpu, variant, b, words, table::DEAL_WORDS)?)),
             None => {
                 let pool = match config.threads {
                     Some(n) if n > 1 => Some(
@@ -579,11 +620,11 @@ impl Env {
         match &mut self.backing {
             Backing::Cpu(cpu) => {
                 cpu.step(variant, actions);
-                self.step.fill(variant, &cpu.views);
+                self.step.fill(&cpu.views);
             }
             Backing::Gpu(gpu) => {
                 let views = gpu.step(actions)?;
-                self.step.fill(variant, views);
+                self.step.fill(views);
             }
         }
         Ok(&self.step)
@@ -629,14 +670,14 @@ impl Env {
             self.penalty,
             u32::from(self.config.auto_reset),
         );
-        with_variant!(self.config.variant, v => {
-            let ins: &mut [v::ResetInput] = bytemuck::cast_slice_mut(&mut self.reset_inputs);
+        {
+            let ins: &mut [kernel::ResetInput] = bytemuck::cast_slice_mut(&mut self.reset_inputs);
             for (i, inp) in ins.iter_mut().enumerate() {
                 let (use_wall, dealer, wall) = match walls {
                     Some((w, d)) => (1, d[i], w[i].map(u32::from)),
                     None => (0, 4, [0u32; 136]),
                 };
-                *inp = v::ResetInput {
+                *inp = kernel::ResetInput {
                     seed: [seeds[i] as u32, (seeds[i] >> 32) as u32],
                     mode,
                     dealer,
@@ -647,7 +688,7 @@ impl Env {
                     auto_reset: auto,
                 };
             }
-        });
+        };
     }
 
     fn run_reset(&mut self) -> Result<&Step, EnvError> {
@@ -655,11 +696,11 @@ impl Env {
         match &mut self.backing {
             Backing::Cpu(cpu) => {
                 cpu.reset(variant, &self.reset_inputs);
-                self.step.fill(variant, &cpu.views);
+                self.step.fill(&cpu.views);
             }
             Backing::Gpu(gpu) => {
                 let views = gpu.reset(&self.reset_inputs)?;
-                self.step.fill(variant, views);
+                self.step.fill(views);
             }
         }
         Ok(&self.step)

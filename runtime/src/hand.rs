@@ -3,6 +3,7 @@
 
 use rayon::prelude::*;
 
+use crate::generated::kernel;
 use crate::notation::{Meld, MeldKind, Tile};
 use crate::Variant;
 
@@ -16,21 +17,15 @@ pub struct Shanten {
     pub kokushi: Option<i32>,
 }
 
-/// Words of one kernel input or output, per entry point (checked against the kernel's structs).
-pub const SHANTEN_IN_WORDS: usize = 34;
-pub const SHANTEN_OUT_WORDS: usize = 4;
-pub const SCORE_IN_WORDS: usize = 58;
-pub const SCORE_OUT_WORDS: usize = 15;
+/// Words of one kernel input or output, per entry point: the sizes of the kernel's own structs.
+pub const SHANTEN_IN_WORDS: usize = words::<kernel::ShantenInput>();
+pub const SHANTEN_OUT_WORDS: usize = words::<kernel::ShantenOutput>();
+pub const SCORE_IN_WORDS: usize = words::<kernel::ScoreInput>();
+pub const SCORE_OUT_WORDS: usize = words::<kernel::ScoreOutput>();
 
-const NOT_APPLICABLE: i32 = 99;
-
-fn check_sizes() {
-    with_variant!(Variant::ALL[0], v => {
-        debug_assert_eq!(std::mem::size_of::<v::ShantenInput>(), SHANTEN_IN_WORDS * 4);
-        debug_assert_eq!(std::mem::size_of::<v::ShantenOutput>(), SHANTEN_OUT_WORDS * 4);
-        debug_assert_eq!(std::mem::size_of::<v::ScoreInput>(), SCORE_IN_WORDS * 4);
-        debug_assert_eq!(std::mem::size_of::<v::ScoreOutput>(), SCORE_OUT_WORDS * 4);
-    })
+/// 32-bit words of a kernel record.
+pub(crate) const fn words<T>() -> usize {
+    std::mem::size_of::<T>() / 4
 }
 
 /// Shanten input words for a concealed hand given as counts.
@@ -38,44 +33,46 @@ pub fn shanten_input(counts: &[u8; 34]) -> [u32; SHANTEN_IN_WORDS] {
     counts.map(u32::from)
 }
 
-/// Decodes one shanten output (4 words).
+/// Decodes one shanten output (SHANTEN_OUT_WORDS words).
 pub fn decode_shanten(words: &[u32]) -> Shanten {
-    let get = |i: usize| words[i] as i32;
-    let opt = |x: i32| (x != NOT_APPLICABLE).then_some(x);
+    let o: kernel::ShantenOutput = bytemuck::pod_read_unaligned(bytemuck::cast_slice(&words[..SHANTEN_OUT_WORDS]));
+    let opt = |x: i32| (x != kernel::SHANTEN_NOT_APPLICABLE).then_some(x);
     Shanten {
-        shanten: get(0),
-        normal: get(1),
-        chiitoitsu: opt(get(2)),
-        kokushi: opt(get(3)),
+        shanten: o.shanten,
+        normal: o.normal,
+        chiitoitsu: opt(o.chiitoitsu),
+        kokushi: opt(o.kokushi),
     }
 }
 
 /// Shanten of one hand of 1 to 14 concealed tiles (counts per type, each at most 4).
 pub fn shanten(counts: &[u8; 34]) -> Shanten {
     let mut out = [0u32; SHANTEN_OUT_WORDS];
-    shanten_batch(Variant::ALL[0], &shanten_input(counts), &mut out);
+    shanten_batch(&shanten_input(counts), &mut out);
     decode_shanten(&out)
 }
 
 /// Runs the shanten kernel over `inputs` (SHANTEN_IN_WORDS each) into `outputs`, on the calling thread.
-pub fn shanten_batch(variant: Variant, inputs: &[u32], outputs: &mut [u32]) {
-    check_sizes();
-    with_variant!(variant, v => {
-        let ins: &[v::ShantenInput] = bytemuck::cast_slice(inputs);
-        let outs: &mut [v::ShantenOutput] = bytemuck::cast_slice_mut(outputs);
+pub fn shanten_batch(inputs: &[u32], outputs: &mut [u32]) {
+    {
+        let ins: &[kernel::ShantenInput] = bytemuck::cast_slice(inputs);
+        let outs: &mut [kernel::ShantenOutput] = bytemuck::cast_slice_mut(outputs);
         for (i, o) in ins.iter().zip(outs.iter_mut()) {
-            *o = v::shanten(*i);
+            *o = kernel::shanten(*i);
         }
-    })
+    }
 }
 
 /// As [`shanten_batch`], split over the current rayon pool.
-pub fn shanten_batch_par(variant: Variant, inputs: &[u32], outputs: &mut [u32]) {
-    with_variant!(variant, v => {
-        let ins: &[v::ShantenInput] = bytemuck::cast_slice(inputs);
-        let outs: &mut [v::ShantenOutput] = bytemuck::cast_slice_mut(outputs);
-        ins.par_iter().zip(outs.par_iter_mut()).with_min_len(256).for_each(|(i, o)| *o = v::shanten(*i));
-    })
+pub fn shanten_batch_par(inputs: &[u32], outputs: &mut [u32]) {
+    {
+        let ins: &[kernel::ShantenInput] = bytemuck::cast_slice(inputs);
+        let outs: &mut [kernel::ShantenOutput] = bytemuck::cast_slice_mut(outputs);
+        ins.par_iter()
+            .zip(outs.par_iter_mut())
+            .with_min_len(256)
+            .for_each(|(i, o)| *o = kernel::shanten(*i));
+    }
 }
 
 /// The circumstances of a win.
@@ -180,13 +177,13 @@ fn bad(message: impl Into<String>) -> ScoreError {
 
 fn meld_word(m: &Meld) -> u32 {
     let kind = match m.kind {
-        MeldKind::Chi => 0,
-        MeldKind::Pon => 1,
-        MeldKind::Kan => 2,
-        MeldKind::Ankan => 3,
-        MeldKind::Kakan => 4,
+        MeldKind::Chi => kernel::MELD_CHI,
+        MeldKind::Pon => kernel::MELD_PON,
+        MeldKind::Kan => kernel::MELD_OPEN_KAN,
+        MeldKind::Ankan => kernel::MELD_CLOSED_KAN,
+        MeldKind::Kakan => kernel::MELD_ADDED_KAN,
     };
-    kind | (u32::from(m.tile) << 4)
+    kernel::meld_word(kind, u32::from(m.tile))
 }
 
 /// Checks a win for consistency and packs it into kernel input words.
@@ -232,45 +229,40 @@ pub fn score_input(win: &Win) -> Result<[u32; SCORE_IN_WORDS], ScoreError> {
         return Err(bad(format!("{} red fives but only {fives} fives", win.aka)));
     }
     let flags = [
-        c.tsumo,
-        c.riichi,
-        c.double_riichi,
-        c.ippatsu,
-        c.haitei,
-        c.houtei,
-        c.rinshan,
-        c.chankan,
-        c.tenhou,
-        c.chiihou,
-        c.dealer,
+        (c.tsumo, kernel::FLAG_TSUMO),
+        (c.riichi, kernel::FLAG_RIICHI),
+        (c.double_riichi, kernel::FLAG_DOUBLE_RIICHI),
+        (c.ippatsu, kernel::FLAG_IPPATSU),
+        (c.haitei, kernel::FLAG_HAITEI),
+        (c.houtei, kernel::FLAG_HOUTEI),
+        (c.rinshan, kernel::FLAG_RINSHAN),
+        (c.chankan, kernel::FLAG_CHANKAN),
+        (c.tenhou, kernel::FLAG_TENHOU),
+        (c.chiihou, kernel::FLAG_CHIIHOU),
+        (c.dealer, kernel::FLAG_DEALER),
     ];
-    let mut w = [0u32; SCORE_IN_WORDS];
-    for (word, &count) in w.iter_mut().zip(&win.hand) {
-        *word = u32::from(count);
+    let up_to_five = |tiles: &[Tile]| std::array::from_fn(|i| tiles.get(i).map_or(0, |&t| u32::from(t)));
+    let mut melds = [0u32; 4];
+    for (word, m) in melds.iter_mut().zip(&win.melds) {
+        *word = meld_word(m);
     }
-    w[34] = u32::from(win.win);
-    for (i, m) in win.melds.iter().enumerate() {
-        w[35 + i] = meld_word(m);
-    }
-    w[39] = win.melds.len() as u32;
-    w[40] = flags
-        .iter()
-        .enumerate()
-        .fold(0, |acc, (i, &f)| acc | (u32::from(f) << i));
-    w[41] = u32::from(c.round_wind);
-    w[42] = u32::from(c.seat_wind);
-    for (i, &t) in c.dora.iter().enumerate() {
-        w[43 + i] = u32::from(t);
-    }
-    w[48] = c.dora.len() as u32;
-    for (i, &t) in c.ura.iter().enumerate() {
-        w[49 + i] = u32::from(t);
-    }
-    w[54] = c.ura.len() as u32;
-    w[55] = u32::from(win.aka);
-    w[56] = c.honba;
-    w[57] = c.sticks;
-    Ok(w)
+    let input = kernel::ScoreInput {
+        hand: win.hand.map(u32::from),
+        win_tile: u32::from(win.win),
+        melds,
+        n_melds: win.melds.len() as u32,
+        flags: flags.iter().filter(|(on, _)| *on).fold(0, |acc, (_, f)| acc | f),
+        round_wind: u32::from(c.round_wind),
+        seat_wind: u32::from(c.seat_wind),
+        dora: up_to_five(&c.dora),
+        n_dora: c.dora.len() as u32,
+        ura: up_to_five(&c.ura),
+        n_ura: c.ura.len() as u32,
+        aka: u32::from(win.aka),
+        honba: c.honba,
+        sticks: c.sticks,
+    };
+    Ok(bytemuck::cast(input))
 }
 
 /// What yaku `id` of `variant` is worth in a hand: `(han, false)` (closed or open han), or
@@ -290,54 +282,53 @@ pub fn yaku_worth(variant: Variant, id: usize, concealed: bool) -> (u32, bool) {
 
 /// Decodes one score output (SCORE_OUT_WORDS words) of `variant`.
 pub fn decode_score(variant: Variant, w: &[u32]) -> Result<Score, ScoreError> {
-    match w[0] {
-        0 => {}
-        1 => return Err(ScoreError::NotComplete),
-        2 => return Err(ScoreError::NoYaku),
+    let o: kernel::ScoreOutput = bytemuck::pod_read_unaligned(bytemuck::cast_slice(&w[..SCORE_OUT_WORDS]));
+    match o.status {
+        kernel::STATUS_WIN => {}
+        kernel::STATUS_NOT_COMPLETE => return Err(ScoreError::NotComplete),
+        kernel::STATUS_NO_YAKU => return Err(ScoreError::NoYaku),
         _ => return Err(bad("rejected by the scoring kernel")),
     }
-    let (han, fu, yakuman, lo, hi, dora, aka, ura, base) = (w[1], w[2], w[3], w[4], w[5], w[6], w[7], w[8], w[9]);
-    let concealed = w[14] != 0;
+    let concealed = o.concealed != 0;
     let mut yaku = Vec::new();
     with_variant!(variant, v => {
         for i in 0..v::YAKU_COUNT as usize {
-            let held = if i < 32 { lo >> i & 1 } else { hi >> (i - 32) & 1 };
+            let held = if i < 32 { o.yaku_lo >> i & 1 } else { o.yaku_hi >> (i - 32) & 1 };
             if held == 1 {
                 let (value, _) = yaku_worth(variant, i, concealed);
                 yaku.push(Yaku { name: v::host::YAKU_NAMES[i], han: value });
             }
         }
     });
-    for (name, n) in [("dora", dora), ("aka", aka), ("ura", ura)] {
+    for (name, n) in [("dora", o.dora), ("aka", o.aka), ("ura", o.ura)] {
         if n > 0 {
             yaku.push(Yaku { name, han: n });
         }
     }
-    let payment = if w[10] > 0 {
-        Payment::Ron { discarder: w[10] }
+    let payment = if o.ron > 0 {
+        Payment::Ron { discarder: o.ron }
     } else {
         Payment::Tsumo {
-            dealer: (w[11] > 0).then_some(w[11]),
-            others: w[12],
+            dealer: (o.dealer_pays > 0).then_some(o.dealer_pays),
+            others: o.others_pay,
         }
     };
     Ok(Score {
-        han,
-        fu,
-        yakuman,
+        han: o.han,
+        fu: o.fu,
+        yakuman: o.yakuman,
         yaku,
-        base,
+        base: o.base,
         payment,
-        gain: w[13],
+        gain: o.gain,
     })
 }
 
 /// Runs the scoring kernel over `inputs` (SCORE_IN_WORDS each) into `outputs`, on the calling thread.
 pub fn score_batch(variant: Variant, inputs: &[u32], outputs: &mut [u32]) {
-    check_sizes();
     with_variant!(variant, v => {
-        let ins: &[v::ScoreInput] = bytemuck::cast_slice(inputs);
-        let outs: &mut [v::ScoreOutput] = bytemuck::cast_slice_mut(outputs);
+        let ins: &[kernel::ScoreInput] = bytemuck::cast_slice(inputs);
+        let outs: &mut [kernel::ScoreOutput] = bytemuck::cast_slice_mut(outputs);
         for (i, o) in ins.iter().zip(outs.iter_mut()) {
             *o = v::score_hand(*i);
         }
@@ -347,8 +338,8 @@ pub fn score_batch(variant: Variant, inputs: &[u32], outputs: &mut [u32]) {
 /// As [`score_batch`], split over the current rayon pool.
 pub fn score_batch_par(variant: Variant, inputs: &[u32], outputs: &mut [u32]) {
     with_variant!(variant, v => {
-        let ins: &[v::ScoreInput] = bytemuck::cast_slice(inputs);
-        let outs: &mut [v::ScoreOutput] = bytemuck::cast_slice_mut(outputs);
+        let ins: &[kernel::ScoreInput] = bytemuck::cast_slice(inputs);
+        let outs: &mut [kernel::ScoreOutput] = bytemuck::cast_slice_mut(outputs);
         ins.par_iter().zip(outs.par_iter_mut()).with_min_len(64).for_each(|(i, o)| *o = v::score_hand(*i));
     })
 }

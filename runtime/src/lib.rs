@@ -36,6 +36,11 @@ impl Variant {
         let wanted = name.replace('-', "_");
         Variant::ALL.iter().copied().find(|v| v.name() == wanted)
     }
+
+    /// Each player's points at the start of a game (`[game] starting_points` of the spec).
+    pub fn starting_points(self) -> u32 {
+        with_variant!(self, v => v::STARTING_POINTS)
+    }
 }
 
 impl std::fmt::Display for Variant {
@@ -43,3 +48,46 @@ impl std::fmt::Display for Variant {
         f.write_str(&self.name().replace('_', "-"))
     }
 }
+
+impl std::str::FromStr for Variant {
+    type Err = UnknownName;
+
+    fn from_str(name: &str) -> Result<Variant, UnknownName> {
+        Variant::from_name(name).ok_or_else(|| UnknownName::new("variant", name, Variant::ALL))
+    }
+}
+
+/// A name that is none of the known ones (a variant, mode or backend), with the ones it could be.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct UnknownName {
+    /// What was named: `variant`, `mode`, `backend`.
+    pub what: &'static str,
+    /// The name as given.
+    pub name: String,
+    /// The known names, as users write them.
+    pub known: Vec<String>,
+}
+
+impl UnknownName {
+    pub(crate) fn new<T: std::fmt::Display>(what: &'static str, name: &str, known: &[T]) -> UnknownName {
+        UnknownName {
+            what,
+            name: name.to_string(),
+            known: known.iter().map(ToString::to_string).collect(),
+        }
+    }
+}
+
+impl std::fmt::Display for UnknownName {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "unknown {} `{}` (known: {})",
+            self.what,
+            self.name,
+            self.known.join(", ")
+        )
+    }
+}
+
+impl std::error::Error for UnknownName {}

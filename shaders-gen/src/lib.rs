@@ -33,10 +33,12 @@ mod entry;
 mod items;
 mod lower;
 mod names;
+mod shared;
 mod types;
 mod validate;
 
 pub use diag::Error;
+pub use shared::shared_files;
 pub use validate::{validate, validate_with_info};
 
 use diag::Diag;

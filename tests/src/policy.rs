@@ -2,7 +2,8 @@
 //! declares riichi and kans, calls often, and otherwise discards towards tenpai (a quarter of
 //! the time at random), so that riichi, tenpai draws, double rons and kans come up often.
 
-use rinshan::generated::red::{self as k, GameState};
+use rinshan::generated::kernel::GameState;
+use rinshan::generated::red as k;
 use rinshan::hand::shanten;
 use rinshan::random::Rng;
 

@@ -345,7 +345,13 @@ impl Oracle {
                 }
             }
         }
-        let yakuman_weight = |i: usize| if v.double_yakuman { self.spec.yaku[i].yakuman } else { 1 };
+        let yakuman_weight = |i: usize| {
+            if v.bool_option("double_yakuman").expect("double_yakuman") {
+                self.spec.yaku[i].yakuman
+            } else {
+                1
+            }
+        };
         let yakuman_held: Vec<usize> = (0..n).filter(|&i| kept[i] && self.spec.yaku[i].yakuman > 0).collect();
         let mut yaku = BTreeMap::new();
         if !yakuman_held.is_empty() {
@@ -354,7 +360,7 @@ impl Oracle {
                 yaku.insert(self.spec.yaku[i].name.clone(), yakuman_weight(i));
                 total += yakuman_weight(i);
             }
-            if !v.multiple_yakuman {
+            if !v.bool_option("multiple_yakuman").expect("multiple_yakuman") {
                 total = total.min(1);
             }
             return Some(Judged {
@@ -403,7 +409,7 @@ impl Oracle {
                 fu.div_ceil(10) * 10
             }
         };
-        let base = if han >= 13 && v.kazoe_yakuman {
+        let base = if han >= 13 && v.bool_option("kazoe_yakuman").expect("kazoe_yakuman") {
             8000
         } else if han >= 11 {
             6000
@@ -415,7 +421,7 @@ impl Oracle {
             2000
         } else {
             let raw = fu << (han + 2);
-            if raw >= 2000 || (v.kiriage_mangan && raw == 1920) {
+            if raw >= 2000 || (v.bool_option("kiriage_mangan").expect("kiriage_mangan") && raw == 1920) {
                 2000
             } else {
                 raw
@@ -665,9 +671,9 @@ fn ceil100(x: u32) -> u32 {
 fn payment(spec: &Spec, win: &Win, base: u32) -> (Payment, u32) {
     let c = &win.context;
     let v = &spec.variant;
-    let sticks = c.sticks * v.riichi_stick_points;
+    let sticks = c.sticks * v.u32_option("riichi_stick_points").expect("riichi_stick_points");
     if c.tsumo {
-        let honba = c.honba * v.honba_tsumo_points;
+        let honba = c.honba * v.u32_option("honba_tsumo_points").expect("honba_tsumo_points");
         if c.dealer {
             let each = ceil100(2 * base) + honba;
             (
@@ -689,7 +695,8 @@ fn payment(spec: &Spec, win: &Win, base: u32) -> (Payment, u32) {
             )
         }
     } else {
-        let ron = ceil100(base * if c.dealer { 6 } else { 4 }) + c.honba * v.honba_ron_points;
+        let ron = ceil100(base * if c.dealer { 6 } else { 4 })
+            + c.honba * v.u32_option("honba_ron_points").expect("honba_ron_points");
         (Payment::Ron { discarder: ron }, ron + sticks)
     }
 }

@@ -82,7 +82,7 @@ fn sorted_wall(red: bool) -> [u8; 136] {
     })
 }
 
-fn hand_of(s: &rinshan::generated::red::GameState, seat: usize) -> [u32; 34] {
+fn hand_of(s: &rinshan::generated::kernel::GameState, seat: usize) -> [u32; 34] {
     std::array::from_fn(|t| (s.hands[seat * 5 + t / 8] >> ((t % 8) * 4)) & 15)
 }
 
@@ -99,7 +99,7 @@ fn reset_with_walls_deals_exactly_those_hands() {
         .clone();
     assert_eq!(step.current_player, [2, 0], "the dealer acts first");
     let words = env.states_words();
-    let states: &[rinshan::generated::red::GameState] = bytemuck::cast_slice(&words);
+    let states: &[rinshan::generated::kernel::GameState] = bytemuck::cast_slice(&words);
     for (e, (wall, dealer)) in [(sorted, 2usize), (reversed, 0usize)].into_iter().enumerate() {
         let s = &states[e];
         for j in 0..4 {

@@ -25,7 +25,7 @@ fn shanten_is_identical_on_cpu_and_gpu() {
         .flat_map(|i| hand::shanten_input(&random_hand(&mut rng, [14, 13, 11, 10, 8, 7, 5, 4, 2, 1][i % 10])))
         .collect();
     let mut cpu = vec![0u32; HANDS * SHANTEN_OUT_WORDS];
-    hand::shanten_batch_par(Variant::Red, &inputs, &mut cpu);
+    hand::shanten_batch_par(&inputs, &mut cpu);
     let out = gpu.run(Variant::Red, Kernel::Shanten, &inputs).expect("gpu run");
     assert_eq!(out.len(), cpu.len());
     assert_eq!(

@@ -3,6 +3,7 @@
 
 use std::path::{Path, PathBuf};
 
+use rinshan::generated::kernel::ScoreOutput;
 use rinshan::gpu::Kernel;
 use rinshan::hand::{self, Win};
 use rinshan::notation::{parse_meld, parse_tiles};
@@ -17,13 +18,51 @@ fn read(path: &Path) -> String {
     std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
 }
 
+/// (file name, text) of every kernel source, in name order.
+fn kernel_files() -> Vec<(String, String)> {
+    let mut kernel: Vec<PathBuf> = std::fs::read_dir(rules().join("kernel"))
+        .expect("kernel dir")
+        .map(|e| e.expect("entry").path())
+        .filter(|p| p.extension().is_some_and(|x| x == "rs"))
+        .collect();
+    kernel.sort();
+    kernel
+        .iter()
+        .map(|p| {
+            (
+                p.file_name().and_then(|n| n.to_str()).unwrap_or_default().to_string(),
+                read(p),
+            )
+        })
+        .collect()
+}
+
 /// Compiles `variant` with the given spec texts into a WGSL module with the runtime's entry points.
 fn compile(variant: &str, variant_text: &str, yaku_text: &str) -> String {
+    compile_with_kernel(variant, variant_text, yaku_text, |_, text| text)
+}
+
+/// As [`compile`], with each kernel file's text passed through `edit(file name, text)`.
+fn compile_with_kernel(
+    variant: &str,
+    variant_text: &str,
+    yaku_text: &str,
+    edit: impl Fn(&str, String) -> String,
+) -> String {
+    let kernel: Vec<(String, String)> = kernel_files()
+        .into_iter()
+        .map(|(name, text)| {
+            let text = edit(&name, text);
+            (format!("rules/kernel/{name}"), text)
+        })
+        .collect();
     let features = read(&rules().join("kernel/features.rs"));
-    let spec = rinshan_codegen::load_sources(
+    let kernel_refs: Vec<(&str, &str)> = kernel.iter().map(|(p, t)| (p.as_str(), t.as_str())).collect();
+    let spec = rinshan_codegen::load_sources_with_kernel(
         (&format!("rules/variants/{variant}.toml"), variant_text),
         ("rules/yaku.toml", yaku_text),
         ("rules/kernel/features.rs", &features),
+        &kernel_refs,
     )
     .unwrap_or_else(|d| panic!("{}", rinshan_codegen::render(&d)));
     let generated = rinshan_codegen::generate(&spec);
@@ -38,16 +77,7 @@ fn compile(variant: &str, variant_text: &str, yaku_text: &str) -> String {
             text: tables.kernel_consts(),
         },
     ];
-    let mut kernel: Vec<PathBuf> = std::fs::read_dir(rules().join("kernel"))
-        .expect("kernel dir")
-        .map(|e| e.expect("entry").path())
-        .filter(|p| p.extension().is_some_and(|x| x == "rs"))
-        .collect();
-    kernel.sort();
-    sources.extend(kernel.iter().map(|p| Source {
-        path: p.display().to_string(),
-        text: read(p),
-    }));
+    sources.extend(kernel.into_iter().map(|(path, text)| Source { path, text }));
     // The same entry points as build.rs: the map entries, then the in-place update entries.
     let entries = rinshan_shaders_gen::entry_points(&rinshan::entries::ENTRIES, &rinshan::entries::UPDATE_ENTRIES);
     rinshan_shaders_gen::translate_entry_points(&sources, &entries).unwrap_or_else(|e| panic!("{e}"))
@@ -78,7 +108,11 @@ fn judge(gpu: &mut rinshan::gpu::Gpu, wgsl: &str, wins: &[Win]) -> Vec<(u32, u32
         .flat_map(|w| hand::score_input(w).expect("consistent"))
         .collect();
     let out = gpu.run_wgsl(wgsl, Kernel::Score, &inputs).expect("gpu run");
-    out.chunks(hand::SCORE_OUT_WORDS).map(|o| (o[0], o[1], o[3])).collect()
+    outputs(&out).iter().map(|o| (o.status, o.han, o.yakuman)).collect()
+}
+
+fn outputs(words: &[u32]) -> Vec<ScoreOutput> {
+    bytemuck::cast_slice(words).to_vec()
 }
 
 #[test]
@@ -130,4 +164,73 @@ fn edited_specs_change_results_on_the_gpu() {
     let results = judge(&mut gpu, &compile("red", &closed_only, &yaku_text), &hands);
     assert_eq!(results[1].0, 2, "open all-simples hand has no yaku without open tanyao");
     assert_eq!((results[0], results[2]), (stock_results[0], stock_results[2]));
+}
+
+/// Adding a variant option takes its TOML line and the kernel code that reads it, nothing else:
+/// here a new `[scoring] sticks_to_winner` (whether the winner collects the riichi sticks on the
+/// table), declared in a copy of the spec and read in a copy of the scoring kernel.
+#[test]
+fn a_new_option_is_its_toml_line_and_the_kernel_code_that_reads_it() {
+    let Some(mut gpu) = gpu_or_skip("a new option") else {
+        return;
+    };
+    let variant_text = read(&rules().join("variants/red.toml"));
+    let yaku_text = read(&rules().join("yaku.toml"));
+    let stick_line = "riichi_stick_points = 1000\n";
+    assert!(
+        variant_text.contains(stick_line),
+        "red.toml layout changed; update this test"
+    );
+    let with_option = |on: bool| variant_text.replace(stick_line, &format!("{stick_line}sticks_to_winner = {on}\n"));
+    let read_option = |name: &str, text: String| {
+        let sticks = "let sticks: u32 = inp.sticks * RIICHI_STICK_POINTS;";
+        if name != "score.rs" {
+            return text;
+        }
+        assert!(text.contains(sticks), "score.rs changed; update this test");
+        text.replace(
+            sticks,
+            "let mut sticks: u32 = inp.sticks * RIICHI_STICK_POINTS;\n    if !STICKS_TO_WINNER {\n        sticks = 0u32;\n    }",
+        )
+    };
+    let mut with_sticks = win("234567m234p456s66s", "6s", &[], false);
+    with_sticks.context.sticks = 2;
+    let inputs: Vec<u32> = hand::score_input(&with_sticks).expect("consistent").to_vec();
+    let gain = |gpu: &mut rinshan::gpu::Gpu, wgsl: &str| {
+        outputs(&gpu.run_wgsl(wgsl, Kernel::Score, &inputs).expect("gpu run"))[0].gain
+    };
+    // tanyao pinfu ron, 2 han 30 fu: 2000, plus 2000 in sticks when the winner takes them.
+    assert_eq!(
+        gain(
+            &mut gpu,
+            &compile_with_kernel("red", &with_option(true), &yaku_text, read_option)
+        ),
+        4000
+    );
+    assert_eq!(
+        gain(
+            &mut gpu,
+            &compile_with_kernel("red", &with_option(false), &yaku_text, read_option)
+        ),
+        2000
+    );
+    // Declared but read by no kernel code (the stock kernel): the spec is rejected, a typo guard.
+    let stock = kernel_files();
+    let stock: Vec<(&str, &str)> = stock.iter().map(|(p, t)| (p.as_str(), t.as_str())).collect();
+    let unread = rinshan_codegen::load_sources_with_kernel(
+        ("rules/variants/red.toml", &with_option(true)),
+        ("rules/yaku.toml", &yaku_text),
+        ("rules/kernel/features.rs", &read(&rules().join("kernel/features.rs"))),
+        &stock,
+    )
+    .expect_err("an option no kernel reads");
+    assert_eq!(unread.len(), 1, "{}", rinshan_codegen::render(&unread));
+    assert!(unread[0].message.contains("sticks_to_winner"), "{}", unread[0].message);
+    assert_eq!(
+        unread[0].line,
+        variant_text[..variant_text.find(stick_line).expect("line")]
+            .lines()
+            .count()
+            + 2
+    );
 }

@@ -2,7 +2,7 @@
 //! `tests/data/tenhou` replays through rinshan with every logged action legal and every score
 //! change, win (han, fu, yaku) and draw as the log has it, on the CPU and on the GPU.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use rinshan::env::Backend;
 use rinshan::tenhou::log::{collect_files, parse_game, read_game, Game};

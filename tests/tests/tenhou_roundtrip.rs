@@ -10,7 +10,8 @@
 use std::collections::BTreeMap;
 
 use rinshan::env::{Backend, Config, Env, Mode};
-use rinshan::generated::red::{self as k, GameState};
+use rinshan::generated::kernel::GameState;
+use rinshan::generated::red as k;
 use rinshan::random::Rng;
 use rinshan::tenhou::log::{collect_files, parse_game, read_game, Discard, Draw, Game, Outcome, Round, YakuHan};
 use rinshan::tenhou::plan::plan;
@@ -280,7 +281,7 @@ fn record_logged(r: &Round) -> Round {
     let p = plan(r).unwrap_or_else(|e| panic!("{r}: {e}"));
     let wall = p.wall.map(u32::from);
     let dealer = r.dealer() as u32;
-    let mut s = k::game_new(k::ResetInput {
+    let mut s = k::game_new(rinshan::generated::kernel::ResetInput {
         seed: [1, 2],
         mode: 2,
         dealer,
@@ -293,7 +294,7 @@ fn record_logged(r: &Round) -> Round {
     let (round, honba, sticks, scores) = (r.kyoku, r.honba, r.sticks, r.scores);
     k::game_deal(
         &mut s,
-        k::DealInput {
+        rinshan::generated::kernel::DealInput {
             deal: 1,
             round,
             dealer,

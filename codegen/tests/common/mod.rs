@@ -36,6 +36,31 @@ pub fn load_texts(variant: &str, v: &str, y: &str, f: &str) -> Result<Spec, Vec<
     rinshan_codegen::load_sources((&variant_path(variant), v), (YAKU_PATH, y), (FEATURES_PATH, f))
 }
 
+/// The kernel sources as (path, text), for the check that the kernel reads every option.
+pub fn kernel_sources() -> Vec<(String, String)> {
+    rinshan_codegen::kernel_paths(&rules_dir())
+        .into_iter()
+        .map(|p| {
+            let name = format!("rules/kernel/{}", p.file_name().unwrap().to_string_lossy());
+            let text = std::fs::read_to_string(&p).unwrap_or_else(|e| panic!("{}: {e}", p.display()));
+            (name, text)
+        })
+        .collect()
+}
+
+/// Loads `variant` after editing its variant file, checking it against the kernel sources.
+pub fn load_variant_edit_with_kernel(variant: &str, from: &str, to: &str) -> Result<Spec, Vec<Diagnostic>> {
+    let (v, y, f) = sources(variant);
+    let kernel = kernel_sources();
+    let kernel: Vec<(&str, &str)> = kernel.iter().map(|(p, t)| (p.as_str(), t.as_str())).collect();
+    rinshan_codegen::load_sources_with_kernel(
+        (&variant_path(variant), &replace_once(&v, from, to)),
+        (YAKU_PATH, &y),
+        (FEATURES_PATH, &f),
+        &kernel,
+    )
+}
+
 /// Loads `variant` after editing the yaku file.
 pub fn load_yaku_edit(variant: &str, from: &str, to: &str) -> Result<Spec, Vec<Diagnostic>> {
     let (v, y, f) = sources(variant);

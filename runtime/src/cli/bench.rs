@@ -4,13 +4,14 @@
 
 use std::time::Instant;
 
-use rinshan::env::{Backend, Config, Env, Mode};
+use rinshan::env::{Backend, Config, Env};
 use rinshan::gpu::{Gpu, Kernel};
 use rinshan::hand::{self, SCORE_IN_WORDS, SCORE_OUT_WORDS, SHANTEN_IN_WORDS, SHANTEN_OUT_WORDS};
 use rinshan::random::{random_hand, random_win, Rng};
 use rinshan::Variant;
 
-use super::selfplay::{parse_backend, parse_variant, policy_rng};
+use super::args::{BackendArg, GameArgs, VariantArg};
+use super::selfplay::policy_rng;
 use super::CliError;
 
 #[derive(clap::Subcommand)]
@@ -22,29 +23,23 @@ pub enum What {
         hands: usize,
         #[arg(long, default_value_t = 1)]
         seed: u64,
-        /// Rule variant for scoring: red or no-red
-        #[arg(long, default_value = "red")]
-        variant: String,
+        #[command(flatten)]
+        variant: VariantArg,
         /// Skip the GPU backend
         #[arg(long)]
         no_gpu: bool,
     },
-    /// Environment steps per second of random-policy self-play (half games, auto-reset) by batch size
+    /// Environment steps per second of random-policy self-play (auto-reset) by batch size: on the
+    /// CPU with 1 thread, then with --threads (default all cores)
     Env {
-        /// cpu (1 thread and all threads) or gpu
-        #[arg(long, default_value = "cpu")]
-        backend: String,
-        /// Rule variant: red or no-red
-        #[arg(long, default_value = "red")]
-        variant: String,
+        #[command(flatten)]
+        game: GameArgs,
         /// Seconds measured per batch size
         #[arg(long, default_value_t = 0.5)]
         seconds_per_point: f64,
         /// Batch sizes to measure (comma-separated)
         #[arg(long, value_delimiter = ',', default_values_t = [1usize, 4, 16, 64, 256, 1024, 4096, 16384])]
         batches: Vec<usize>,
-        #[arg(long, default_value_t = 1)]
-        seed: u64,
     },
 }
 
@@ -65,14 +60,12 @@ pub fn run(what: What) -> Result<(), CliError> {
             seed,
             variant,
             no_gpu,
-        } => hands_bench(hands, seed, variant, no_gpu),
+        } => hands_bench(hands, seed, variant.variant, no_gpu),
         What::Env {
-            backend,
-            variant,
+            game,
             seconds_per_point,
             batches,
-            seed,
-        } => env_bench(&backend, &variant, seconds_per_point, &batches, seed),
+        } => env_bench(&game, seconds_per_point, &batches),
     }
 }
 
@@ -111,17 +104,22 @@ fn env_point(config: Config, seconds: f64) -> Result<(f64, f64), CliError> {
     }
 }
 
-fn env_bench(backend: &str, variant: &str, seconds: f64, batches: &[usize], seed: u64) -> Result<(), CliError> {
-    let variant = parse_variant(variant)?;
-    let backend = parse_backend(backend)?;
+fn env_bench(game: &GameArgs, seconds: f64, batches: &[usize]) -> Result<(), CliError> {
+    let GameArgs {
+        variant: VariantArg { variant },
+        mode,
+        backend: BackendArg { backend },
+        seed,
+        threads,
+    } = game.clone();
     if seconds.is_nan() || seconds <= 0.0 || batches.is_empty() || batches.contains(&0) {
         return Err(CliError::input(
             "--seconds-per-point must be positive and --batches positive sizes",
         ));
     }
-    let threads = rayon::current_num_threads();
+    let all = threads.unwrap_or_else(rayon::current_num_threads);
     let config = |batch: usize, threads: Option<usize>| Config {
-        mode: Mode::Half,
+        mode,
         backend,
         seed,
         auto_reset: true,
@@ -131,7 +129,7 @@ fn env_bench(backend: &str, variant: &str, seconds: f64, batches: &[usize], seed
     let runs: Vec<(String, Option<usize>)> = match backend {
         Backend::Cpu => vec![
             ("cpu, 1 thread".to_string(), Some(1)),
-            (format!("cpu, {threads} threads"), None),
+            (format!("cpu, {all} threads"), threads),
         ],
         Backend::Gpu => {
             let gpu = Gpu::new().map_err(CliError::failure)?;
@@ -145,7 +143,7 @@ fn env_bench(backend: &str, variant: &str, seconds: f64, batches: &[usize], seed
         }
     };
     println!(
-        "rinshan bench env: variant {variant}, half games with auto-reset, random legal policy, {seconds} s per point"
+        "rinshan bench env: variant {variant}, {mode} games with auto-reset, random legal policy, {seconds} s per point"
     );
     println!(
         "  env steps/s time the step calls only (state update, view, readback); +policy includes choosing the actions"
@@ -170,9 +168,7 @@ fn env_bench(backend: &str, variant: &str, seconds: f64, batches: &[usize], seed
     Ok(())
 }
 
-fn hands_bench(hands: usize, seed: u64, variant: String, no_gpu: bool) -> Result<(), CliError> {
-    let variant =
-        Variant::from_name(&variant).ok_or_else(|| CliError::input(format!("unknown variant `{variant}`")))?;
+fn hands_bench(hands: usize, seed: u64, variant: Variant, no_gpu: bool) -> Result<(), CliError> {
     if hands == 0 {
         return Err(CliError::input("--hands must be positive"));
     }
@@ -201,13 +197,13 @@ fn hands_bench(hands: usize, seed: u64, variant: String, no_gpu: bool) -> Result
     let mut out = vec![0u32; hands * SHANTEN_OUT_WORDS];
     row(
         "rinshan cpu, 1 thread",
-        rate(hands, || hand::shanten_batch(variant, &shanten_in, &mut out)),
+        rate(hands, || hand::shanten_batch(&shanten_in, &mut out)),
         base,
     );
     let one_thread = out.clone();
     row(
         &format!("rinshan cpu, {threads} threads"),
-        rate(hands, || hand::shanten_batch_par(variant, &shanten_in, &mut out)),
+        rate(hands, || hand::shanten_batch_par(&shanten_in, &mut out)),
         base,
     );
     let disagree = (0..hands)

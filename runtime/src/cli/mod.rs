@@ -1,5 +1,6 @@
 //! Command-line front end. Each subcommand lives in its own module.
 
+mod args;
 mod bench;
 mod replay;
 mod score;

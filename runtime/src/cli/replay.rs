@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use rinshan::tenhou::log::{collect_files, read_game};
 use rinshan::tenhou::replay::{replay, Report};
 
-use super::selfplay::parse_backend;
+use super::args::BackendArg;
 use super::CliError;
 
 #[derive(clap::Args)]
@@ -14,9 +14,8 @@ pub struct Args {
     /// Log files (one round per line, tenhou.net/6 JSON) or folders of them (their *.json files)
     #[arg(required = true)]
     paths: Vec<PathBuf>,
-    /// cpu or gpu
-    #[arg(long, default_value = "cpu")]
-    backend: String,
+    #[command(flatten)]
+    backend: BackendArg,
     /// Print the report as JSON
     #[arg(long)]
     json: bool,
@@ -47,7 +46,7 @@ fn print_report(r: &Report, unreadable: &[String]) {
 }
 
 pub fn run(args: Args) -> Result<(), CliError> {
-    let backend = parse_backend(&args.backend)?;
+    let backend = args.backend.backend;
     let files = collect_files(&args.paths).map_err(CliError::input)?;
     if files.is_empty() {
         return Err(CliError::input("no log files found (folders are searched for *.json)"));

@@ -2,6 +2,7 @@ use rinshan::hand::{self, Payment, ScoreError, Win, WinContext};
 use rinshan::notation::{parse_meld, parse_tile, parse_tiles, parse_wind, Tile};
 use rinshan::Variant;
 
+use super::args::VariantArg;
 use super::CliError;
 
 #[derive(clap::Args)]
@@ -55,9 +56,8 @@ pub struct Args {
     /// A called or declared meld: chi:123m, pon:555z, kan:2222p (open), ankan:1111s, kakan:3333m
     #[arg(long = "meld")]
     melds: Vec<String>,
-    /// Rule variant: red or no-red
-    #[arg(long, default_value = "red")]
-    variant: String,
+    #[command(flatten)]
+    variant: VariantArg,
     #[arg(long, default_value_t = 0)]
     honba: u32,
     /// Riichi sticks on the table
@@ -81,14 +81,7 @@ fn indicators(src: &Option<String>) -> Result<Vec<Tile>, CliError> {
 }
 
 fn build_win(args: &Args) -> Result<(Variant, Win), CliError> {
-    let variant = Variant::from_name(&args.variant).ok_or_else(|| {
-        let names: Vec<String> = Variant::ALL.iter().map(|v| v.to_string()).collect();
-        CliError::input(format!(
-            "unknown variant `{}`: choose one of {}",
-            args.variant,
-            names.join(", ")
-        ))
-    })?;
+    let variant = args.variant.variant;
     let tiles = parse_tiles(&args.hand).map_err(CliError::input)?;
     let (win_tile, win_red) = parse_tile(&args.win).map_err(CliError::input)?;
     let melds = args

@@ -13,31 +13,19 @@ use rinshan::tenhou::write::{game_text, Finished, Recorder};
 use rinshan::Variant;
 use serde_json::json;
 
+use super::args::{BackendArg, GameArgs, VariantArg};
 use super::CliError;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// Rule variant: red or no-red
-    #[arg(long, default_value = "red")]
-    variant: String,
-    /// Game length: single (one hand), east or half (East and South rounds)
-    #[arg(long, default_value = "half")]
-    mode: String,
+    #[command(flatten)]
+    game: GameArgs,
     /// Games to finish
     #[arg(long, default_value_t = 1000)]
     games: u64,
     /// Envs stepped together
     #[arg(long, default_value_t = 256)]
     batch: usize,
-    /// cpu or gpu
-    #[arg(long, default_value = "cpu")]
-    backend: String,
-    /// Seeds the walls and the policy: the same seed plays the same games
-    #[arg(long, default_value_t = 0)]
-    seed: u64,
-    /// CPU threads (default: all cores)
-    #[arg(long)]
-    threads: Option<usize>,
     /// Print the summary as JSON
     #[arg(long)]
     json: bool,
@@ -46,21 +34,6 @@ pub struct Args {
     /// states are read after every step)
     #[arg(long, value_name = "DIR")]
     export: Option<PathBuf>,
-}
-
-pub fn parse_variant(name: &str) -> Result<Variant, CliError> {
-    Variant::from_name(name).ok_or_else(|| {
-        let known: Vec<String> = Variant::ALL.iter().map(|v| v.to_string()).collect();
-        CliError::input(format!("unknown variant `{name}` (known: {})", known.join(", ")))
-    })
-}
-
-pub fn parse_backend(name: &str) -> Result<Backend, CliError> {
-    match name {
-        "cpu" => Ok(Backend::Cpu),
-        "gpu" => Ok(Backend::Gpu),
-        _ => Err(CliError::input(format!("unknown backend `{name}` (cpu or gpu)"))),
-    }
 }
 
 /// The policy's random stream of env `i` (independent of the walls' seeds).
@@ -108,10 +81,13 @@ impl Tally {
 }
 
 pub fn run(args: Args) -> Result<(), CliError> {
-    let variant = parse_variant(&args.variant)?;
-    let mode = Mode::from_name(&args.mode)
-        .ok_or_else(|| CliError::input(format!("unknown mode `{}` (single, east or half)", args.mode)))?;
-    let backend = parse_backend(&args.backend)?;
+    let GameArgs {
+        variant: VariantArg { variant },
+        mode,
+        backend: BackendArg { backend },
+        seed,
+        threads,
+    } = args.game.clone();
     if args.games == 0 {
         return Err(CliError::input("--games must be at least 1"));
     }
@@ -123,11 +99,11 @@ pub fn run(args: Args) -> Result<(), CliError> {
         mode,
         batch: args.batch,
         backend,
-        seed: args.seed,
+        seed,
         uma: None,
         penalty: None,
         auto_reset: true,
-        threads: args.threads,
+        threads,
     };
     let mut env = Env::new(config).map_err(|e| match e {
         rinshan::env::EnvError::Gpu(_) => CliError::failure(e),
@@ -141,7 +117,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
     }
     let yaku_names: &[&str] = rinshan::env::yaku_names(variant);
     let b = env.batch();
-    let mut rngs: Vec<Rng> = (0..b).map(|i| policy_rng(args.seed, i)).collect();
+    let mut rngs: Vec<Rng> = (0..b).map(|i| policy_rng(seed, i)).collect();
     let mut current: Vec<Tally> = vec![Tally::new(yaku_names.len()); b];
     let mut total = Tally::new(yaku_names.len());
     let mut games = 0u64;
@@ -289,7 +265,8 @@ fn summary(
     yaku_names: &[&str],
 ) {
     let wins = t.ron + t.tsumo;
-    let scores: Vec<f64> = t.rewards.iter().map(|r| 25_000.0 + r * 100.0 / games as f64).collect();
+    let start = f64::from(variant.starting_points());
+    let scores: Vec<f64> = t.rewards.iter().map(|r| start + r * 100.0 / games as f64).collect();
     let steps_per_s = env_steps as f64 / seconds.max(1e-9);
     let mut yaku: Vec<(&str, u64)> = yaku_names
         .iter()
@@ -305,10 +282,10 @@ fn summary(
     if args.json {
         let v = json!({
             "variant": variant.to_string(),
-            "mode": args.mode,
-            "backend": args.backend,
+            "mode": args.game.mode.to_string(),
+            "backend": args.game.backend.backend.to_string(),
             "batch": args.batch,
-            "seed": args.seed,
+            "seed": args.game.seed,
             "games": games,
             "steps": t.steps,
             "avg_steps_per_game": ratio(t.steps, games),
@@ -334,7 +311,7 @@ fn summary(
     let pct = |a: u64, b: u64| 100.0 * ratio(a, b);
     println!(
         "rinshan selfplay: variant {variant}, mode {}, batch {}, backend {backend}, seed {}",
-        args.mode, args.batch, args.seed
+        args.game.mode, args.batch, args.game.seed
     );
     println!("  games                 {games}");
     println!(

@@ -3,6 +3,7 @@
 //! and how the last drawn round ended; and a forced deal of the next round (log replay).
 
 use super::{check_wall, CpuEnv, Env, EnvError};
+use crate::generated::kernel;
 use crate::Variant;
 
 /// The table of one game, read from its state.
@@ -48,15 +49,16 @@ impl WinRecord {
     /// Seat `p`'s record in a state's `win_yaku` and `win_score` words (two per seat).
     pub(crate) fn decode(yaku: &[u32; 8], score: &[u32; 8], p: usize) -> WinRecord {
         let (points, extra) = (score[2 * p], score[2 * p + 1]);
+        let field = |word: u32, shift: u32| word >> shift & kernel::WIN_FIELD_MASK;
         WinRecord {
             yaku: [yaku[2 * p], yaku[2 * p + 1]],
-            han: points & 255,
-            fu: points >> 8 & 255,
-            yakuman: points >> 16 & 255,
-            concealed: points >> 24 & 1 == 1,
-            dora: extra & 255,
-            aka: extra >> 8 & 255,
-            ura: extra >> 16,
+            han: field(points, 0),
+            fu: field(points, kernel::WIN_FU_SHIFT),
+            yakuman: field(points, kernel::WIN_YAKUMAN_SHIFT),
+            concealed: field(points, kernel::WIN_CONCEALED_SHIFT) == 1,
+            dora: field(extra, 0),
+            aka: field(extra, kernel::WIN_AKA_SHIFT),
+            ura: field(extra, kernel::WIN_URA_SHIFT),
         }
     }
 
@@ -95,9 +97,8 @@ pub struct DrawRecord {
 impl DrawRecord {
     /// A state's `draw_kind` word.
     pub(crate) fn decode(word: u32) -> DrawRecord {
-        // The kernel's DRAW_* (the same in every variant's module: one kernel source).
-        use crate::generated::red as k;
-        let kind = match word & 255 {
+        use crate::generated::kernel as k;
+        let kind = match word & k::DRAW_KIND_MASK {
             k::DRAW_EXHAUSTIVE => Some(DrawKind::Exhaustive),
             k::DRAW_NAGASHI => Some(DrawKind::Nagashi),
             k::DRAW_KYUUSHU => Some(DrawKind::Kyuushu),
@@ -109,8 +110,8 @@ impl DrawRecord {
         };
         DrawRecord {
             kind,
-            tenpai: std::array::from_fn(|p| word >> (8 + p) & 1 == 1),
-            nagashi: std::array::from_fn(|p| word >> (12 + p) & 1 == 1),
+            tenpai: std::array::from_fn(|p| word >> (k::DRAW_TENPAI_SHIFT + p as u32) & 1 == 1),
+            nagashi: std::array::from_fn(|p| word >> (k::DRAW_NAGASHI_SHIFT + p as u32) & 1 == 1),
         }
     }
 }
@@ -131,9 +132,9 @@ pub struct Deal {
 impl CpuEnv {
     fn deal(&mut self, variant: Variant, inputs: &[u32]) {
         with_variant!(variant, v => {
-            let ins: &[v::DealInput] = bytemuck::cast_slice(inputs);
-            let sts: &mut [v::GameState] = bytemuck::cast_slice_mut(&mut self.states);
-            let vws: &mut [v::StepView] = bytemuck::cast_slice_mut(&mut self.views);
+            let ins: &[kernel::DealInput] = bytemuck::cast_slice(inputs);
+            let sts: &mut [kernel::GameState] = bytemuck::cast_slice_mut(&mut self.states);
+            let vws: &mut [kernel::StepView] = bytemuck::cast_slice_mut(&mut self.views);
             for ((s, w), i) in sts.iter_mut().zip(vws.iter_mut()).zip(ins) {
                 if i.deal != 0 {
                     v::game_deal(s, *i);
@@ -144,14 +145,8 @@ impl CpuEnv {
     }
 }
 
-/// Words of the variant's `DealInput`.
-fn deal_words(variant: Variant) -> usize {
-    with_variant!(variant, v => std::mem::size_of::<v::DealInput>() / 4)
-}
-
-pub(super) fn gpu_deal_words(variant: Variant) -> usize {
-    deal_words(variant)
-}
+/// Words of a `DealInput`.
+pub(super) const DEAL_WORDS: usize = crate::hand::words::<kernel::DealInput>();
 
 impl Env {
     /// Starts the next round of the envs given a `Some` from that table and wall instead of the
@@ -167,12 +162,12 @@ impl Env {
                 return Err(EnvError::BadDealer { env, dealer: d.dealer });
             }
         }
-        let mut words = vec![0u32; deals.len() * deal_words(variant)];
-        with_variant!(variant, v => {
-            let ins: &mut [v::DealInput] = bytemuck::cast_slice_mut(&mut words);
+        let mut words = vec![0u32; deals.len() * DEAL_WORDS];
+        {
+            let ins: &mut [kernel::DealInput] = bytemuck::cast_slice_mut(&mut words);
             for (inp, d) in ins.iter_mut().zip(deals) {
                 if let Some(d) = d {
-                    *inp = v::DealInput {
+                    *inp = kernel::DealInput {
                         deal: 1,
                         round: d.round,
                         dealer: d.dealer,
@@ -183,15 +178,15 @@ impl Env {
                     };
                 }
             }
-        });
+        };
         match &mut self.backing {
             super::Backing::Cpu(cpu) => {
                 cpu.deal(variant, &words);
-                self.step.fill(variant, &cpu.views);
+                self.step.fill(&cpu.views);
             }
             super::Backing::Gpu(gpu) => {
                 let views = gpu.deal(&words)?;
-                self.step.fill(variant, views);
+                self.step.fill(views);
             }
         }
         Ok(&self.step)
@@ -200,23 +195,20 @@ impl Env {
     /// The table of every env (read back from the device on the GPU backend).
     pub fn tables(&self) -> Result<Vec<Table>, EnvError> {
         let words = self.try_states_words()?;
-        let variant = self.variant();
-        Ok(with_variant!(variant, v => {
-            let states: &[v::GameState] = bytemuck::cast_slice(&words);
-            states
-                .iter()
-                .map(|s| Table {
-                    round: s.round,
-                    dealer: s.dealer,
-                    honba: s.honba,
-                    sticks: s.sticks,
-                    scores: s.scores,
-                    rounds: s.rounds,
-                    over: s.terminated != 0,
-                    wins: std::array::from_fn(|p| WinRecord::decode(&s.win_yaku, &s.win_score, p)),
-                    draw: DrawRecord::decode(s.draw_kind),
-                })
-                .collect()
-        }))
+        let states: &[kernel::GameState] = bytemuck::cast_slice(&words);
+        Ok(states
+            .iter()
+            .map(|s| Table {
+                round: s.round,
+                dealer: s.dealer,
+                honba: s.honba,
+                sticks: s.sticks,
+                scores: s.scores,
+                rounds: s.rounds,
+                over: s.terminated != 0,
+                wins: std::array::from_fn(|p| WinRecord::decode(&s.win_yaku, &s.win_score, p)),
+                draw: DrawRecord::decode(s.draw_kind),
+            })
+            .collect())
     }
 }

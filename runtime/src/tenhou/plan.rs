@@ -14,6 +14,7 @@
 //! of the log then cannot be placed, the decisions are searched depth first until it can.
 
 use super::log::{Discard, Draw, DrawKind, Outcome, Round, Tile};
+use crate::generated::kernel;
 use crate::generated::red as k;
 
 mod wall;
@@ -43,11 +44,11 @@ pub struct Plan {
 }
 
 /// Where the engine deals from (rules/kernel/game_state.rs: `WALL_*`).
-pub(super) const LIVE_START: usize = k::WALL_LIVE_START as usize;
-pub(super) const LIVE_END: usize = k::WALL_LIVE_END as usize;
-pub(super) const DORA: usize = k::WALL_DORA as usize;
-pub(super) const URA: usize = k::WALL_URA as usize;
-pub(super) const RINSHAN: usize = k::WALL_RINSHAN as usize;
+pub(super) const LIVE_START: usize = kernel::WALL_LIVE_START as usize;
+pub(super) const LIVE_END: usize = kernel::WALL_LIVE_END as usize;
+pub(super) const DORA: usize = kernel::WALL_DORA as usize;
+pub(super) const URA: usize = kernel::WALL_URA as usize;
+pub(super) const RINSHAN: usize = kernel::WALL_RINSHAN as usize;
 
 /// A tile as players write it (`5m`, `0m` for the red five, `7z`), for messages.
 pub fn tile_name(t: Tile) -> String {

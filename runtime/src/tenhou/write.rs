@@ -36,7 +36,7 @@ mod tests;
 use std::fmt;
 
 use crate::env::{Env, EnvError};
-use crate::generated::red::GameState;
+use crate::generated::kernel::GameState;
 use crate::Variant;
 
 use super::log::Game;

@@ -6,7 +6,8 @@
 //! state before; the next round's wall and table from the state after.
 
 use crate::env::{events, DrawRecord, WinRecord};
-use crate::generated::red::{self as k, GameState};
+use crate::generated::kernel::{self, GameState};
+use crate::generated::red as k;
 use crate::tenhou::log::{round_name, Discard, DrawKind, Game, Outcome, Round, Win};
 use crate::tenhou::plan::{DORA, RINSHAN, URA};
 
@@ -172,7 +173,7 @@ impl GameRecorder {
             let mut wins = Vec::new();
             for (n, &w) in winners.iter().enumerate() {
                 let rec = WinRecord::decode(&a.win_yaku, &a.win_score, w as usize);
-                let liable = (b.pao >> (8 * w) & 255)
+                let liable = kernel::byte_of(b.pao, w)
                     .checked_sub(1)
                     .filter(|_| k::PAO && rec.yaku_ids().any(|y| y == k::YAKU_DAISANGEN || y == k::YAKU_DAISUUSHI));
                 let base = base_points(rec.han, rec.fu, rec.yakuman);

@@ -2,7 +2,8 @@
 //! draws, calls, discards and kans Tenhou writes, in Tenhou's seats (East 1's dealer is seat 0)
 //! and tile order.
 
-use crate::generated::red::{self as k, GameState};
+use crate::generated::kernel::{self, GameState};
+use crate::generated::red as k;
 use crate::tenhou::log::{Discard, Draw, DrawKind, Outcome, Rel, Round, Tile};
 use crate::tenhou::plan::LIVE_START;
 
@@ -38,16 +39,19 @@ fn copies(t: u32) -> Result<(Tile, Option<Tile>), String> {
     Ok((tile(t)?, red))
 }
 
+// The kernel's accessors take the state by `&mut` (the kernel subset has no shared
+// references); these read a copy.
 fn wall_of(s: &GameState) -> [u8; 136] {
-    std::array::from_fn(|i| (s.wall[i / 4] >> (8 * (i % 4)) & 255) as u8)
+    let mut s = *s;
+    std::array::from_fn(|i| kernel::wall_tile(&mut s, i as u32) as u8)
 }
 
 fn holds_red(s: &GameState, seat: u32, t: u32) -> bool {
-    t < 27 && t % 9 == 4 && s.red >> (seat * 3 + t / 9) & 1 == 1
+    t < 27 && t % 9 == 4 && kernel::holds_red(&mut { *s }, seat, t / 9)
 }
 
 pub(super) fn meld_count(s: &GameState, seat: u32) -> u32 {
-    s.meld_counts >> (8 * seat) & 255
+    kernel::meld_count(&mut { *s }, seat)
 }
 
 /// Tenhou sorts a hand by tile, a red five after the black ones.

@@ -1,0 +1,16 @@
+//! rinshan's test suite in one binary: each module is one concern (a clean build links one
+//! wgpu-heavy test executable for this crate instead of one per file).
+
+mod brute_force;
+mod env_api;
+mod env_parity;
+mod game_invariants;
+mod generated_modules;
+mod parity;
+mod rules_as_data;
+mod scenarios;
+mod scoring_cases;
+mod shanten_data;
+mod tenhou_replay;
+mod tenhou_roundtrip;
+mod tenpai_shortcuts;
