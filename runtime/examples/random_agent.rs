@@ -13,7 +13,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let batch = env.batch();
     let mut rng = Rng::new(1);
     let mut totals = vec![[0f32; 4]; batch];
-    let mut step = env.reset().clone();
+    let mut step = env.reset()?.clone();
     while !step.terminated.iter().all(|&t| t) {
         // One decision per game: the current player's action (finished games ignore theirs).
         let actions: Vec<u32> = (0..batch)

@@ -1,4 +1,5 @@
-// Shared by build.rs (which asks the translator for these entry points) and the GPU backend.
+// Shared by build.rs (which asks the translator for these entry points), the GPU backend and the
+// tests (tests/src/lib.rs), so the three cannot disagree on the list.
 /// The map entry points of every generated WGSL module: (entry point, kernel function, input
 /// struct, output struct), in binding order (the k-th entry binds input 1+2k and output 2+2k).
 pub const ENTRIES: [(&str, &str, &str, &str); 4] = [

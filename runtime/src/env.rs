@@ -6,7 +6,7 @@
 //! ```no_run
 //! use rinshan::env::{Backend, Config, Env, Mode};
 //! let mut env = Env::new(Config::new(rinshan::Variant::Red, 64)).unwrap();
-//! let step = env.reset();
+//! let step = env.reset().unwrap();
 //! // pick one legal action per env from step.legal_action_mask, then:
 //! # let actions = vec![0u32; 64];
 //! let step = env.step(&actions).unwrap();
@@ -19,6 +19,7 @@ use rayon::prelude::*;
 use crate::env_gpu::GpuEnv;
 use crate::generated::kernel;
 use crate::gpu::{Gpu, GpuError};
+use crate::tile::Tile;
 use crate::Variant;
 
 pub use table::{Deal, DrawKind, DrawRecord, Table, WinRecord};
@@ -77,7 +78,9 @@ impl std::str::FromStr for Mode {
 /// Where the games run.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Backend {
+    /// Native kernels on the CPU, envs split over rayon threads.
     Cpu,
+    /// The WGSL kernels through wgpu, the states kept on the device.
     Gpu,
 }
 
@@ -114,10 +117,13 @@ impl std::str::FromStr for Backend {
 /// An environment's configuration; [`Config::new`] gives the defaults.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Config {
+    /// The rules played.
     pub variant: Variant,
+    /// How long a game lasts.
     pub mode: Mode,
     /// Number of games stepped together (B).
     pub batch: usize,
+    /// Where the games run.
     pub backend: Backend,
     /// Seeds every env's games: env `i` of the `r`-th [`Env::reset`] gets seed words derived from
     /// `(seed, i, r)`.
@@ -156,21 +162,40 @@ pub enum EnvError {
     /// `batch` is 0.
     EmptyBatch,
     /// The batch is larger than the backend can step at once.
-    BatchTooLarge { batch: usize, max: usize },
+    BatchTooLarge {
+        /// The batch asked for.
+        batch: usize,
+        /// The backend's largest batch.
+        max: usize,
+    },
     /// `threads: Some(0)`, or the thread pool could not be made.
     BadThreads(String),
     /// A non-finite penalty.
     BadPenalty(f32),
     /// A per-env input had the wrong number of entries.
     WrongLength {
+        /// The input: `actions`, `seeds`, `walls`, `dealers` or `deals`.
         what: &'static str,
+        /// The batch size.
         expected: usize,
+        /// The entries given.
         got: usize,
     },
-    /// A wall given to [`Env::reset_with_walls`] is not a full set of this variant's tiles.
-    BadWall { env: usize, reason: String },
-    /// A first dealer outside 0..3.
-    BadDealer { env: usize, dealer: u32 },
+    /// A wall given to [`Env::reset_with_walls`] or [`Env::deal`] is not a full set of this
+    /// variant's tiles.
+    BadWall {
+        /// The env it was for.
+        env: usize,
+        /// What is wrong with it.
+        reason: String,
+    },
+    /// A dealer outside 0..3.
+    BadDealer {
+        /// The env it was for.
+        env: usize,
+        /// The seat given.
+        dealer: u32,
+    },
     /// The GPU backend could not start or failed.
     Gpu(GpuError),
 }
@@ -217,6 +242,8 @@ pub struct Step {
     pub rewards: Vec<[f32; 4]>,
     /// The game ended in this step (with auto-reset, a new one has already started).
     pub terminated: Vec<bool>,
+    /// The game was cut short rather than ended by the rules. The rules end every game, so this
+    /// stays false; it completes the usual RL step tuple.
     pub truncated: Vec<bool>,
     /// This step's action was illegal (the game ended with the penalty).
     pub illegal: Vec<bool>,
@@ -235,11 +262,17 @@ pub struct Step {
 /// The `events` bits of a [`Step`]: the kernel's `EVENT_*`.
 pub mod events {
     use crate::generated::kernel as k;
+    /// A round ended by ron (one or more winners).
     pub const RON: u32 = k::EVENT_RON;
+    /// A round ended by tsumo.
     pub const TSUMO: u32 = k::EVENT_TSUMO;
+    /// The wall ran out.
     pub const EXHAUSTIVE_DRAW: u32 = k::EVENT_EXHAUSTIVE_DRAW;
+    /// An abortive draw (kyuushu kyuuhai, four riichi, triple ron, four kans, four winds).
     pub const ABORTIVE_DRAW: u32 = k::EVENT_ABORTIVE_DRAW;
+    /// The game ended.
     pub const GAME_OVER: u32 = k::EVENT_GAME_OVER;
+    /// Nagashi mangan was paid at an exhaustive draw.
     pub const NAGASHI: u32 = k::EVENT_NAGASHI;
 }
 
@@ -314,25 +347,19 @@ pub fn env_seed(seed: u64, index: u64, epoch: u64) -> u64 {
 }
 
 /// Checks that `wall` holds exactly this variant's 136 tiles: every type 4 times, counting a red
-/// five (34 + suit) as a five, and with red fives (only in a variant that has them) once each.
-pub fn check_wall(variant: Variant, wall: &[u8; 136]) -> Result<(), String> {
+/// five as a five, and with red fives (only in a variant that has them) once each.
+pub(crate) fn check_wall(variant: Variant, wall: &[Tile; 136]) -> Result<(), String> {
     let red_fives = with_variant!(variant, v => v::RED_FIVES);
     let mut counts = [0u32; 34];
     let mut reds = [0u32; 3];
     for (i, &t) in wall.iter().enumerate() {
-        match t {
-            0..=33 => counts[t as usize] += 1,
-            34..=36 if red_fives => {
-                reds[(t - 34) as usize] += 1;
-                counts[((t - 34) * 9 + 4) as usize] += 1;
-            }
-            34..=36 => return Err(format!("tile {i} is a red five ({t}), but variant {variant} has none")),
-            _ => {
-                return Err(format!(
-                    "tile {i} has value {t}: tiles are 0..33 and 34..36 for red fives"
-                ))
-            }
+        if t.is_red() && !red_fives {
+            return Err(format!("tile {i} is a red five ({t}), but variant {variant} has none"));
         }
+        if let (true, Some(suit)) = (t.is_red(), t.kind().suit()) {
+            reds[usize::from(suit)] += 1;
+        }
+        counts[t.kind().index()] += 1;
     }
     if let Some(t) = counts.iter().position(|&n| n != 4) {
         return Err(format!(
@@ -528,14 +555,17 @@ impl Env {
         self.num_actions
     }
 
+    /// The rules played.
     pub fn variant(&self) -> Variant {
         self.config.variant
     }
 
+    /// Number of games stepped together.
     pub fn batch(&self) -> usize {
         self.config.batch
     }
 
+    /// The configuration the envs were made with.
     pub fn config(&self) -> &Config {
         &self.config
     }
@@ -560,18 +590,9 @@ impl Env {
     }
 
     /// New games in every env: env `i` is seeded from `(config.seed, i, r)` where `r` counts the
-    /// calls to `reset` so far, so a run is reproducible and each reset deals new games.
-    ///
-    /// Panics only if the GPU fails (device lost); [`Env::try_reset`] returns that error instead.
-    pub fn reset(&mut self) -> &Step {
-        match self.try_reset() {
-            Ok(_) => &self.step,
-            Err(e) => panic!("{e}"),
-        }
-    }
-
-    /// As [`Env::reset`], with the GPU's errors returned.
-    pub fn try_reset(&mut self) -> Result<&Step, EnvError> {
+    /// calls to `reset` so far, so a run is reproducible and each reset deals new games. Fails
+    /// only if the GPU does (device lost).
+    pub fn reset(&mut self) -> Result<&Step, EnvError> {
         let seeds = self.next_seeds();
         self.write_inputs(&seeds, None);
         self.run_reset()
@@ -591,10 +612,9 @@ impl Env {
         self.run_reset()
     }
 
-    /// New games whose first round deals the given walls (tile values in dealing order: 0..33,
-    /// 34..36 = red 5m 5p 5s) with the given first dealers (0..3). Later rounds shuffle from the
-    /// seeds [`Env::reset`] would use.
-    pub fn reset_with_walls(&mut self, walls: &[[u8; 136]], dealers: &[u32]) -> Result<&Step, EnvError> {
+    /// New games whose first round deals the given walls (tiles in dealing order) with the given
+    /// first dealers (0..3). Later rounds shuffle from the seeds [`Env::reset`] would use.
+    pub fn reset_with_walls(&mut self, walls: &[[Tile; 136]], dealers: &[u32]) -> Result<&Step, EnvError> {
         self.check_len("walls", walls.len())?;
         self.check_len("dealers", dealers.len())?;
         for (env, wall) in walls.iter().enumerate() {
@@ -630,17 +650,9 @@ impl Env {
         Ok(&self.step)
     }
 
-    /// The raw `GameState` words of every env (`state_words()` words each), read back from the GPU
-    /// on that backend.
-    pub fn states_words(&self) -> Vec<u32> {
-        match &self.backing {
-            Backing::Cpu(cpu) => cpu.states.clone(),
-            Backing::Gpu(gpu) => gpu.states().unwrap_or_else(|e| panic!("{e}")),
-        }
-    }
-
-    /// As [`Env::states_words`], with the GPU's errors returned.
-    pub fn try_states_words(&self) -> Result<Vec<u32>, EnvError> {
+    /// The raw `GameState` words of every env ([`Env::state_words`] words each, the kernel's
+    /// `generated::kernel::GameState`), read back from the GPU on that backend.
+    pub fn states_words(&self) -> Result<Vec<u32>, EnvError> {
         match &self.backing {
             Backing::Cpu(cpu) => Ok(cpu.states.clone()),
             Backing::Gpu(gpu) => Ok(gpu.states()?),
@@ -663,7 +675,7 @@ impl Env {
         Ok(())
     }
 
-    fn write_inputs(&mut self, seeds: &[u64], walls: Option<(&[[u8; 136]], &[u32])>) {
+    fn write_inputs(&mut self, seeds: &[u64], walls: Option<(&[[Tile; 136]], &[u32])>) {
         let (mode, uma, penalty, auto) = (
             self.config.mode.kernel(),
             self.uma,
@@ -674,7 +686,7 @@ impl Env {
             let ins: &mut [kernel::ResetInput] = bytemuck::cast_slice_mut(&mut self.reset_inputs);
             for (i, inp) in ins.iter_mut().enumerate() {
                 let (use_wall, dealer, wall) = match walls {
-                    Some((w, d)) => (1, d[i], w[i].map(u32::from)),
+                    Some((w, d)) => (1, d[i], w[i].map(|t| u32::from(t.value()))),
                     None => (0, 4, [0u32; 136]),
                 };
                 *inp = kernel::ResetInput {

@@ -20,8 +20,11 @@ const MAX_GROUPS: usize = 65_535;
 pub enum GpuError {
     /// No adapter: no GPU and no software driver (install Mesa's `mesa-vulkan-drivers`).
     NoAdapter(String),
+    /// The adapter would not give a device, or the device failed.
     Device(String),
+    /// Results could not be read back from the device.
     Readback(String),
+    /// Inputs that are not whole kernel records.
     BadInput(String),
 }
 
@@ -41,7 +44,9 @@ impl std::error::Error for GpuError {}
 /// A kernel entry point of the generated WGSL.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Kernel {
+    /// Shanten of a hand ([`crate::hand::shanten_batch`] on the CPU).
     Shanten,
+    /// Scoring a winning hand ([`crate::hand::score_batch`] on the CPU).
     Score,
 }
 

@@ -4,23 +4,30 @@
 use rayon::prelude::*;
 
 use crate::generated::kernel;
-use crate::notation::{Meld, MeldKind, Tile};
+use crate::notation::{Meld, MeldKind};
+use crate::tile::TileType;
 use crate::Variant;
 
 /// Shanten of a concealed hand: the number of tiles away from tenpai (`-1` = complete).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Shanten {
+    /// The best of the three shapes below.
     pub shanten: i32,
+    /// Towards four sets and a pair.
     pub normal: i32,
-    /// `None` when the hand has too few tiles for seven pairs (it has called melds).
+    /// Towards seven pairs; `None` when the hand has too few tiles for them (it has called melds).
     pub chiitoitsu: Option<i32>,
+    /// Towards thirteen orphans; `None` as for `chiitoitsu`.
     pub kokushi: Option<i32>,
 }
 
-/// Words of one kernel input or output, per entry point: the sizes of the kernel's own structs.
+/// Words of one shanten kernel input (the size of the kernel's `ShantenInput`).
 pub const SHANTEN_IN_WORDS: usize = words::<kernel::ShantenInput>();
+/// Words of one shanten kernel output (`ShantenOutput`).
 pub const SHANTEN_OUT_WORDS: usize = words::<kernel::ShantenOutput>();
+/// Words of one scoring kernel input (`ScoreInput`).
 pub const SCORE_IN_WORDS: usize = words::<kernel::ScoreInput>();
+/// Words of one scoring kernel output (`ScoreOutput`).
 pub const SCORE_OUT_WORDS: usize = words::<kernel::ScoreOutput>();
 
 /// 32-bit words of a kernel record.
@@ -78,24 +85,37 @@ pub fn shanten_batch_par(inputs: &[u32], outputs: &mut [u32]) {
 /// The circumstances of a win.
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
 pub struct WinContext {
+    /// Won on one's own draw (else by ron).
     pub tsumo: bool,
+    /// The winner declared riichi.
     pub riichi: bool,
+    /// The riichi was a double riichi (`riichi` is set too).
     pub double_riichi: bool,
+    /// Won within one uninterrupted go-around after riichi.
     pub ippatsu: bool,
+    /// Tsumo on the last tile of the wall.
     pub haitei: bool,
+    /// Ron on the last discard.
     pub houtei: bool,
+    /// Tsumo on a kan's replacement tile.
     pub rinshan: bool,
+    /// Ron on a tile added to a pon.
     pub chankan: bool,
+    /// The dealer's win on the first draw.
     pub tenhou: bool,
+    /// A non-dealer's win on the first uninterrupted draw.
     pub chiihou: bool,
+    /// The winner is the dealer.
     pub dealer: bool,
     /// 0..3 = E S W N.
     pub round_wind: u8,
+    /// The winner's wind, 0..3 = E S W N (East for the dealer).
     pub seat_wind: u8,
-    /// Dora indicators (at most 5), tile types.
-    pub dora: Vec<Tile>,
+    /// Dora indicators (at most 5).
+    pub dora: Vec<TileType>,
     /// Ura-dora indicators (at most 5), counted only with riichi.
-    pub ura: Vec<Tile>,
+    pub ura: Vec<TileType>,
+    /// Repeat counters on the table.
     pub honba: u32,
     /// Riichi sticks on the table, collected by the winner.
     pub sticks: u32,
@@ -106,10 +126,13 @@ pub struct WinContext {
 pub struct Win {
     /// Concealed tiles, the winning tile included.
     pub hand: [u8; 34],
-    pub win: Tile,
+    /// The winning tile.
+    pub win: TileType,
+    /// Called and declared sets, in any order.
     pub melds: Vec<Meld>,
     /// Red fives among all the winner's tiles, melds included.
     pub aka: u8,
+    /// How and where it was won.
     pub context: WinContext,
 }
 
@@ -138,34 +161,66 @@ impl std::fmt::Display for ScoreError {
 
 impl std::error::Error for ScoreError {}
 
-/// One yaku of a scored hand: its spec name and han (for a yakuman, its weight).
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Yaku {
-    pub name: &'static str,
-    pub han: u32,
+/// What a yaku is worth in a hand: han, or a number of yakuman.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum YakuHan {
+    /// An ordinary yaku's han (dora count here too).
+    Han(u32),
+    /// A yakuman's weight (2 = double where the variant counts double yakuman).
+    Yakuman(u32),
 }
 
-/// Who pays what, in points, honba included and riichi sticks excluded.
+impl YakuHan {
+    /// The number alone: the han, or the yakuman weight.
+    pub fn number(self) -> u32 {
+        match self {
+            YakuHan::Han(n) | YakuHan::Yakuman(n) => n,
+        }
+    }
+}
+
+/// One yaku of a win and what it is worth; the dora of a hand are listed as `dora`, `aka` (red
+/// fives) and `ura`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Yaku {
+    /// The spec's name (`rules/yaku.toml`), or `dora`, `aka`, `ura`.
+    pub name: &'static str,
+    /// What it is worth.
+    pub han: YakuHan,
+}
+
+/// What each payer pays for a win, riichi sticks excluded. In a [`Score`] honba are included;
+/// `tenhou::write`'s points texts show it before honba.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Payment {
+    /// A win on a discard: the discarder pays it all.
     Ron {
+        /// What the discarder pays.
         discarder: u32,
     },
-    /// `dealer` is `None` when the dealer is the winner (then all three pay `others`).
+    /// A win on one's own draw: every other seat pays a share.
     Tsumo {
+        /// The dealer's share; `None` when the dealer is the winner (then all three pay `others`).
         dealer: Option<u32>,
+        /// Each non-dealer's share.
         others: u32,
     },
 }
 
+/// What a winning hand scores.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Score {
+    /// Han of yaku and dora (0 for a yakuman hand).
     pub han: u32,
+    /// Fu, rounded as the rules count them.
     pub fu: u32,
     /// Total yakuman weight (0 for an ordinary hand; kazoe yakuman is han >= 13 with 0 here).
     pub yakuman: u32,
+    /// The yaku of the best-paying reading, then dora, red fives and ura.
     pub yaku: Vec<Yaku>,
+    /// Base points: fu x 2^(han+2) up to the limits.
     pub base: u32,
+    /// Who pays what.
     pub payment: Payment,
     /// The winner's total gain, riichi sticks included.
     pub gain: u32,
@@ -201,21 +256,24 @@ pub fn score_input(win: &Win) -> Result<[u32; SCORE_IN_WORDS], ScoreError> {
     if c.dealer != (c.seat_wind == 0) {
         return Err(bad("the dealer's seat wind is East, and only the dealer's"));
     }
-    if win.win >= 34 || win.hand[win.win as usize] == 0 {
+    if win.hand[win.win.index()] == 0 {
         return Err(bad("the winning tile must be among the concealed tiles"));
+    }
+    if let Some(m) = win
+        .melds
+        .iter()
+        .find(|m| m.kind == MeldKind::Chi && m.tile.up(2).is_none())
+    {
+        return Err(bad(format!("a chi from {} is not a run of one suit", m.tile)));
     }
     let mut all = win.hand;
     for m in &win.melds {
         for t in m.tiles() {
-            all[t as usize] += 1;
+            all[t.index()] += 1;
         }
     }
-    if let Some(t) = all.iter().position(|&n| n > 4) {
-        return Err(bad(format!(
-            "{} copies of {}: there are only 4",
-            all[t],
-            crate::notation::tile_name(t as u8)
-        )));
+    if let Some((t, &n)) = TileType::all().zip(&all).find(|&(_, &n)| n > 4) {
+        return Err(bad(format!("{n} copies of {t}: there are only 4")));
     }
     let concealed: usize = win.hand.iter().map(|&n| n as usize).sum();
     if concealed + 3 * win.melds.len() != 14 {
@@ -241,7 +299,7 @@ pub fn score_input(win: &Win) -> Result<[u32; SCORE_IN_WORDS], ScoreError> {
         (c.chiihou, kernel::FLAG_CHIIHOU),
         (c.dealer, kernel::FLAG_DEALER),
     ];
-    let up_to_five = |tiles: &[Tile]| std::array::from_fn(|i| tiles.get(i).map_or(0, |&t| u32::from(t)));
+    let up_to_five = |tiles: &[TileType]| std::array::from_fn(|i| tiles.get(i).map_or(0, |&t| u32::from(t)));
     let mut melds = [0u32; 4];
     for (word, m) in melds.iter_mut().zip(&win.melds) {
         *word = meld_word(m);
@@ -265,17 +323,16 @@ pub fn score_input(win: &Win) -> Result<[u32; SCORE_IN_WORDS], ScoreError> {
     Ok(bytemuck::cast(input))
 }
 
-/// What yaku `id` of `variant` is worth in a hand: `(han, false)` (closed or open han), or
-/// `(weight, true)` for a yakuman (its weight capped at 1 where the variant counts no double
-/// yakuman).
-pub fn yaku_worth(variant: Variant, id: usize, concealed: bool) -> (u32, bool) {
+/// What yaku `id` of `variant` is worth in a hand: its closed or open han, or for a yakuman its
+/// weight (capped at 1 where the variant counts no double yakuman).
+pub(crate) fn yaku_worth(variant: Variant, id: usize, concealed: bool) -> YakuHan {
     with_variant!(variant, v => {
         if v::YAKU_YAKUMAN[id] > 0 {
-            (if v::DOUBLE_YAKUMAN { v::YAKU_YAKUMAN[id] } else { 1 }, true)
+            YakuHan::Yakuman(if v::DOUBLE_YAKUMAN { v::YAKU_YAKUMAN[id] } else { 1 })
         } else if concealed {
-            (v::YAKU_HAN_CLOSED[id], false)
+            YakuHan::Han(v::YAKU_HAN_CLOSED[id])
         } else {
-            (v::YAKU_HAN_OPEN[id], false)
+            YakuHan::Han(v::YAKU_HAN_OPEN[id])
         }
     })
 }
@@ -295,14 +352,16 @@ pub fn decode_score(variant: Variant, w: &[u32]) -> Result<Score, ScoreError> {
         for i in 0..v::YAKU_COUNT as usize {
             let held = if i < 32 { o.yaku_lo >> i & 1 } else { o.yaku_hi >> (i - 32) & 1 };
             if held == 1 {
-                let (value, _) = yaku_worth(variant, i, concealed);
-                yaku.push(Yaku { name: v::host::YAKU_NAMES[i], han: value });
+                yaku.push(Yaku { name: v::host::YAKU_NAMES[i], han: yaku_worth(variant, i, concealed) });
             }
         }
     });
     for (name, n) in [("dora", o.dora), ("aka", o.aka), ("ura", o.ura)] {
         if n > 0 {
-            yaku.push(Yaku { name, han: n });
+            yaku.push(Yaku {
+                name,
+                han: YakuHan::Han(n),
+            });
         }
     }
     let payment = if o.ron > 0 {

@@ -4,22 +4,26 @@
 //! the modules of [`generated`]: one per variant, each with the kernels compiled natively and the
 //! same kernels translated to WGSL for the GPU backend.
 //!
+//! * [`tile`]     — tile types and physical tiles, and their encodings (kernel values, Tenhou codes)
 //! * [`notation`] — hands written as `123m456p789s11z` (0 = red five) and melds as `pon:555z`
 //! * [`hand`]     — shanten and hand scoring on the CPU, one hand or a batch
 //! * [`gpu`]      — the same kernels on a GPU through wgpu
 //! * [`env`]      — the batched game environment (reset, step, masks, rewards) on the CPU or the GPU
 //! * [`tenhou`]   — tenhou.net/6 logs: reading them and replaying them through the red variant
+//! * [`random`]   — deterministic random hands and legal actions for tests, benchmarks and self-play
+
+#![warn(missing_docs)]
 
 include!(concat!(env!("OUT_DIR"), "/dispatch.rs"));
 
-pub mod tables;
+mod tables;
 
 #[allow(missing_docs)]
 pub mod generated {
     include!(concat!(env!("OUT_DIR"), "/generated.rs"));
 }
 
-pub mod entries;
+mod entries;
 pub mod env;
 mod env_gpu;
 pub mod gpu;
@@ -27,8 +31,10 @@ pub mod hand;
 pub mod notation;
 pub mod random;
 pub mod tenhou;
+pub mod tile;
 
 pub use generated::Variant;
+pub use tile::{Tile, TileType};
 
 impl Variant {
     /// Parses a variant name as users write it: `red`, `no-red` or `no_red`.

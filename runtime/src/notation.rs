@@ -4,15 +4,17 @@
 
 use std::fmt;
 
-/// A tile type 0..33 (1m..9m, 1p..9p, 1s..9s, E S W N, white green red).
-pub type Tile = u8;
+use crate::tile::{Tile, TileType};
 
 /// Why a piece of notation could not be read: the input, the 0-based character position and what
 /// is wrong.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct NotationError {
+    /// The text as given.
     pub input: String,
+    /// Where in it (0-based, in characters) reading stopped.
     pub position: usize,
+    /// What is wrong there.
     pub message: String,
 }
 
@@ -30,25 +32,26 @@ impl fmt::Display for NotationError {
 
 impl std::error::Error for NotationError {}
 
-/// Tiles in written order, each as (type, is red five).
+/// Tiles as written, in written order.
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
 pub struct Tiles {
-    pub tiles: Vec<(Tile, bool)>,
+    /// The tiles, red fives marked.
+    pub tiles: Vec<Tile>,
 }
 
 impl Tiles {
     /// Counts per type, red fives folded into their type.
     pub fn counts(&self) -> [u8; 34] {
         let mut c = [0u8; 34];
-        for &(t, _) in &self.tiles {
-            c[t as usize] += 1;
+        for t in &self.tiles {
+            c[t.kind().index()] += 1;
         }
         c
     }
 
     /// Number of red fives.
     pub fn red(&self) -> u8 {
-        self.tiles.iter().filter(|(_, r)| *r).count() as u8
+        self.tiles.iter().filter(|t| t.is_red()).count() as u8
     }
 }
 
@@ -85,7 +88,7 @@ pub fn parse_tiles(input: &str) -> Result<Tiles, NotationError> {
                                     format!("honor `{d}z` does not exist: honors are 1z-7z (E S W N white green red)"),
                                 ));
                             }
-                            (27 + d - 1, false)
+                            27 + d - 1
                         }
                         _ => {
                             let base = match ch {
@@ -94,13 +97,14 @@ pub fn parse_tiles(input: &str) -> Result<Tiles, NotationError> {
                                 _ => 18,
                             };
                             if d == 0 {
-                                (base + 4, true)
+                                34 + base / 9
                             } else {
-                                (base + d - 1, false)
+                                base + d - 1
                             }
                         }
                     };
-                    tiles.push(tile);
+                    // Every digit with its suit letter is a value 0..36: nothing is dropped here.
+                    tiles.extend(Tile::from_value(tile));
                 }
                 pending.clear();
             }
@@ -134,7 +138,7 @@ pub fn parse_tiles(input: &str) -> Result<Tiles, NotationError> {
 }
 
 /// Parses exactly one tile, e.g. `5m` or `0p`.
-pub fn parse_tile(input: &str) -> Result<(Tile, bool), NotationError> {
+pub fn parse_tile(input: &str) -> Result<Tile, NotationError> {
     let tiles = parse_tiles(input)?;
     match tiles.tiles.as_slice() {
         [one] => Ok(*one),
@@ -145,7 +149,9 @@ pub fn parse_tile(input: &str) -> Result<(Tile, bool), NotationError> {
 /// How a meld was made.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum MeldKind {
+    /// A run called from the player on the left.
     Chi,
+    /// A triplet called from any player.
     Pon,
     /// Open kan (daiminkan) on a discard.
     Kan,
@@ -155,20 +161,22 @@ pub enum MeldKind {
     Kakan,
 }
 
-/// A called or declared set. `tile` is the set's tile type (the lowest one for a chi).
+/// A called or declared set.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Meld {
+    /// How it was made.
     pub kind: MeldKind,
-    pub tile: Tile,
+    /// The set's tile type (the lowest one for a chi).
+    pub tile: TileType,
     /// Red fives inside the meld.
     pub red: u8,
 }
 
 impl Meld {
-    /// The meld's tile types, 3 or 4 of them.
-    pub fn tiles(&self) -> Vec<Tile> {
+    /// The meld's tile types, 3 or 4 of them (fewer for a chi that is no run, which scoring rejects).
+    pub fn tiles(&self) -> Vec<TileType> {
         match self.kind {
-            MeldKind::Chi => vec![self.tile, self.tile + 1, self.tile + 2],
+            MeldKind::Chi => (0..3).filter_map(|i| self.tile.up(i)).collect(),
             MeldKind::Pon => vec![self.tile; 3],
             _ => vec![self.tile; 4],
         }
@@ -200,7 +208,7 @@ pub fn parse_meld(input: &str) -> Result<Meld, NotationError> {
     };
     let at = kind_len(input);
     let tiles = parse_tiles(tiles_src).map_err(|e| err(input, at + e.position, e.message))?;
-    let mut types: Vec<Tile> = tiles.tiles.iter().map(|t| t.0).collect();
+    let mut types: Vec<TileType> = tiles.tiles.iter().map(|t| t.kind()).collect();
     types.sort_unstable();
     let red = tiles.red();
     let want = if kind == MeldKind::Chi || kind == MeldKind::Pon {
@@ -216,7 +224,7 @@ pub fn parse_meld(input: &str) -> Result<Meld, NotationError> {
         ));
     }
     if kind == MeldKind::Chi {
-        let run = types[0] < 27 && types[0] % 9 <= 6 && types[1] == types[0] + 1 && types[2] == types[0] + 2;
+        let run = types[0].up(1) == Some(types[1]) && types[0].up(2) == Some(types[2]);
         if !run {
             return Err(err(
                 input,
@@ -257,25 +265,7 @@ fn kind_name(kind: MeldKind) -> &'static str {
     }
 }
 
-/// Writes a tile type back in notation, e.g. `5m`, `7z`.
-pub fn tile_name(t: Tile) -> String {
-    if t >= 27 {
-        format!("{}z", t - 26)
-    } else {
-        format!("{}{}", t % 9 + 1, ['m', 'p', 's'][(t / 9) as usize])
-    }
-}
-
-/// Writes a tile value back in notation: a type as [`tile_name`] does, a red five (34, 35, 36)
-/// as `0m`, `0p`, `0s`.
-pub fn value_name(v: u8) -> String {
-    match v {
-        34..=36 => format!("0{}", ['m', 'p', 's'][usize::from(v - 34)]),
-        _ => tile_name(v),
-    }
-}
-
-/// A wind as written on the command line: E, S, W or N.
+/// A wind as written on the command line: E, S, W or N, read as 0..3.
 pub fn parse_wind(input: &str) -> Result<u8, NotationError> {
     match input.to_ascii_uppercase().as_str() {
         "E" | "EAST" => Ok(0),
@@ -293,10 +283,8 @@ mod tests {
     #[test]
     fn reads_suits_honors_and_red_fives() {
         let t = parse_tiles("120m9p77z").unwrap();
-        assert_eq!(
-            t.tiles,
-            vec![(0, false), (1, false), (4, true), (17, false), (33, false), (33, false)]
-        );
+        let values: Vec<u8> = t.tiles.iter().map(|t| t.value()).collect();
+        assert_eq!(values, vec![0, 1, 34, 17, 33, 33]);
         assert_eq!(t.red(), 1);
         assert_eq!(t.counts()[33], 2);
     }
@@ -315,7 +303,7 @@ mod tests {
             parse_meld("chi:312m").unwrap(),
             Meld {
                 kind: MeldKind::Chi,
-                tile: 0,
+                tile: TileType::new(0).unwrap(),
                 red: 0
             }
         );
@@ -323,13 +311,14 @@ mod tests {
             parse_meld("pon:550p").unwrap(),
             Meld {
                 kind: MeldKind::Pon,
-                tile: 13,
+                tile: TileType::new(13).unwrap(),
                 red: 1
             }
         );
         assert_eq!(parse_meld("ankan:1111s").unwrap().kind, MeldKind::Ankan);
         assert!(parse_meld("chi:135m").is_err());
         assert!(parse_meld("chi:123z").is_err());
+        assert!(parse_meld("chi:789m").is_ok() && parse_meld("chi:891m").is_err());
         assert!(parse_meld("pon:556m").is_err());
         assert!(parse_meld("kan:555m").is_err());
         assert!(parse_meld("hold:555m")

@@ -2,17 +2,20 @@
 //! lives in the kernels with their counter-based RNG).
 
 use crate::hand::{Win, WinContext};
-use crate::notation::{Meld, MeldKind, Tile};
+use crate::notation::{Meld, MeldKind};
+use crate::tile::TileType;
 
 /// splitmix64: small, fast and good enough to sample test hands.
 #[derive(Debug, Clone)]
 pub struct Rng(u64);
 
 impl Rng {
+    /// A stream seeded with `seed` (the same seed, the same numbers).
     pub fn new(seed: u64) -> Rng {
         Rng(seed)
     }
 
+    /// The next 64 random bits.
     pub fn next_u64(&mut self) -> u64 {
         self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
         let mut z = self.0;
@@ -26,6 +29,7 @@ impl Rng {
         (((self.next_u64() >> 32) * u64::from(n)) >> 32) as u32
     }
 
+    /// True with probability `percent` / 100.
     pub fn chance(&mut self, percent: u32) -> bool {
         self.below(100) < percent
     }
@@ -64,7 +68,12 @@ pub fn random_hand(rng: &mut Rng, n: usize) -> [u8; 34] {
     counts
 }
 
-const TERMINALS_AND_HONORS: [Tile; 13] = [0, 8, 9, 17, 18, 26, 27, 28, 29, 30, 31, 32, 33];
+const TERMINALS_AND_HONORS: [u8; 13] = [0, 8, 9, 17, 18, 26, 27, 28, 29, 30, 31, 32, 33];
+
+/// The type of index `t`, for indices this file draws below 34.
+fn tile_type(t: u32) -> TileType {
+    TileType::new(t as u8).unwrap_or_else(|| unreachable!("tile index {t} drawn below 34"))
+}
 
 /// A random winning hand (it may still lack a yaku): four sets and a pair with 0-4 melds, or now
 /// and then seven pairs or thirteen orphans, with random circumstances.
@@ -102,13 +111,13 @@ fn try_random_win(rng: &mut Rng) -> Option<Win> {
             let suit = one_suit.unwrap_or_else(|| rng.below(3));
             let run = rng.chance(60);
             let tile = if run {
-                (suit * 9 + rng.below(7)) as Tile
+                suit * 9 + rng.below(7)
             } else if one_suit.is_some() {
-                (suit * 9 + rng.below(9)) as Tile
+                suit * 9 + rng.below(9)
             } else {
-                rng.below(34) as Tile
+                rng.below(34)
             };
-            let tiles: Vec<Tile> = if run {
+            let tiles: Vec<u32> = if run {
                 vec![tile, tile + 1, tile + 2]
             } else {
                 vec![tile; 3]
@@ -125,7 +134,11 @@ fn try_random_win(rng: &mut Rng) -> Option<Win> {
                         MeldKind::Kakan,
                     ][rng.below(5) as usize]
                 };
-                melds.push(Meld { kind, tile, red: 0 });
+                melds.push(Meld {
+                    kind,
+                    tile: tile_type(tile),
+                    red: 0,
+                });
             } else {
                 for t in tiles {
                     hand[t as usize] += 1;
@@ -141,14 +154,14 @@ fn try_random_win(rng: &mut Rng) -> Option<Win> {
     let mut all = hand;
     for m in &melds {
         for t in m.tiles() {
-            all[t as usize] += 1;
+            all[t.index()] += 1;
         }
     }
     if all.iter().any(|&n| n > 4) {
         return None;
     }
-    let concealed: Vec<Tile> = (0..34u8)
-        .flat_map(|t| std::iter::repeat_n(t, hand[t as usize] as usize))
+    let concealed: Vec<TileType> = TileType::all()
+        .flat_map(|t| std::iter::repeat_n(t, usize::from(hand[t.index()])))
         .collect();
     let win = concealed[rng.below(concealed.len() as u32) as usize];
     let has_kan = melds
@@ -172,18 +185,18 @@ fn try_random_win(rng: &mut Rng) -> Option<Win> {
         dealer,
         round_wind: rng.below(2) as u8,
         seat_wind: if dealer { 0 } else { 1 + rng.below(3) as u8 },
-        dora: (0..1 + rng.below(3)).map(|_| rng.below(34) as Tile).collect(),
+        dora: (0..1 + rng.below(3)).map(|_| tile_type(rng.below(34))).collect(),
         ura: Vec::new(),
         honba: if rng.chance(20) { rng.below(4) } else { 0 },
         sticks: if rng.chance(20) { rng.below(3) } else { 0 },
     };
     if c.riichi {
-        c.ura = (0..c.dora.len()).map(|_| rng.below(34) as Tile).collect();
+        c.ura = (0..c.dora.len()).map(|_| tile_type(rng.below(34))).collect();
     }
     if tsumo && has_kan && !c.haitei && rng.chance(20) {
         c.rinshan = true;
     }
-    if !tsumo && !c.houtei && all[win as usize] == 1 && rng.chance(3) {
+    if !tsumo && !c.houtei && all[win.index()] == 1 && rng.chance(3) {
         c.chankan = true;
     }
     if tsumo && melds.is_empty() && !c.riichi && !c.haitei && rng.chance(2) {

@@ -18,8 +18,3 @@ pub fn table(i: u32) -> u32 {
     let b = &BYTES.0[o..o + 4];
     u32::from_le_bytes([b[0], b[1], b[2], b[3]])
 }
-
-/// Number of 32-bit words in the table region.
-pub fn len_words() -> usize {
-    BYTES.0.len() / 4
-}

@@ -6,6 +6,12 @@ use std::path::PathBuf;
 pub mod policy;
 pub mod scenario;
 
+/// The WGSL entry points, from the file `runtime/build.rs` and the GPU backend read (the library
+/// keeps it private).
+pub mod entries {
+    include!(concat!(env!("CARGO_MANIFEST_DIR"), "/../runtime/src/entries.rs"));
+}
+
 /// The test data the project carries (`tests/data`: Tenhou logs, shanten cases, scenarios).
 pub fn test_data() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("data")

@@ -5,6 +5,7 @@
 use std::collections::BTreeSet;
 
 use rinshan::notation::parse_tile;
+use rinshan::{Tile, TileType};
 use serde::Deserialize;
 
 use crate::test_data;
@@ -110,27 +111,25 @@ pub struct Expect {
     pub illegal: Option<bool>,
 }
 
-pub const SUITS: [char; 4] = ['m', 'p', 's', 'z'];
-
+/// A tile type index as written, e.g. `5m`.
 pub fn type_name(t: u32) -> String {
-    format!("{}{}", t % 9 + 1, SUITS[(t / 9) as usize])
+    let kind = u8::try_from(t).ok().and_then(TileType::new);
+    kind.map_or_else(|| format!("type {t}"), TileType::name)
 }
 
 /// Tile value as the kernel writes it: 0..33, or 34..36 for the red fives.
 pub fn tile_value(text: &str, red_variant: bool) -> Result<u32, String> {
-    let (t, red) = parse_tile(text).map_err(|e| e.to_string())?;
-    if red && !red_variant {
+    let t = parse_tile(text).map_err(|e| e.to_string())?;
+    if t.is_red() && !red_variant {
         return Err(format!("`{text}`: no red fives in this variant"));
     }
-    Ok(if red { 34 + u32::from(t) / 9 } else { u32::from(t) })
+    Ok(u32::from(t.value()))
 }
 
+/// A kernel tile value as written, e.g. `0p` for a red five.
 pub fn value_name(v: u32) -> String {
-    if v >= 34 {
-        format!("0{}", SUITS[(v - 34) as usize])
-    } else {
-        type_name(v)
-    }
+    let tile = u8::try_from(v).ok().and_then(Tile::from_value);
+    tile.map_or_else(|| format!("value {v}"), Tile::name)
 }
 
 /// The variant's action layout, for names <-> ids.
@@ -153,9 +152,9 @@ impl Actions {
                 Ok(first + v)
             }
             ["kan", tile] => {
-                let (t, _) = parse_tile(tile).map_err(|e| e.to_string())?;
+                let t = parse_tile(tile).map_err(|e| e.to_string())?;
                 let (first, _) = self.block("self_kan").ok_or("no self_kan block")?;
-                Ok(first + u32::from(t))
+                Ok(first + u32::from(t.kind()))
             }
             [kind] => match self.block(kind) {
                 Some((first, 1)) => Ok(first),
@@ -224,20 +223,22 @@ pub fn build_wall(sc: &Scenario, red: bool) -> Result<[u32; 136], String> {
             return Err(format!("hand of seat {seat} has {} tiles, not 13", tiles.tiles.len()));
         }
         let offset = ((seat as u32 + 4 - sc.dealer) % 4 * 13) as usize;
-        for (k, &(t, r)) in tiles.tiles.iter().enumerate() {
-            let text = if r {
-                format!("0{}", SUITS[(t / 9) as usize])
-            } else {
-                type_name(u32::from(t))
-            };
-            place(offset + k, &text, &format!("hand of seat {seat}"), &mut wall)?;
+        for (k, t) in tiles.tiles.iter().enumerate() {
+            place(offset + k, &t.name(), &format!("hand of seat {seat}"), &mut wall)?;
         }
     }
+    use rinshan::generated::kernel::{WALL_DORA, WALL_LIVE_END, WALL_LIVE_START, WALL_RINSHAN, WALL_URA};
+    let at = |i: u32| i as usize;
     let lists: [(&[String], usize, usize, &str); 4] = [
-        (&sc.draws, 52, 70, "draws"),
-        (&sc.dora, 122, 5, "dora"),
-        (&sc.ura, 127, 5, "ura"),
-        (&sc.rinshan, 132, 4, "rinshan"),
+        (
+            &sc.draws,
+            at(WALL_LIVE_START),
+            at(WALL_LIVE_END - WALL_LIVE_START),
+            "draws",
+        ),
+        (&sc.dora, at(WALL_DORA), at(WALL_URA - WALL_DORA), "dora"),
+        (&sc.ura, at(WALL_URA), at(WALL_RINSHAN - WALL_URA), "ura"),
+        (&sc.rinshan, at(WALL_RINSHAN), 136 - at(WALL_RINSHAN), "rinshan"),
     ];
     for (list, start, max, what) in lists {
         if list.len() > max {
@@ -252,8 +253,8 @@ pub fn build_wall(sc: &Scenario, red: bool) -> Result<[u32; 136], String> {
     }
     for (seat, list) in sc.seat_draws.iter().enumerate() {
         for (k, text) in list.iter().enumerate() {
-            let i = 52 + (seat as u32 + 4 - sc.dealer) % 4 + 4 * k as u32;
-            if i >= 122 {
+            let i = WALL_LIVE_START + (seat as u32 + 4 - sc.dealer) % 4 + 4 * k as u32;
+            if i >= WALL_LIVE_END {
                 return Err(format!("seat_draws of seat {seat}: draw {k} is past the live wall"));
             }
             place(i as usize, text, &format!("seat_draws of seat {seat}"), &mut wall)?;

@@ -14,11 +14,18 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use rinshan::hand::{score, Payment, Score, ScoreError, Win, WinContext};
-use rinshan::notation::{parse_meld, parse_tile, parse_tiles, tile_name, MeldKind, Tile};
+use rinshan::notation::{parse_meld, parse_tile, parse_tiles, MeldKind};
 use rinshan::random::{random_win, Rng};
-use rinshan::Variant;
+use rinshan::{TileType, Variant};
 use rinshan_codegen::expr::{eval, Value};
 use rinshan_codegen::Spec;
+
+/// The oracle's own tile: a type index 0..33, counted with plain arithmetic.
+type Tile = u8;
+
+fn tile_name(t: Tile) -> String {
+    TileType::new(t).map_or_else(|| format!("#{t}"), TileType::name)
+}
 
 const WHITE: Tile = 31;
 const GREEN: Tile = 32;
@@ -381,10 +388,10 @@ impl Oracle {
         if han == 0 {
             return None;
         }
-        let count = |indicators: &[Tile]| {
+        let count = |indicators: &[TileType]| {
             indicators
                 .iter()
-                .map(|&i| u32::from(all[dora_of(i) as usize]))
+                .map(|&i| u32::from(all[dora_of(u8::from(i)) as usize]))
                 .sum::<u32>()
         };
         let dora = count(&win.context.dora);
@@ -441,8 +448,8 @@ impl Oracle {
     fn score(&self, win: &Win) -> (Result<Vec<Judged>, ScoreError>, usize) {
         let c = &win.context;
         let hand = &win.hand;
-        let w = win.win;
-        let melds: Vec<Set> = win.melds.iter().map(|m| meld_set(m.kind, m.tile)).collect();
+        let w = u8::from(win.win);
+        let melds: Vec<Set> = win.melds.iter().map(|m| meld_set(m.kind, u8::from(m.tile))).collect();
         let mut all = *hand;
         for m in &melds {
             for t in m.tiles() {
@@ -564,7 +571,7 @@ impl Oracle {
 /// The features and fu (before the tsumo bonus and rounding) of one standard reading.
 fn standard_reading(win: &Win, common: &Features, pair: Tile, sets: &[Set], slot: Slot) -> (Features, u32) {
     let c = &win.context;
-    let w = win.win;
+    let w = u8::from(win.win);
     let ron = !c.tsumo;
     let mut f = Features {
         standard: true,
@@ -729,17 +736,11 @@ fn describe(win: &Win) -> String {
         };
         let mut counts = [0u8; 34];
         for t in m.tiles() {
-            counts[t as usize] += 1;
+            counts[t.index()] += 1;
         }
         write!(s, " {kind}:{}", notation(&counts)).unwrap();
     }
-    write!(
-        s,
-        " win {} {}",
-        tile_name(win.win),
-        if c.tsumo { "tsumo" } else { "ron" }
-    )
-    .unwrap();
+    write!(s, " win {} {}", win.win.name(), if c.tsumo { "tsumo" } else { "ron" }).unwrap();
     let winds = ["E", "S", "W", "N"];
     write!(
         s,
@@ -762,7 +763,7 @@ fn describe(win: &Win) -> String {
             write!(s, " {name}").unwrap();
         }
     }
-    let names = |ts: &[Tile]| ts.iter().map(|&t| tile_name(t)).collect::<Vec<_>>().join(",");
+    let names = |ts: &[TileType]| ts.iter().map(|t| t.name()).collect::<Vec<_>>().join(",");
     write!(
         s,
         " dora [{}] ura [{}] aka {} honba {} sticks {}",
@@ -801,7 +802,7 @@ fn compare(
             return Some((what, format!("oracle {expected:?}\n    rinshan {got:?}")));
         }
     };
-    let yaku: BTreeMap<String, u32> = s.yaku.iter().map(|y| (y.name.to_string(), y.han)).collect();
+    let yaku: BTreeMap<String, u32> = s.yaku.iter().map(|y| (y.name.to_string(), y.han.number())).collect();
     let j = &best[0];
     let (pay, gain) = payment(&oracle.spec, win, j.base);
     let same = (s.han, s.fu, s.yakuman, s.base, s.payment, s.gain) == (j.han, j.fu, j.yakuman, j.base, pay, gain)
@@ -979,7 +980,7 @@ fn picked_win(p: &Picked) -> Win {
     };
     Win {
         hand: tiles.counts(),
-        win: parse_tile(win).unwrap().0,
+        win: parse_tile(win).unwrap().kind(),
         melds,
         aka: 0,
         context,

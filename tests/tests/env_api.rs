@@ -3,7 +3,7 @@
 
 use rinshan::env::{Config, Env, EnvError, Mode, Step};
 use rinshan::random::Rng;
-use rinshan::Variant;
+use rinshan::{Tile, TileType, Variant};
 
 fn config(variant: Variant, batch: usize, threads: Option<usize>) -> Config {
     Config {
@@ -19,7 +19,7 @@ fn play(cfg: Config, steps: usize) -> (Vec<Step>, Vec<u32>) {
     let b = cfg.batch;
     let mut env = Env::new(cfg).expect("env");
     let mut rngs: Vec<Rng> = (0..b as u64).map(|i| Rng::new(1000 + i)).collect();
-    let mut out = vec![env.reset().clone()];
+    let mut out = vec![env.reset().expect("reset").clone()];
     let mut actions = vec![0u32; b];
     for _ in 0..steps {
         let last = out.last().expect("a step");
@@ -28,7 +28,7 @@ fn play(cfg: Config, steps: usize) -> (Vec<Step>, Vec<u32>) {
         }
         out.push(env.step(&actions).expect("step").clone());
     }
-    (out, env.states_words())
+    (out, env.states_words().expect("states"))
 }
 
 #[test]
@@ -47,8 +47,8 @@ fn same_seeds_give_the_same_games_on_one_and_two_threads() {
         assert!(games > 0, "{v}: some games ended in 1500 steps");
         // A second reset deals new games; a new env with the same seed deals the first ones again.
         let mut env = Env::new(config(v, 64, Some(1))).expect("env");
-        let first = env.reset().clone();
-        let second = env.reset().clone();
+        let first = env.reset().expect("reset").clone();
+        let second = env.reset().expect("reset").clone();
         assert_eq!(first, one[0]);
         assert_ne!(first.legal_action_mask, second.legal_action_mask);
     }
@@ -67,17 +67,20 @@ fn reset_with_seeds_is_reproducible() {
     let sa = a.reset_with_seeds(&seeds).expect("reset").clone();
     let sb = b.reset_with_seeds(&seeds).expect("reset").clone();
     assert_eq!(sa, sb);
-    assert_eq!(a.states_words(), b.states_words());
+    assert_eq!(a.states_words().expect("states"), b.states_words().expect("states"));
+}
+
+fn tile_type(index: u8) -> TileType {
+    TileType::new(index).expect("a type index below 34")
 }
 
 /// A wall in tile order: every type four times, the first copy of each five red when `red`.
-fn sorted_wall(red: bool) -> [u8; 136] {
+fn sorted_wall(red: bool) -> [Tile; 136] {
     std::array::from_fn(|i| {
-        let t = (i / 4) as u8;
-        if red && i % 4 == 0 && t < 27 && t % 9 == 4 {
-            34 + t / 9
-        } else {
-            t
+        let t = tile_type((i / 4) as u8);
+        match Tile::red(t) {
+            Some(five) if red && i % 4 == 0 => five,
+            _ => Tile::plain(t),
         }
     })
 }
@@ -98,7 +101,7 @@ fn reset_with_walls_deals_exactly_those_hands() {
         .expect("reset")
         .clone();
     assert_eq!(step.current_player, [2, 0], "the dealer acts first");
-    let words = env.states_words();
+    let words = env.states_words().expect("states");
     let states: &[rinshan::generated::kernel::GameState] = bytemuck::cast_slice(&words);
     for (e, (wall, dealer)) in [(sorted, 2usize), (reversed, 0usize)].into_iter().enumerate() {
         let s = &states[e];
@@ -109,12 +112,7 @@ fn reset_with_walls_deals_exactly_those_hands() {
             for k in 0..take {
                 // The dealer's 14th tile is the first live draw (index 52).
                 let i = if k == 13 { 52 } else { j * 13 + k };
-                let v = u32::from(wall[i]);
-                expected[if v >= 34 {
-                    ((v - 34) * 9 + 4) as usize
-                } else {
-                    v as usize
-                }] += 1;
+                expected[wall[i].kind().index()] += 1;
             }
             assert_eq!(hand_of(s, seat), expected, "env {e} seat {seat}");
         }
@@ -153,7 +151,7 @@ fn bad_input_is_a_typed_error() {
     ));
 
     let mut env = Env::new(config(Variant::Red, 4, Some(1))).expect("env");
-    env.reset();
+    env.reset().expect("reset");
     let e = env.step(&[0, 0, 0]).expect_err("3 actions for 4 envs");
     assert_eq!(
         e,
@@ -171,15 +169,12 @@ fn bad_input_is_a_typed_error() {
 
     let good = sorted_wall(true);
     let mut five_copies = good;
-    five_copies[0] = 1; // 1m x3, 2m x5
+    five_copies[0] = Tile::plain(tile_type(1)); // 1m x3, 2m x5
     let mut no_red_in_red = good;
-    no_red_in_red[16] = 4; // the red 5m replaced by a plain one
-    let mut out_of_range = good;
-    out_of_range[7] = 40;
+    no_red_in_red[16] = Tile::plain(tile_type(4)); // the red 5m replaced by a plain one
     for (wall, needle) in [
         (five_copies, "3 copies of tile type 0"),
         (no_red_in_red, "0 red fives of suit 0"),
-        (out_of_range, "tile 7 has value 40"),
     ] {
         let e = env
             .reset_with_walls(&[good, good, wall, good], &[0; 4])
@@ -212,7 +207,7 @@ fn an_illegal_action_ends_only_that_game_with_the_penalty() {
             ..config(v, 4, Some(1))
         })
         .expect("env");
-        let first = env.reset().clone();
+        let first = env.reset().expect("reset").clone();
         let mut rng = Rng::new(5);
         let mut actions: Vec<u32> = (0..4).map(|i| rng.pick_legal(&first.legal_action_mask[i])).collect();
         let illegal = (0..env.num_actions())

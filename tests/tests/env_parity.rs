@@ -25,10 +25,14 @@ fn parity(variant: Variant) {
     let software = gpu.is_software();
     let mut gpu = Env::with_gpu(config, gpu).expect("gpu env");
     let started = std::time::Instant::now();
-    let c = cpu.reset().clone();
-    let g = gpu.reset().clone();
+    let c = cpu.reset().expect("cpu reset").clone();
+    let g = gpu.reset().expect("gpu reset").clone();
     assert_eq!(c, g, "{variant}: reset");
-    assert_eq!(cpu.states_words(), gpu.states_words(), "{variant}: states after reset");
+    assert_eq!(
+        cpu.states_words().expect("cpu states"),
+        gpu.states_words().expect("gpu states"),
+        "{variant}: states after reset"
+    );
     eprintln!(
         "{variant}: reset of {BATCH} envs identical on CPU and GPU in {:.1}s (pipeline compilation included)",
         started.elapsed().as_secs_f64()
@@ -67,7 +71,11 @@ fn parity(variant: Variant) {
         steps += 1;
         assert!(steps < 50_000, "{variant}: games do not end");
     }
-    assert_eq!(cpu.states_words(), gpu.states_words(), "{variant}: final states");
+    assert_eq!(
+        cpu.states_words().expect("cpu states"),
+        gpu.states_words().expect("gpu states"),
+        "{variant}: final states"
+    );
     eprintln!(
         "{variant}: {BATCH} half games, {steps} batch steps, identical on CPU and GPU ({}) in {:.1}s",
         gpu.adapter().unwrap_or_default(),

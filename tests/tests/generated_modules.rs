@@ -20,9 +20,9 @@ fn every_variant_module_validates_with_naga() {
     for &v in Variant::ALL {
         let module = rinshan_shaders_gen::validate(wgsl(v)).unwrap_or_else(|e| panic!("{v}: {e}"));
         let entries: Vec<&str> = module.entry_points.iter().map(|e| e.name.as_str()).collect();
-        let expected: Vec<&str> = rinshan::entries::ENTRIES
+        let expected: Vec<&str> = rinshan_tests::entries::ENTRIES
             .iter()
-            .chain(rinshan::entries::UPDATE_ENTRIES.iter())
+            .chain(rinshan_tests::entries::UPDATE_ENTRIES.iter())
             .map(|e| e.0)
             .collect();
         assert_eq!(entries, expected, "{v}");
@@ -80,9 +80,9 @@ fn every_variant_lays_out_the_shared_records_alike_and_at_the_rust_size() {
         .iter()
         .map(|&v| rinshan_shaders_gen::validate(wgsl(v)).unwrap_or_else(|e| panic!("{v}: {e}")))
         .collect();
-    let mut records: Vec<&str> = rinshan::entries::ENTRIES
+    let mut records: Vec<&str> = rinshan_tests::entries::ENTRIES
         .iter()
-        .chain(rinshan::entries::UPDATE_ENTRIES.iter())
+        .chain(rinshan_tests::entries::UPDATE_ENTRIES.iter())
         .flat_map(|e| [e.2, e.3])
         .filter(|ty| !matches!(*ty, "u32" | "i32" | "f32"))
         .collect();

@@ -79,13 +79,16 @@ fn compile_with_kernel(
     ];
     sources.extend(kernel.into_iter().map(|(path, text)| Source { path, text }));
     // The same entry points as build.rs: the map entries, then the in-place update entries.
-    let entries = rinshan_shaders_gen::entry_points(&rinshan::entries::ENTRIES, &rinshan::entries::UPDATE_ENTRIES);
+    let entries = rinshan_shaders_gen::entry_points(
+        &rinshan_tests::entries::ENTRIES,
+        &rinshan_tests::entries::UPDATE_ENTRIES,
+    );
     rinshan_shaders_gen::translate_entry_points(&sources, &entries).unwrap_or_else(|e| panic!("{e}"))
 }
 
 fn win(hand: &str, win: &str, melds: &[&str], tsumo: bool) -> Win {
     let tiles = parse_tiles(hand).expect("hand");
-    let w = parse_tiles(win).expect("win").tiles[0].0;
+    let w = parse_tiles(win).expect("win").tiles[0].kind();
     let mut c = hand::WinContext {
         tsumo,
         seat_wind: 1,

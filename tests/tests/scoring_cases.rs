@@ -4,7 +4,7 @@ use std::collections::BTreeMap;
 
 use rinshan::hand::{score, Payment, Win, WinContext};
 use rinshan::notation::{parse_meld, parse_tile, parse_tiles, parse_wind};
-use rinshan::Variant;
+use rinshan::{TileType, Variant};
 use rinshan_tests::test_data;
 use serde::Deserialize;
 
@@ -73,7 +73,7 @@ pub fn load_cases() -> Vec<Case> {
 pub fn to_win(c: &Case) -> (Variant, Win) {
     let variant = Variant::from_name(c.variant.as_deref().unwrap_or("red")).expect("variant");
     let tiles = parse_tiles(&c.hand).unwrap_or_else(|e| panic!("{}: {e}", c.name));
-    let (win, _) = parse_tile(&c.win).unwrap_or_else(|e| panic!("{}: {e}", c.name));
+    let win = parse_tile(&c.win).unwrap_or_else(|e| panic!("{}: {e}", c.name)).kind();
     let melds: Vec<_> = c
         .melds
         .iter()
@@ -81,9 +81,9 @@ pub fn to_win(c: &Case) -> (Variant, Win) {
         .collect();
     let aka = tiles.red() + melds.iter().map(|m| m.red).sum::<u8>();
     let wind = |w: &Option<String>, default: u8| w.as_deref().map_or(default, |s| parse_wind(s).expect("wind"));
-    let indicators = |v: &Vec<String>| -> Vec<u8> {
+    let indicators = |v: &Vec<String>| -> Vec<TileType> {
         v.iter()
-            .flat_map(|s| parse_tiles(s).expect("indicator").tiles.into_iter().map(|t| t.0))
+            .flat_map(|s| parse_tiles(s).expect("indicator").tiles.into_iter().map(|t| t.kind()))
             .collect()
     };
     let seat_wind = wind(&c.seat_wind, if c.dealer { 0 } else { 1 });
@@ -132,7 +132,7 @@ fn every_case_scores_as_the_rules_say() {
                 continue;
             }
         };
-        let yaku: BTreeMap<String, u32> = s.yaku.iter().map(|y| (y.name.to_string(), y.han)).collect();
+        let yaku: BTreeMap<String, u32> = s.yaku.iter().map(|y| (y.name.to_string(), y.han.number())).collect();
         let (ron, dealer_pays, others_pay) = match s.payment {
             Payment::Ron { discarder } => (Some(discarder), None, None),
             Payment::Tsumo { dealer, others } => (None, dealer, Some(others)),

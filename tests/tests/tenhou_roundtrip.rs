@@ -12,12 +12,13 @@ use std::collections::BTreeMap;
 use rinshan::env::{Backend, Config, Env, Mode};
 use rinshan::generated::kernel::GameState;
 use rinshan::generated::red as k;
+use rinshan::hand::YakuHan;
 use rinshan::random::Rng;
-use rinshan::tenhou::log::{collect_files, parse_game, read_game, Discard, Draw, Game, Outcome, Round, YakuHan};
+use rinshan::tenhou::log::{collect_files, parse_game, read_game, Discard, Draw, Game, Outcome, Round};
 use rinshan::tenhou::plan::plan;
 use rinshan::tenhou::replay::replay;
-use rinshan::tenhou::write::{game_text, round_value, GameRecorder, Recorder, WriteError};
-use rinshan::Variant;
+use rinshan::tenhou::write::{game_text, GameRecorder, Recorder, WriteError};
+use rinshan::{Tile, Variant};
 use rinshan_tests::policy::{legal, Policy};
 use rinshan_tests::scenario::{build_wall, load, Actions};
 use rinshan_tests::test_data;
@@ -32,7 +33,7 @@ fn env(mode: Mode, batch: usize, seed: u64, auto_reset: bool) -> Env {
 }
 
 fn states(env: &Env) -> Vec<GameState> {
-    let words = env.states_words();
+    let words = env.states_words().expect("states");
     bytemuck::cast_slice::<u32, GameState>(&words).to_vec()
 }
 
@@ -118,7 +119,7 @@ fn tally(games: &[Game]) -> BTreeMap<&'static str, usize> {
 fn play(mode: Mode, games: usize, seed: u64) -> Vec<Game> {
     let batch = 48;
     let mut env = env(mode, batch, seed, true);
-    env.reset();
+    env.reset().expect("reset");
     let mut recorder = Recorder::new(&env).expect("recorder");
     let mut policies: Vec<Policy> = (0..batch as u64).map(|i| Policy(Rng::new(seed * 1000 + i))).collect();
     let mut done = Vec::new();
@@ -200,7 +201,7 @@ fn prepared_rounds_round_trip() {
         blocks: k::host::ACTION_BLOCKS.to_vec(),
         red: true,
     };
-    let walls: Vec<[u8; 136]> = scenarios
+    let walls: Vec<[Tile; 136]> = scenarios
         .iter()
         .map(|sc| {
             assert!(
@@ -210,7 +211,7 @@ fn prepared_rounds_round_trip() {
             );
             build_wall(sc, true)
                 .unwrap_or_else(|e| panic!("{}: {e}", sc.name))
-                .map(|v| v as u8)
+                .map(|v| u8::try_from(v).ok().and_then(Tile::from_value).expect("a tile value"))
         })
         .collect();
     let dealers: Vec<u32> = scenarios.iter().map(|sc| sc.dealer).collect();
@@ -279,7 +280,7 @@ fn prepared_rounds_round_trip() {
 /// returns the recorded round.
 fn record_logged(r: &Round) -> Round {
     let p = plan(r).unwrap_or_else(|e| panic!("{r}: {e}"));
-    let wall = p.wall.map(u32::from);
+    let wall = p.wall.map(|t| u32::from(t.value()));
     let dealer = r.dealer() as u32;
     let mut s = k::game_new(rinshan::generated::kernel::ResetInput {
         seed: [1, 2],
@@ -344,13 +345,19 @@ fn logged_rounds_are_recorded_as_tenhou_wrote_them() {
                     ws.iter_mut().for_each(|w| w.yaku.sort_by_key(|y| y.name));
                 }
             }
+            let text = |round: &Round| {
+                game_text(&Game {
+                    rounds: vec![round.clone()],
+                    ..game.clone()
+                })
+            };
             assert_eq!(
                 ours,
                 theirs,
                 "{}: {r}:\n ours {}\n log  {}",
                 f.display(),
-                round_value(&ours),
-                round_value(&theirs)
+                text(&ours),
+                text(&theirs)
             );
             rounds += 1;
         }
@@ -361,18 +368,18 @@ fn logged_rounds_are_recorded_as_tenhou_wrote_them() {
 #[test]
 fn the_recorder_says_what_it_cannot_follow() {
     let mut no_red = Env::new(Config::new(Variant::NoRed, 2)).expect("a cpu env");
-    no_red.reset();
+    no_red.reset().expect("reset");
     assert!(matches!(
         Recorder::new(&no_red),
         Err(WriteError::Variant(Variant::NoRed))
     ));
     let mut single = env(Mode::Single, 2, 1, false);
-    single.reset();
+    single.reset().expect("reset");
     let err = Recorder::new(&single).err().map(|e| e.to_string()).unwrap_or_default();
     assert!(err.contains("one-hand"), "{err}");
 
     let mut env = env(Mode::Half, 2, 1, false);
-    env.reset();
+    env.reset().expect("reset");
     let mut recorder = Recorder::new(&env).expect("recorder");
     assert!(matches!(
         recorder.observe(&env, &[0]),

@@ -77,7 +77,7 @@ fn env_point(config: Config, seconds: f64) -> Result<(f64, f64), CliError> {
     let mut env = Env::new(config).map_err(CliError::failure)?;
     let mut rngs: Vec<Rng> = (0..b).map(|i| policy_rng(seed, i)).collect();
     let mut actions = vec![0u32; b];
-    let mut step = env.try_reset().map_err(CliError::failure)?;
+    let mut step = env.reset().map_err(CliError::failure)?;
     let mut warm = 0;
     let mut env_time = 0.0;
     let mut steps = 0u64;

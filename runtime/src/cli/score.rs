@@ -1,6 +1,6 @@
 use rinshan::hand::{self, Payment, ScoreError, Win, WinContext};
-use rinshan::notation::{parse_meld, parse_tile, parse_tiles, parse_wind, Tile};
-use rinshan::Variant;
+use rinshan::notation::{parse_meld, parse_tile, parse_tiles, parse_wind};
+use rinshan::{TileType, Variant};
 
 use super::args::VariantArg;
 use super::CliError;
@@ -68,14 +68,14 @@ pub struct Args {
     json: bool,
 }
 
-fn indicators(src: &Option<String>) -> Result<Vec<Tile>, CliError> {
+fn indicators(src: &Option<String>) -> Result<Vec<TileType>, CliError> {
     match src {
         None => Ok(Vec::new()),
         Some(s) => Ok(parse_tiles(s)
             .map_err(CliError::input)?
             .tiles
             .iter()
-            .map(|t| t.0)
+            .map(|t| t.kind())
             .collect()),
     }
 }
@@ -83,7 +83,8 @@ fn indicators(src: &Option<String>) -> Result<Vec<Tile>, CliError> {
 fn build_win(args: &Args) -> Result<(Variant, Win), CliError> {
     let variant = args.variant.variant;
     let tiles = parse_tiles(&args.hand).map_err(CliError::input)?;
-    let (win_tile, win_red) = parse_tile(&args.win).map_err(CliError::input)?;
+    let win_tile = parse_tile(&args.win).map_err(CliError::input)?;
+    let win = win_tile.kind();
     let melds = args
         .melds
         .iter()
@@ -93,14 +94,14 @@ fn build_win(args: &Args) -> Result<(Variant, Win), CliError> {
     let mut red = tiles.red() + melds.iter().map(|m| m.red).sum::<u8>();
     let concealed = tiles.tiles.len();
     if concealed + 3 * melds.len() == 13 {
-        hand[win_tile as usize] += 1;
-        red += u8::from(win_red);
+        hand[win.index()] += 1;
+        red += u8::from(win_tile.is_red());
     } else if concealed + 3 * melds.len() != 14 {
         return Err(CliError::input(format!(
             "{concealed} concealed tiles with {} meld(s): give 13 - 3 x melds tiles (the winning tile then comes from --win) or 14 - 3 x melds including it",
             melds.len()
         )));
-    } else if hand[win_tile as usize] == 0 {
+    } else if hand[win.index()] == 0 {
         return Err(CliError::input(format!(
             "the hand has 14 tiles but not the winning tile {}",
             args.win
@@ -141,7 +142,7 @@ fn build_win(args: &Args) -> Result<(Variant, Win), CliError> {
         variant,
         Win {
             hand,
-            win: win_tile,
+            win,
             melds,
             aka: red,
             context,
@@ -190,7 +191,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
         let yaku: Vec<_> = score
             .yaku
             .iter()
-            .map(|y| serde_json::json!({"name": y.name, "han": y.han}))
+            .map(|y| serde_json::json!({"name": y.name, "han": y.han.number()}))
             .collect();
         let points = match score.payment {
             Payment::Ron { discarder } => serde_json::json!({ "ron": discarder, "total": score.gain }),
@@ -213,7 +214,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
     }
     for y in &score.yaku {
         let unit = if score.yakuman > 0 { "yakuman" } else { "han" };
-        println!("  {:<20} {} {unit}", y.name, y.han);
+        println!("  {:<20} {} {unit}", y.name, y.han.number());
     }
     let value = if score.yakuman > 0 {
         format!("{} x yakuman", score.yakuman)

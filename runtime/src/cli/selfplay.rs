@@ -135,7 +135,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
         bar
     };
     let started = Instant::now();
-    env.try_reset().map_err(CliError::failure)?;
+    env.reset().map_err(CliError::failure)?;
     let mut recorder = match args.export {
         Some(_) => Some(Recorder::new(&env).map_err(CliError::failure)?),
         None => None,

@@ -1,5 +1,6 @@
 use rinshan::hand;
 use rinshan::notation::parse_tiles;
+use rinshan::TileType;
 
 use super::CliError;
 
@@ -15,12 +16,8 @@ pub struct Args {
 pub fn run(args: Args) -> Result<(), CliError> {
     let tiles = parse_tiles(&args.hand).map_err(CliError::input)?;
     let counts = tiles.counts();
-    if let Some(t) = counts.iter().position(|&n| n > 4) {
-        return Err(CliError::input(format!(
-            "{} copies of {}: there are only 4",
-            counts[t],
-            rinshan::notation::tile_name(t as u8)
-        )));
+    if let Some((t, n)) = TileType::all().zip(counts).find(|&(_, n)| n > 4) {
+        return Err(CliError::input(format!("{n} copies of {t}: there are only 4")));
     }
     let n = tiles.tiles.len();
     if n > 14 || n % 3 == 0 {

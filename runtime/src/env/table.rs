@@ -4,6 +4,7 @@
 
 use super::{check_wall, CpuEnv, Env, EnvError};
 use crate::generated::kernel;
+use crate::tile::Tile;
 use crate::Variant;
 
 /// The table of one game, read from its state.
@@ -11,10 +12,13 @@ use crate::Variant;
 pub struct Table {
     /// 0 = East 1, 4 = South 1, 8 = West 1.
     pub round: u32,
+    /// The dealer's seat.
     pub dealer: u32,
+    /// Repeat counters.
     pub honba: u32,
     /// Riichi sticks on the table.
     pub sticks: u32,
+    /// Each seat's points.
     pub scores: [i32; 4],
     /// Rounds finished in this game.
     pub rounds: u32,
@@ -35,13 +39,17 @@ pub struct WinRecord {
     pub yaku: [u32; 2],
     /// Han of yaku and dora (0 for a yakuman hand).
     pub han: u32,
+    /// Fu of the hand.
     pub fu: u32,
     /// Yakuman weight (0 = none, 2 = double ...).
     pub yakuman: u32,
     /// No meld was called (closed kans allowed): each yaku counts its closed han.
     pub concealed: bool,
+    /// Han from dora.
     pub dora: u32,
+    /// Han from red fives.
     pub aka: u32,
+    /// Han from ura-dora.
     pub ura: u32,
 }
 
@@ -77,9 +85,13 @@ pub enum DrawKind {
     Nagashi,
     /// Nine terminals and honors declared (kyuushu kyuuhai).
     Kyuushu,
+    /// All four seats declared riichi.
     FourRiichi,
+    /// Three seats called ron on one discard.
     TripleRon,
+    /// Four kans by more than one seat.
     FourKans,
+    /// All four first discards were the same wind.
     FourWinds,
 }
 
@@ -121,12 +133,16 @@ impl DrawRecord {
 pub struct Deal {
     /// 0 = East 1, 4 = South 1, 8 = West 1.
     pub round: u32,
+    /// The dealer's seat.
     pub dealer: u32,
+    /// Repeat counters.
     pub honba: u32,
+    /// Riichi sticks on the table.
     pub sticks: u32,
+    /// Each seat's points.
     pub scores: [i32; 4],
-    /// Tile values in dealing order, as for [`Env::reset_with_walls`].
-    pub wall: [u8; 136],
+    /// The tiles in dealing order, as for [`Env::reset_with_walls`].
+    pub wall: [Tile; 136],
 }
 
 impl CpuEnv {
@@ -174,7 +190,7 @@ impl Env {
                         honba: d.honba,
                         sticks: d.sticks,
                         scores: d.scores,
-                        wall: d.wall.map(u32::from),
+                        wall: d.wall.map(|t| u32::from(t.value())),
                     };
                 }
             }
@@ -194,7 +210,7 @@ impl Env {
 
     /// The table of every env (read back from the device on the GPU backend).
     pub fn tables(&self) -> Result<Vec<Table>, EnvError> {
-        let words = self.try_states_words()?;
+        let words = self.states_words()?;
         let states: &[kernel::GameState] = bytemuck::cast_slice(&words);
         Ok(states
             .iter()

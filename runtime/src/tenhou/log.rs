@@ -10,7 +10,7 @@
 //!   draws (tiles and calls), `[6+3s]` discards (tiles and kans);
 //! * `[16]` the result (see [`Outcome`]).
 //!
-//! Tiles are two-digit codes (see [`Tile`]). Calls and kans are strings of tile codes with one
+//! Tiles are two-digit codes (see [`Tile::from_tenhou_code`]). Calls and kans are strings of tile codes with one
 //! letter. In open calls the letter stands before the called tile, at the place the meld is
 //! drawn with that tile turned, so its position says who the tile came from (see [`Rel`]):
 //!
@@ -39,9 +39,11 @@ mod result;
 #[cfg(test)]
 mod tests;
 
-pub use moves::{Discard, Draw, Rel, Tile};
-pub use result::{tenhou_yaku, yaku_name, DrawKind, Limit, Outcome, Win, Yaku, YakuHan};
+pub use moves::{Discard, Draw, Rel};
+pub(crate) use result::tenhou_yaku;
+pub use result::{Limit, LoggedDraw, LoggedWin, Outcome};
 
+use crate::tile::Tile;
 use moves::{parse_discard, parse_draw, tile};
 
 /// One round (kyoku) of a log.
@@ -51,6 +53,7 @@ pub struct Round {
     pub line: usize,
     /// 0 = East 1, 4 = South 1, 8 = West 1.
     pub kyoku: u32,
+    /// Repeat counters at the start.
     pub honba: u32,
     /// Riichi sticks on the table at the start.
     pub sticks: u32,
@@ -62,8 +65,11 @@ pub struct Round {
     pub ura: Vec<Tile>,
     /// Starting hands, 13 tiles each.
     pub hands: [Vec<Tile>; 4],
+    /// Each seat's draws and calls, in order.
     pub draws: [Vec<Draw>; 4],
+    /// Each seat's discards, kans and riichi declarations, in order.
     pub discards: [Vec<Discard>; 4],
+    /// How the round ended.
     pub outcome: Outcome,
 }
 
@@ -81,7 +87,7 @@ impl fmt::Display for Round {
 }
 
 /// `"East 1, 0 honba"`, `"South 3, 2 honba"`, `"West 1, 0 honba"`.
-pub fn round_name(kyoku: u32, honba: u32) -> String {
+pub(crate) fn round_name(kyoku: u32, honba: u32) -> String {
     match ["East", "South", "West", "North"].get((kyoku / 4) as usize) {
         Some(wind) => format!("{wind} {}, {honba} honba", kyoku % 4 + 1),
         None => format!("kyoku {kyoku}, {honba} honba"),
@@ -99,13 +105,16 @@ pub struct Game {
     pub red_fives: bool,
     /// The players' names by seat, empty when the log has none.
     pub names: [String; 4],
+    /// Every round, in file order.
     pub rounds: Vec<Round>,
 }
 
 /// Why a log could not be read. Lines count from 1; seats (absolute) and list entries from 0.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct LogError {
+    /// The file as named to the reader.
     pub file: String,
+    /// The line of the record.
     pub line: Option<usize>,
     /// Column inside the line, for a line that is not JSON. (u32 keeps the error small enough to
     /// pass around by value.)
@@ -114,6 +123,7 @@ pub struct LogError {
     pub round: Option<String>,
     /// The part of the record, e.g. `result`, `hand of seat 1`, `discards of seat 3, entry 7`.
     pub field: Option<String>,
+    /// What is wrong.
     pub message: String,
 }
 

@@ -13,9 +13,10 @@
 //! decision (each such call, or none); the walk takes the first choice of each, and when the rest
 //! of the log then cannot be placed, the decisions are searched depth first until it can.
 
-use super::log::{Discard, Draw, DrawKind, Outcome, Round, Tile};
+use super::log::{Discard, Draw, LoggedDraw, Outcome, Round};
 use crate::generated::kernel;
 use crate::generated::red as k;
+use crate::tile::Tile;
 
 mod wall;
 
@@ -24,6 +25,7 @@ use wall::build_wall;
 /// One decision of the logged game.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Move {
+    /// The seat deciding.
     pub seat: usize,
     /// Action id of the red variant.
     pub action: u32,
@@ -36,8 +38,9 @@ pub struct Move {
 /// A round ready to replay.
 #[derive(Debug, Clone)]
 pub struct Plan {
-    /// Tile values in the engine's dealing order (`WALL_*` in rules/kernel/game_state.rs).
-    pub wall: [u8; 136],
+    /// The tiles in the engine's dealing order (`WALL_*` in rules/kernel/game_state.rs).
+    pub wall: [Tile; 136],
+    /// The logged decisions in the order of play.
     pub moves: Vec<Move>,
     /// Riichi sticks each seat put on the table (declarations whose discard was not ronned).
     pub riichi_paid: [u32; 4],
@@ -49,11 +52,6 @@ pub(super) const LIVE_END: usize = kernel::WALL_LIVE_END as usize;
 pub(super) const DORA: usize = kernel::WALL_DORA as usize;
 pub(super) const URA: usize = kernel::WALL_URA as usize;
 pub(super) const RINSHAN: usize = kernel::WALL_RINSHAN as usize;
-
-/// A tile as players write it (`5m`, `0m` for the red five, `7z`), for messages.
-pub fn tile_name(t: Tile) -> String {
-    crate::notation::value_name(t.value())
-}
 
 /// Walks tried per round before giving up (a wrong call decision is usually caught within a
 /// few turns, so the search stays small).
@@ -119,7 +117,7 @@ impl<'a> Walker<'a> {
                 seats
             }
             Outcome::Draw {
-                kind: DrawKind::TripleRon,
+                kind: LoggedDraw::TripleRon,
                 ..
             } => (1..4).map(|j| (p + j) % 4).collect(),
             Outcome::Draw { .. } => Vec::new(),
@@ -138,11 +136,11 @@ impl<'a> Walker<'a> {
             };
             match d {
                 Draw::Pon { called, from, .. } | Draw::OpenKan { called, from, .. }
-                    if from.seat_of(q) == p && called.code() == t.code() =>
+                    if from.seat_of(q) == p && *called == t =>
                 {
                     callers.push((q, *d));
                 }
-                Draw::Chi { called, .. } if j == 1 && called.code() == t.code() => chi = Some((q, *d)),
+                Draw::Chi { called, .. } if j == 1 && *called == t => chi = Some((q, *d)),
                 _ => {}
             }
         }
@@ -183,12 +181,12 @@ impl<'a> Walker<'a> {
                         p,
                         k::ACTION_SELF_KAN + u32::from(added.kind()),
                         false,
-                        format!("{kind} kan {}", tile_name(added)),
+                        format!("{kind} kan {}", added.name()),
                     );
                     let rons = self.rons_on(p);
                     if !rons.is_empty() {
                         for q in rons {
-                            self.push(q, k::ACTION_RON, true, format!("ron (chankan) on {}", tile_name(added)));
+                            self.push(q, k::ACTION_RON, true, format!("ron (chankan) on {}", added.name()));
                         }
                         return Ok(None);
                     }
@@ -206,7 +204,7 @@ impl<'a> Walker<'a> {
                         p,
                         k::ACTION_DISCARD + u32::from(t.value()),
                         false,
-                        format!("discard {}", tile_name(t)),
+                        format!("discard {}", t.name()),
                     );
                     t
                 }
@@ -225,7 +223,7 @@ impl<'a> Walker<'a> {
             let rons = self.rons_on(p);
             if !rons.is_empty() {
                 for q in rons {
-                    self.push(q, k::ACTION_RON, true, format!("ron on {}", tile_name(discarded)));
+                    self.push(q, k::ACTION_RON, true, format!("ron on {}", discarded.name()));
                 }
                 return Ok(None);
             }
@@ -233,7 +231,7 @@ impl<'a> Walker<'a> {
                 return Ok(Some(((p + 1) % 4, false)));
             };
             self.drawn[q] += 1;
-            let name = tile_name(discarded);
+            let name = discarded.name();
             match call {
                 Draw::Chi { called, own } => {
                     let (a, b) = (own[0].kind(), own[1].kind());
@@ -291,7 +289,7 @@ impl<'a> Walker<'a> {
                 Ok(())
             }
             Outcome::Draw {
-                kind: DrawKind::Kyuushu,
+                kind: LoggedDraw::Kyuushu,
                 ..
             } => {
                 self.push(p, k::ACTION_KYUUSHU, false, "kyuushu kyuuhai".into());

@@ -11,7 +11,7 @@ mod compare;
 use serde::Serialize;
 
 use super::log::{Game, Round};
-use super::plan::{plan, Move, Plan};
+use super::plan::{plan, Plan};
 use crate::env::{events, Backend, Config, Deal, Env, EnvError, Mode, Step};
 use crate::generated::red as k;
 use crate::gpu::Gpu;
@@ -21,6 +21,7 @@ use compare::{finish_round, outcome_name};
 /// One disagreement between a log and rinshan.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize)]
 pub struct Mismatch {
+    /// The log file.
     pub file: String,
     /// 1-based line of the round in the file.
     pub line: usize,
@@ -28,8 +29,11 @@ pub struct Mismatch {
     pub round: String,
     /// Engine steps into the round when it was found.
     pub step: usize,
+    /// What was compared, e.g. `score changes`.
     pub what: String,
+    /// What the log says.
     pub log: String,
+    /// What rinshan did.
     pub rinshan: String,
 }
 
@@ -46,24 +50,33 @@ impl std::fmt::Display for Mismatch {
 /// Totals of a replay.
 #[derive(Debug, Clone, Default, PartialEq, Eq, Serialize)]
 pub struct Report {
+    /// Games replayed.
     pub games: usize,
     /// Games that ended exactly where their log ends.
     pub games_ended_right: usize,
+    /// Logged rounds.
     pub rounds: usize,
     /// Rounds whose every logged decision was legal and taken, ending where the log ends.
     pub rounds_replayed: usize,
+    /// Logged decisions of the rounds that could be planned.
     pub actions: usize,
+    /// Logged decisions the engine took.
     pub actions_accepted: usize,
     /// Rounds whose score change of every seat matches the log.
     pub score_changes_matching: usize,
     /// Rounds whose next table (round, dealer, honba, sticks, scores) matches the next logged round.
     pub tables_matching: usize,
+    /// Rounds followed by another logged round.
     pub tables: usize,
+    /// Logged wins.
     pub wins: usize,
     /// Wins whose winner, han, fu and yaku (with their han) match.
     pub wins_matching: usize,
+    /// Logged rounds without a win.
     pub draws: usize,
+    /// Drawn rounds that rinshan drew the same way.
     pub draws_matching: usize,
+    /// Every disagreement, in the order found.
     pub mismatches: Vec<Mismatch>,
 }
 
@@ -247,7 +260,7 @@ fn replay_in(
         auto_reset: false,
         threads: Some(1),
     })?;
-    env.try_reset()?;
+    env.reset()?;
     let mut runs: Vec<Run> = games
         .iter()
         .map(|game| Run {
@@ -326,13 +339,4 @@ fn replay_in(
         }
     }
     Ok(report)
-}
-
-/// A move list as text, for debugging a plan.
-pub fn describe(moves: &[Move]) -> String {
-    moves
-        .iter()
-        .map(|m| format!("{}:{}", m.seat, m.what))
-        .collect::<Vec<_>>()
-        .join(" | ")
 }

@@ -12,7 +12,7 @@
 //! use rinshan::env::{Config, Env};
 //! use rinshan::tenhou::write::{game_text, Recorder};
 //! let mut env = Env::new(Config::new(rinshan::Variant::Red, 8)).unwrap();
-//! env.reset();
+//! env.reset().unwrap();
 //! let mut recorder = Recorder::new(&env).unwrap();
 //! # let actions = vec![0u32; 8];
 //! env.step(&actions).unwrap();
@@ -42,8 +42,8 @@ use crate::Variant;
 use super::log::Game;
 
 pub use game::GameRecorder;
-pub use json::{discard_value, draw_value, game_text, round_line, round_value, yaku_text};
-pub use outcome::{base_points, limit_of, payment, points_text, win_deltas, win_yaku, Payment};
+pub use json::game_text;
+pub(crate) use outcome::win_yaku;
 
 /// Why a game could not be recorded.
 #[derive(Debug, Clone, PartialEq)]
@@ -53,10 +53,20 @@ pub enum WriteError {
     /// Reading the env's states failed (the GPU backend).
     Env(EnvError),
     /// `observe` got a different number of actions than the env has games.
-    WrongLength { expected: usize, got: usize },
+    WrongLength {
+        /// The batch size.
+        expected: usize,
+        /// The actions given.
+        got: usize,
+    },
     /// A game's state cannot be followed (the recorder was made after the game's first step, or
     /// the env was reset or stepped without it), or contradicts what was recorded.
-    State { env: usize, message: String },
+    State {
+        /// The env whose game it is.
+        env: usize,
+        /// What does not fit.
+        message: String,
+    },
 }
 
 impl fmt::Display for WriteError {
@@ -86,7 +96,9 @@ impl From<EnvError> for WriteError {
 /// A finished game and the env that played it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Finished {
+    /// The env that played it.
     pub env: usize,
+    /// The game's log.
     pub game: Game,
 }
 
@@ -99,7 +111,7 @@ pub struct Recorder {
 }
 
 fn states(env: &Env) -> Result<Vec<GameState>, WriteError> {
-    let words = env.try_states_words()?;
+    let words = env.states_words()?;
     Ok(bytemuck::cast_slice::<u32, GameState>(&words).to_vec())
 }
 

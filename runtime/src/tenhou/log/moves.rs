@@ -1,65 +1,10 @@
 //! Tiles, draws and discards: the entries of a round's hands, draw lists and discard lists, and
 //! the call and kan strings among them.
 
-use std::fmt;
-
 use serde_json::Value;
 
 use super::show;
-
-/// A tile as Tenhou writes it: 11-19 man 1-9, 21-29 pin, 31-39 sou, 41-47 E S W N white green red,
-/// 51/52/53 red 5m/5p/5s. Only valid codes can be built (see [`Tile::new`]).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub struct Tile(u8);
-
-impl Tile {
-    /// The tile of a Tenhou code, `None` for anything else (60, 0 and 10 are not tiles).
-    pub fn new(code: u8) -> Option<Tile> {
-        matches!(code, 11..=19 | 21..=29 | 31..=39 | 41..=47 | 51..=53).then_some(Tile(code))
-    }
-
-    /// The tile of our value (see [`Tile::value`]), `None` past 36.
-    pub fn from_value(value: u8) -> Option<Tile> {
-        match value {
-            0..=33 => Tile::new((value / 9 + 1) * 10 + value % 9 + 1),
-            34..=36 => Tile::new(value - 34 + 51),
-            _ => None,
-        }
-    }
-
-    /// The Tenhou code.
-    pub fn code(self) -> u8 {
-        self.0
-    }
-
-    /// Our tile value: the type 0..33 (0-8 man, 9-17 pin, 18-26 sou, 27-30 E S W N, 31-33 white
-    /// green red), or 34/35/36 for a red 5m/5p/5s.
-    pub fn value(self) -> u8 {
-        match self.0 {
-            51..=53 => self.0 - 51 + 34,
-            code => (code / 10 - 1) * 9 + code % 10 - 1,
-        }
-    }
-
-    /// The tile type 0..33, a red five counting as a five.
-    pub fn kind(self) -> u8 {
-        match self.0 {
-            51..=53 => (self.0 - 51) * 9 + 4,
-            _ => self.value(),
-        }
-    }
-
-    /// Whether it is a red five.
-    pub fn is_red(self) -> bool {
-        self.0 >= 51
-    }
-}
-
-impl fmt::Display for Tile {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}", self.0)
-    }
-}
+use crate::tile::Tile;
 
 /// Where a called tile came from, relative to the caller.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -87,21 +32,31 @@ impl Rel {
 /// of another seat's discard.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Draw {
+    /// A tile drawn from the wall.
     Tile(Tile),
-    /// Always from the left; `own` in written order.
+    /// Always from the left.
     Chi {
+        /// The discard taken.
         called: Tile,
+        /// The caller's two tiles, in written order.
         own: [Tile; 2],
     },
+    /// A triplet on another seat's discard.
     Pon {
+        /// The discard taken.
         called: Tile,
+        /// The caller's two tiles, in written order.
         own: [Tile; 2],
+        /// Who discarded it.
         from: Rel,
     },
     /// Daiminkan; its discard entry is [`Discard::Nothing`] and the next draw is the replacement.
     OpenKan {
+        /// The discard taken.
         called: Tile,
+        /// The caller's three tiles, in written order.
         own: [Tile; 3],
+        /// Who discarded it.
         from: Rel,
     },
 }
@@ -126,11 +81,20 @@ pub enum Discard {
     Tsumogiri,
     /// Riichi declared with this discard; `None` when it is the tile just drawn (`r60`).
     Riichi(Option<Tile>),
-    /// Kakan: `added` joins the pon of `pon` (`pon[0]` is the tile called from `from`); no
-    /// discard follows, the next draw is the replacement.
-    AddedKan { added: Tile, pon: [Tile; 3], from: Rel },
-    /// Ankan, tiles in written order; the next draw is the replacement.
-    ClosedKan { tiles: [Tile; 4] },
+    /// Kakan: a tile joins an earlier pon; no discard follows, the next draw is the replacement.
+    AddedKan {
+        /// The tile added.
+        added: Tile,
+        /// The pon's tiles, the called one first.
+        pon: [Tile; 3],
+        /// Who the pon's tile was called from.
+        from: Rel,
+    },
+    /// Ankan; the next draw is the replacement.
+    ClosedKan {
+        /// The four tiles in written order.
+        tiles: [Tile; 4],
+    },
     /// The `0` that stands for the missing discard after an open kan.
     Nothing,
 }
@@ -148,7 +112,10 @@ impl Discard {
 }
 
 pub(super) fn tile(v: &Value) -> Result<Tile, String> {
-    let tile = v.as_u64().and_then(|c| u8::try_from(c).ok()).and_then(Tile::new);
+    let tile = v
+        .as_u64()
+        .and_then(|c| u8::try_from(c).ok())
+        .and_then(Tile::from_tenhou_code);
     tile.ok_or_else(|| format!("{} is not a tile (11-19, 21-29, 31-39, 41-47 or 51-53)", show(v)))
 }
 
@@ -252,7 +219,7 @@ fn codes(digits: &str) -> Result<Vec<Tile>, String> {
         .map(|pair| match *pair {
             [a, b] => {
                 let code = (a - b'0') * 10 + (b - b'0');
-                Tile::new(code).ok_or_else(|| format!("{code} is not a tile"))
+                Tile::from_tenhou_code(code).ok_or_else(|| format!("{code} is not a tile"))
             }
             _ => Err(format!("{digits:?} is not a run of two-digit tiles")),
         })
@@ -262,7 +229,7 @@ fn codes(digits: &str) -> Result<Vec<Tile>, String> {
 fn same_kind(tiles: &[Tile]) -> Result<(), String> {
     match tiles.split_first() {
         Some((first, rest)) if rest.iter().any(|t| t.kind() != first.kind()) => {
-            let list: Vec<String> = tiles.iter().map(Tile::to_string).collect();
+            let list: Vec<String> = tiles.iter().map(|t| t.tenhou_code().to_string()).collect();
             Err(format!("tiles {} are not all the same", list.join(" ")))
         }
         _ => Ok(()),
@@ -281,8 +248,9 @@ fn parse_call(s: &str) -> Result<Draw, String> {
             let mut kinds = [called.kind(), own[0].kind(), own[1].kind()];
             kinds.sort_unstable();
             let [a, b, c] = kinds;
-            if a >= 27 || a / 9 != c / 9 || b != a + 1 || c != a + 2 {
-                return Err(format!("tiles {called} {} {} are not a run", own[0], own[1]));
+            if a.up(1) != Some(b) || a.up(2) != Some(c) {
+                let [x, y, z] = [called, own[0], own[1]].map(Tile::tenhou_code);
+                return Err(format!("tiles {x} {y} {z} are not a run"));
             }
             Ok(Draw::Chi { called, own })
         }
@@ -314,7 +282,7 @@ fn parse_kan_or_riichi(s: &str) -> Result<Discard, String> {
             .ok()
             .filter(|_| rest.len() == 2 && rest.bytes().all(|b| b.is_ascii_digit()));
         let tile = code
-            .and_then(Tile::new)
+            .and_then(Tile::from_tenhou_code)
             .ok_or_else(|| format!("{rest:?} after 'r' is not a tile or 60"))?;
         return Ok(Discard::Riichi(Some(tile)));
     }

@@ -5,11 +5,13 @@
 use serde_json::Value;
 
 use super::{numbers, show};
+use crate::hand::{Yaku, YakuHan};
 
-/// How a round ended without a win.
+/// How a round ended without a win, as Tenhou names it. Unlike the engine's
+/// [`crate::env::DrawKind`], an exhaustive draw has three names here, by how many seats were tenpai.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum DrawKind {
-    /// 流局: the wall ran out.
+pub enum LoggedDraw {
+    /// 流局: the wall ran out with one to three seats tenpai.
     Exhaustive,
     /// 全員聴牌
     AllTenpai,
@@ -29,19 +31,19 @@ pub enum DrawKind {
     FourWinds,
 }
 
-const DRAW_KINDS: [(&str, DrawKind); 9] = [
-    ("流局", DrawKind::Exhaustive),
-    ("全員聴牌", DrawKind::AllTenpai),
-    ("全員不聴", DrawKind::NoTenpai),
-    ("流し満貫", DrawKind::Nagashi),
-    ("九種九牌", DrawKind::Kyuushu),
-    ("四家立直", DrawKind::FourRiichi),
-    ("三家和了", DrawKind::TripleRon),
-    ("四槓散了", DrawKind::FourKans),
-    ("四風連打", DrawKind::FourWinds),
+const DRAW_KINDS: [(&str, LoggedDraw); 9] = [
+    ("流局", LoggedDraw::Exhaustive),
+    ("全員聴牌", LoggedDraw::AllTenpai),
+    ("全員不聴", LoggedDraw::NoTenpai),
+    ("流し満貫", LoggedDraw::Nagashi),
+    ("九種九牌", LoggedDraw::Kyuushu),
+    ("四家立直", LoggedDraw::FourRiichi),
+    ("三家和了", LoggedDraw::TripleRon),
+    ("四槓散了", LoggedDraw::FourKans),
+    ("四風連打", LoggedDraw::FourWinds),
 ];
 
-impl DrawKind {
+impl LoggedDraw {
     /// The name Tenhou writes, e.g. `流局`.
     pub fn tenhou_name(self) -> &'static str {
         DRAW_KINDS
@@ -54,10 +56,15 @@ impl DrawKind {
 /// A limit hand named in the points text.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Limit {
+    /// 満貫: base 2000.
     Mangan,
+    /// 跳満: base 3000.
     Haneman,
+    /// 倍満: base 4000.
     Baiman,
+    /// 三倍満: base 6000.
     Sanbaiman,
+    /// 役満: base 8000 (and its multiples).
     Yakuman,
 }
 
@@ -82,38 +89,28 @@ impl Limit {
     }
 }
 
-/// What a yaku is worth: han, or a number of yakuman.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum YakuHan {
-    Han(u32),
-    Yakuman(u32),
-}
-
-/// One yaku of a win, dora included.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub struct Yaku {
-    /// Our name (as in `rules/yaku.toml`), or `dora`, `aka`, `ura`.
-    pub name: &'static str,
-    pub han: YakuHan,
-}
-
-/// One winner's share of a result.
+/// One winner's share of a logged result.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Win {
+pub struct LoggedWin {
     /// Score changes by seat, sticks and honba included.
     pub deltas: [i32; 4],
+    /// The winner's seat.
     pub winner: usize,
     /// The seat that dealt in, or the winner for a tsumo.
     pub from: usize,
     /// The seat liable for a yakuman (pao), or the winner when nobody is.
     pub pao: usize,
+    /// Won on one's own draw.
     pub tsumo: bool,
-    /// From the points text when it gives fu and han (not for limit hands).
+    /// Fu, from the points text when it gives fu and han (not for limit hands).
     pub fu: Option<u32>,
+    /// Han, from the points text as `fu`.
     pub han: Option<u32>,
+    /// The limit the points text names instead of fu and han.
     pub limit: Option<Limit>,
     /// The points text as written, e.g. `30符4飜7700点`, `満貫2000-4000点`, `40符3飜2600点∀`.
     pub points: String,
+    /// The yaku in the log's order, dora last, by our names.
     pub yaku: Vec<Yaku>,
 }
 
@@ -121,10 +118,15 @@ pub struct Win {
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum Outcome {
     /// One win, or more on a multiple ron, in the log's order.
-    Wins(Vec<Win>),
-    /// `deltas` are the tenpai payments (or nagashi mangan), summed when the log lists several;
-    /// `None` when the log gives none.
-    Draw { kind: DrawKind, deltas: Option<[i32; 4]> },
+    Wins(Vec<LoggedWin>),
+    /// A round without a win.
+    Draw {
+        /// Tenhou's name for it.
+        kind: LoggedDraw,
+        /// The tenpai payments (or nagashi mangan), summed when the log lists several; `None`
+        /// when the log gives none.
+        deltas: Option<[i32; 4]>,
+    },
 }
 
 /// Tenhou's yaku names and ours, in the order Tenhou lists a win's yaku (read off the shared
@@ -196,13 +198,13 @@ const YAKU: [(&str, &str); 56] = [
 const WINDS: [char; 4] = ['東', '南', '西', '北'];
 
 /// Our name for a yaku Tenhou writes as `tenhou`.
-pub fn yaku_name(tenhou: &str) -> Option<&'static str> {
+fn yaku_name(tenhou: &str) -> Option<&'static str> {
     YAKU.iter().find(|(name, _)| *name == tenhou).map(|(_, ours)| *ours)
 }
 
 /// The name Tenhou writes for our yaku `ours` and where Tenhou lists it among a win's yaku. The
 /// yakuhai of winds need the seat's and the round's wind (0 = East .. 3 = North).
-pub fn tenhou_yaku(ours: &str, seat_wind: usize, round_wind: usize) -> Option<(&'static str, usize)> {
+pub(crate) fn tenhou_yaku(ours: &str, seat_wind: usize, round_wind: usize) -> Option<(&'static str, usize)> {
     let wind = match ours {
         "yakuhai_seat_wind" => WINDS.get(seat_wind),
         "yakuhai_round_wind" => WINDS.get(round_wind),
@@ -231,7 +233,7 @@ pub(super) fn parse_result(v: &Value) -> Result<Outcome, String> {
             [deltas, info] => parse_win(deltas, info).map_err(|m| format!("win {i}: {m}")),
             _ => Err(format!("win {i} has no info")),
         });
-        return wins.collect::<Result<Vec<Win>, String>>().map(Outcome::Wins);
+        return wins.collect::<Result<Vec<LoggedWin>, String>>().map(Outcome::Wins);
     }
     let known = DRAW_KINDS.iter().find(|(name, _)| *name == kind).map(|(_, k)| *k);
     let names: Vec<&str> = DRAW_KINDS.iter().map(|(name, _)| *name).collect();
@@ -245,7 +247,7 @@ pub(super) fn parse_result(v: &Value) -> Result<Outcome, String> {
     Ok(Outcome::Draw { kind, deltas })
 }
 
-fn parse_win(deltas: &Value, info: &Value) -> Result<Win, String> {
+fn parse_win(deltas: &Value, info: &Value) -> Result<LoggedWin, String> {
     let deltas = numbers::<4>(deltas).map_err(|m| format!("deltas: {m}"))?;
     let items = info
         .as_array()
@@ -278,7 +280,7 @@ fn parse_win(deltas: &Value, info: &Value) -> Result<Win, String> {
             ));
         }
     }
-    Ok(Win {
+    Ok(LoggedWin {
         deltas,
         winner,
         from,

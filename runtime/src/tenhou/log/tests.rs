@@ -5,12 +5,13 @@ use serde_json::{json, Value};
 
 use super::moves::{parse_discard, parse_draw};
 use super::*;
+use crate::hand::YakuHan;
 
 const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/data/tenhou");
 const FIRST: &str = "2010081709gm-00a9-0000-fe3371ad.json";
 
 fn t(code: u8) -> Tile {
-    Tile::new(code).expect("a valid tile code in the test")
+    Tile::from_tenhou_code(code).expect("a valid tile code in the test")
 }
 
 fn all_games() -> Vec<Game> {
@@ -78,20 +79,20 @@ fn tenhou_codes_map_to_our_values() {
     ];
     for (code, value, kind) in cases {
         assert_eq!(
-            (t(code).value(), t(code).kind(), t(code).is_red()),
+            (t(code).value(), u8::from(t(code).kind()), t(code).is_red()),
             (value, kind, false),
             "{code}"
         );
     }
     for (code, value, kind) in [(51, 34, 4), (52, 35, 13), (53, 36, 22)] {
         assert_eq!(
-            (t(code).value(), t(code).kind(), t(code).is_red()),
+            (t(code).value(), u8::from(t(code).kind()), t(code).is_red()),
             (value, kind, true),
             "{code}"
         );
     }
     for code in [0, 10, 20, 30, 40, 48, 50, 54, 58, 60] {
-        assert_eq!(Tile::new(code), None, "{code}");
+        assert_eq!(Tile::from_tenhou_code(code), None, "{code}");
     }
 }
 
@@ -241,7 +242,7 @@ fn first_round_of_the_known_file() {
     assert_eq!(
         game.rounds[1].outcome,
         Outcome::Draw {
-            kind: DrawKind::Exhaustive,
+            kind: LoggedDraw::Exhaustive,
             deltas: Some([-1500, 1500, 1500, -1500])
         }
     );

@@ -1,10 +1,11 @@
 //! The wall a logged round was dealt from, as the engine reads it.
 
-use super::{tile_name, DORA, LIVE_END, LIVE_START, RINSHAN, URA};
-use crate::tenhou::log::{Round, Tile};
+use super::{DORA, LIVE_END, LIVE_START, RINSHAN, URA};
+use crate::tenhou::log::Round;
+use crate::tile::Tile;
 
 /// Places the logged tiles where the engine reads them and fills the rest with the unused tiles.
-pub(super) fn build_wall(round: &Round, live: &[Tile], rinshan: &[Tile]) -> Result<[u8; 136], String> {
+pub(super) fn build_wall(round: &Round, live: &[Tile], rinshan: &[Tile]) -> Result<[Tile; 136], String> {
     if rinshan.len() > 4 || round.dora.len() > 5 || round.ura.len() > 5 {
         return Err(format!(
             "{} replacement draws, {} dora and {} ura indicators: at most 4, 5 and 5 fit the dead wall",
@@ -52,17 +53,19 @@ pub(super) fn build_wall(round: &Round, live: &[Tile], rinshan: &[Tile]) -> Resu
         if left[v] < 0 {
             return Err(format!(
                 "tile {} appears more often than the set holds (hands, draws and indicators together)",
-                tile_name(*t)
+                t.name()
             ));
         }
     }
-    let mut spare = (0..37u8).flat_map(|v| std::iter::repeat_n(v, left[usize::from(v)].max(0) as usize));
-    let mut wall = [0u8; 136];
-    for (i, slot) in slots.iter().enumerate() {
-        wall[i] = match slot {
-            Some(t) => t.value(),
-            None => spare.next().ok_or("more tiles placed than the wall holds")?,
-        };
-    }
-    Ok(wall)
+    let mut spare = (0..37u8)
+        .flat_map(|v| std::iter::repeat_n(v, left[usize::from(v)].max(0) as usize))
+        .filter_map(Tile::from_value);
+    let wall = slots
+        .iter()
+        .map(|slot| match slot {
+            Some(t) => Ok(*t),
+            None => spare.next().ok_or("more tiles placed than the wall holds"),
+        })
+        .collect::<Result<Vec<Tile>, _>>()?;
+    <[Tile; 136]>::try_from(wall).map_err(|_| "the wall is not 136 tiles".to_string())
 }

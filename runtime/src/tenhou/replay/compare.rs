@@ -1,10 +1,11 @@
 //! Comparing a finished round with its log: winners, han, fu and yaku of each win, the kind of a
 //! draw, score changes, the next round's table and the end of the game.
 
-use super::super::log::{DrawKind as LogDraw, Outcome, Round, Win, YakuHan};
+use super::super::log::{LoggedDraw, LoggedWin, Outcome, Round};
 use super::super::plan::Plan;
 use super::{Report, Run};
 use crate::env::{events, DrawKind, Step, Table, WinRecord};
+use crate::hand::YakuHan;
 use crate::tenhou::write::win_yaku;
 
 pub(super) fn outcome_name(o: &Outcome) -> String {
@@ -31,7 +32,7 @@ fn engine_yaku(w: &WinRecord) -> Vec<(String, YakuHan)> {
     out
 }
 
-fn log_yaku(w: &Win) -> Vec<(String, YakuHan)> {
+fn log_yaku(w: &LoggedWin) -> Vec<(String, YakuHan)> {
     let mut out: Vec<(String, YakuHan)> = w
         .yaku
         .iter()
@@ -53,7 +54,7 @@ fn yaku_text(list: &[(String, YakuHan)]) -> String {
 }
 
 /// Compares one logged win with the engine's record of it; `None` when they agree.
-fn compare_win(w: &Win, r: &WinRecord) -> Option<(String, String)> {
+fn compare_win(w: &LoggedWin, r: &WinRecord) -> Option<(String, String)> {
     let (ly, ey) = (log_yaku(w), engine_yaku(r));
     let log_yakuman: u32 = ly
         .iter()
@@ -90,18 +91,18 @@ fn compare_win(w: &Win, r: &WinRecord) -> Option<(String, String)> {
     ))
 }
 
-fn draw_matches(log: LogDraw, table: &Table) -> bool {
+fn draw_matches(log: LoggedDraw, table: &Table) -> bool {
     let tenpai = table.draw.tenpai.iter().filter(|&&t| t).count();
     match (log, table.draw.kind) {
-        (LogDraw::Exhaustive, Some(DrawKind::Exhaustive)) => (1..4).contains(&tenpai),
-        (LogDraw::AllTenpai, Some(DrawKind::Exhaustive)) => tenpai == 4,
-        (LogDraw::NoTenpai, Some(DrawKind::Exhaustive)) => tenpai == 0,
-        (LogDraw::Nagashi, Some(DrawKind::Nagashi)) => true,
-        (LogDraw::Kyuushu, Some(DrawKind::Kyuushu)) => true,
-        (LogDraw::FourRiichi, Some(DrawKind::FourRiichi)) => true,
-        (LogDraw::TripleRon, Some(DrawKind::TripleRon)) => true,
-        (LogDraw::FourKans, Some(DrawKind::FourKans)) => true,
-        (LogDraw::FourWinds, Some(DrawKind::FourWinds)) => true,
+        (LoggedDraw::Exhaustive, Some(DrawKind::Exhaustive)) => (1..4).contains(&tenpai),
+        (LoggedDraw::AllTenpai, Some(DrawKind::Exhaustive)) => tenpai == 4,
+        (LoggedDraw::NoTenpai, Some(DrawKind::Exhaustive)) => tenpai == 0,
+        (LoggedDraw::Nagashi, Some(DrawKind::Nagashi)) => true,
+        (LoggedDraw::Kyuushu, Some(DrawKind::Kyuushu)) => true,
+        (LoggedDraw::FourRiichi, Some(DrawKind::FourRiichi)) => true,
+        (LoggedDraw::TripleRon, Some(DrawKind::TripleRon)) => true,
+        (LoggedDraw::FourKans, Some(DrawKind::FourKans)) => true,
+        (LoggedDraw::FourWinds, Some(DrawKind::FourWinds)) => true,
         _ => false,
     }
 }

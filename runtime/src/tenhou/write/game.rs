@@ -8,7 +8,7 @@
 use crate::env::{events, DrawRecord, WinRecord};
 use crate::generated::kernel::{self, GameState};
 use crate::generated::red as k;
-use crate::tenhou::log::{round_name, Discard, DrawKind, Game, Outcome, Round, Win};
+use crate::tenhou::log::{round_name, Discard, Game, LoggedDraw, LoggedWin, Outcome, Round};
 use crate::tenhou::plan::{DORA, RINSHAN, URA};
 
 use super::outcome::{
@@ -17,9 +17,6 @@ use super::outcome::{
 use super::round::{meld_count, Current};
 
 const ROUND_OVER: u32 = events::RON | events::TSUMO | events::EXHAUSTIVE_DRAW | events::ABORTIVE_DRAW;
-/// The kernel's `MODE_EAST` and `MODE_HALF` (rules/kernel/game_state.rs).
-const MODE_EAST: u32 = 1;
-const MODE_HALF: u32 = 2;
 
 /// Follows one game (and, with auto-reset, the games after it) and hands out each finished game.
 #[derive(Debug, Clone)]
@@ -38,8 +35,8 @@ impl GameRecorder {
     /// [`crate::env::Env::reset`] or [`crate::env::Env::deal`], or the kernel's `game_new`.
     pub fn new(state: &GameState) -> Result<GameRecorder, String> {
         let rule = match state.mode {
-            MODE_HALF => "鳳南喰赤",
-            MODE_EAST => "鳳東喰赤",
+            kernel::MODE_HALF => "鳳南喰赤",
+            kernel::MODE_EAST => "鳳東喰赤",
             _ => return Err("Tenhou logs are east or half games: a one-hand game has no Tenhou rule".into()),
         };
         Ok(GameRecorder {
@@ -190,7 +187,7 @@ impl GameRecorder {
                     liable.map(|l| l as usize),
                 );
                 let seat_wind = (w as usize + 4 - dealer) % 4;
-                wins.push(Win {
+                wins.push(LoggedWin {
                     deltas: std::array::from_fn(|i| d[(i + cur.first as usize) % 4]),
                     winner: cur.at(w),
                     from: cur.at(from),
@@ -206,7 +203,7 @@ impl GameRecorder {
             if !tsumo {
                 ronned_riichi = Some(cur.at(from));
             }
-            let riichi = |w: &Win| w.yaku.iter().any(|y| y.name == "riichi" || y.name == "double_riichi");
+            let riichi = |w: &LoggedWin| w.yaku.iter().any(|y| y.name == "riichi" || y.name == "double_riichi");
             if wins.iter().any(riichi) {
                 cur.round.ura = (0..cur.dora)
                     .map(|i| cur.wall_tile(URA + i))
@@ -218,7 +215,7 @@ impl GameRecorder {
             let (kind, deltas) =
                 draw_outcome(&rec, dealer).ok_or("the round ended in a draw the state does not name")?;
             let deltas = deltas.map(|d| std::array::from_fn(|i| d[(i + cur.first as usize) % 4]));
-            if kind == DrawKind::TripleRon {
+            if kind == LoggedDraw::TripleRon {
                 ronned_riichi = Some(cur.at(b.claim_from));
             }
             Outcome::Draw { kind, deltas }

@@ -3,7 +3,9 @@
 
 use serde_json::{json, Value};
 
-use crate::tenhou::log::{tenhou_yaku, Discard, Draw, Game, Outcome, Rel, Round, Tile, Win, Yaku, YakuHan};
+use crate::hand::{Yaku, YakuHan};
+use crate::tenhou::log::{tenhou_yaku, Discard, Draw, Game, LoggedWin, Outcome, Rel, Round};
+use crate::tile::Tile;
 
 /// The game as a tenhou.net/6 file: one record per round, one line each.
 pub fn game_text(game: &Game) -> String {
@@ -16,7 +18,7 @@ pub fn game_text(game: &Game) -> String {
 }
 
 /// One round as a whole record: `{"title":["",""],"name":[..],"rule":{..},"log":[ROUND]}`.
-pub fn round_line(game: &Game, round: &Round) -> String {
+pub(super) fn round_line(game: &Game, round: &Round) -> String {
     // Put together by hand: a serde_json map sorts its keys, and Tenhou writes title, name,
     // rule, log (and disp before aka).
     let names = Value::from(game.names.to_vec());
@@ -29,8 +31,8 @@ pub fn round_line(game: &Game, round: &Round) -> String {
 }
 
 /// The 17-element round array (see [`crate::tenhou::log`]).
-pub fn round_value(r: &Round) -> Value {
-    let codes = |tiles: &[Tile]| Value::from(tiles.iter().map(|t| t.code()).collect::<Vec<u8>>());
+pub(super) fn round_value(r: &Round) -> Value {
+    let codes = |tiles: &[Tile]| Value::from(tiles.iter().map(|t| t.tenhou_code()).collect::<Vec<u8>>());
     let mut items = vec![
         json!([r.kyoku, r.honba, r.sticks]),
         json!(r.scores),
@@ -51,11 +53,11 @@ fn written(letter: char, at: usize, picked: &[Tile], others: &[Tile]) -> String 
     let (before, after) = others.split_at(at.min(others.len()));
     let mut s = String::new();
     for t in before {
-        s.push_str(&t.to_string());
+        s.push_str(&t.tenhou_code().to_string());
     }
     s.push(letter);
     for t in picked.iter().chain(after) {
-        s.push_str(&t.to_string());
+        s.push_str(&t.tenhou_code().to_string());
     }
     s
 }
@@ -71,9 +73,9 @@ fn own_before(from: Rel, own: usize) -> usize {
 }
 
 /// A draw entry: a tile code, or a call string (`c131415`, `43p4343`, `393939m39`).
-pub fn draw_value(d: &Draw) -> Value {
+pub(super) fn draw_value(d: &Draw) -> Value {
     match *d {
-        Draw::Tile(t) => t.code().into(),
+        Draw::Tile(t) => t.tenhou_code().into(),
         Draw::Chi { called, own } => written('c', 0, &[called], &own).into(),
         Draw::Pon { called, own, from } => written('p', own_before(from, 2), &[called], &own).into(),
         Draw::OpenKan { called, own, from } => written('m', own_before(from, 3), &[called], &own).into(),
@@ -82,11 +84,11 @@ pub fn draw_value(d: &Draw) -> Value {
 
 /// A discard entry: a tile code, `60`, `r24`/`r60`, a kan string (`42k424242`, `151515a51`) or
 /// the `0` after an open kan.
-pub fn discard_value(d: &Discard) -> Value {
+pub(super) fn discard_value(d: &Discard) -> Value {
     match *d {
-        Discard::Tile(t) => t.code().into(),
+        Discard::Tile(t) => t.tenhou_code().into(),
         Discard::Tsumogiri => 60.into(),
-        Discard::Riichi(Some(t)) => format!("r{t}").into(),
+        Discard::Riichi(Some(t)) => format!("r{}", t.tenhou_code()).into(),
         Discard::Riichi(None) => "r60".into(),
         Discard::AddedKan {
             added,
@@ -119,7 +121,7 @@ fn outcome_value(r: &Round) -> Value {
 }
 
 /// `[winner, from, pao, "30符4飜7700点", "立直(1飜)", ..]`.
-fn win_info(r: &Round, w: &Win) -> Value {
+fn win_info(r: &Round, w: &LoggedWin) -> Value {
     let seat_wind = (w.winner + 4 - r.dealer()) % 4;
     let round_wind = (r.kyoku / 4 % 4) as usize;
     let mut items: Vec<Value> = vec![w.winner.into(), w.from.into(), w.pao.into(), w.points.as_str().into()];
@@ -128,7 +130,7 @@ fn win_info(r: &Round, w: &Win) -> Value {
 }
 
 /// `立直(1飜)`, `大三元(役満)`, `国士無双１３面(ダブル役満)`.
-pub fn yaku_text(y: &Yaku, seat_wind: usize, round_wind: usize) -> String {
+pub(super) fn yaku_text(y: &Yaku, seat_wind: usize, round_wind: usize) -> String {
     let name = tenhou_yaku(y.name, seat_wind, round_wind).map_or(y.name, |(name, _)| name);
     match y.han {
         YakuHan::Han(h) => format!("{name}({h}飜)"),

@@ -6,31 +6,20 @@
 //! two hands in one step, a pao tsumo hides the shares, and a game's last step adds uma. The recorder checks the sum against the scores the
 //! engine carries into the next round.
 
-use crate::env::{DrawKind as EngineDraw, DrawRecord, WinRecord};
+use crate::env::{DrawKind, DrawRecord, WinRecord};
 use crate::generated::red as k;
-use crate::hand::yaku_worth;
-use crate::tenhou::log::{tenhou_yaku, DrawKind, Limit, Outcome, Yaku, YakuHan};
+use crate::hand::{yaku_worth, Payment, Yaku, YakuHan};
+use crate::tenhou::log::{tenhou_yaku, Limit, LoggedDraw, Outcome};
 use crate::Variant;
-
-/// What a win pays before honba and riichi sticks.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Payment {
-    Ron(u32),
-    /// Each non-dealer pays `others`; the dealer pays `dealer`, `None` when the dealer won.
-    Tsumo {
-        dealer: Option<u32>,
-        others: u32,
-    },
-}
 
 /// Base points of a hand: fu x 2^(han+2) up to the limits (the scoring kernel's own rule, with
 /// this variant's `kiriage_mangan` and `kazoe_yakuman`).
-pub fn base_points(han: u32, fu: u32, yakuman: u32) -> u32 {
+pub(super) fn base_points(han: u32, fu: u32, yakuman: u32) -> u32 {
     k::base_points(han, fu, yakuman)
 }
 
 /// The limit a base reaches, named in the points text instead of fu and han.
-pub fn limit_of(base: u32) -> Option<Limit> {
+pub(super) fn limit_of(base: u32) -> Option<Limit> {
     match base {
         8000.. => Some(Limit::Yakuman),
         6000.. => Some(Limit::Sanbaiman),
@@ -42,10 +31,10 @@ pub fn limit_of(base: u32) -> Option<Limit> {
 }
 
 /// What a hand of `base` points costs before honba (the scoring kernel's `hand_payments`).
-pub fn payment(base: u32, dealer: bool, tsumo: bool) -> Payment {
+pub(super) fn payment(base: u32, dealer: bool, tsumo: bool) -> Payment {
     let [ron, dealer_share, others] = k::hand_payments(base, dealer);
     match (tsumo, dealer) {
-        (false, _) => Payment::Ron(ron),
+        (false, _) => Payment::Ron { discarder: ron },
         (true, false) => Payment::Tsumo {
             dealer: Some(dealer_share),
             others,
@@ -56,13 +45,13 @@ pub fn payment(base: u32, dealer: bool, tsumo: bool) -> Payment {
 
 /// `30符4飜7700点`, `30符2飜500-1000点` (a non-dealer's tsumo: non-dealers, dealer),
 /// `40符3飜2600点∀` (a dealer's tsumo: each pays), `満貫8000点`.
-pub fn points_text(fu: u32, han: u32, limit: Option<Limit>, pay: Payment) -> String {
+pub(super) fn points_text(fu: u32, han: u32, limit: Option<Limit>, pay: Payment) -> String {
     let hand = match limit {
         Some(l) => l.tenhou_name().to_string(),
         None => format!("{fu}符{han}飜"),
     };
     match pay {
-        Payment::Ron(p) => format!("{hand}{p}点"),
+        Payment::Ron { discarder } => format!("{hand}{discarder}点"),
         Payment::Tsumo {
             dealer: Some(d),
             others,
@@ -75,7 +64,7 @@ pub fn points_text(fu: u32, han: u32, limit: Option<Limit>, pay: Payment) -> Str
 /// deposits collected) are counted only for the winner nearest the discarder, so give 0 for the
 /// other one of a double ron. A liable seat (`pao`) pays half of a ron's value (honba to the
 /// discarder) and all of a tsumo.
-pub fn win_deltas(
+pub(super) fn win_deltas(
     winner: usize,
     from: Option<usize>,
     dealer: usize,
@@ -90,7 +79,7 @@ pub fn win_deltas(
         d[winner] += i64::from(points);
     };
     match (pay, from) {
-        (Payment::Ron(value), Some(from)) => {
+        (Payment::Ron { discarder: value }, Some(from)) => {
             let honba = honba * k::HONBA_RON_POINTS;
             match pao {
                 Some(liable) if liable != from => {
@@ -110,7 +99,7 @@ pub fn win_deltas(
             }
         }
         // A ron with no discarder cannot be recorded; the caller always names one.
-        (Payment::Ron(_), None) => {}
+        (Payment::Ron { .. }, None) => {}
     }
     d[winner] += i64::from(sticks * k::RIICHI_STICK_POINTS);
     d.map(|x| x as i32)
@@ -118,18 +107,14 @@ pub fn win_deltas(
 
 /// A win's yaku with what each is worth (as Tenhou counts them under the red spec), then dora, red
 /// fives and ura (those with 0 han left out).
-pub fn win_yaku(rec: &WinRecord) -> Vec<Yaku> {
+pub(crate) fn win_yaku(rec: &WinRecord) -> Vec<Yaku> {
     let mut yaku: Vec<Yaku> = rec
         .yaku_ids()
         .map(|id| {
             let i = id as usize;
-            let han = match yaku_worth(Variant::Red, i, rec.concealed) {
-                (w, true) => YakuHan::Yakuman(w),
-                (h, false) => YakuHan::Han(h),
-            };
             Yaku {
                 name: k::host::YAKU_NAMES[i],
-                han,
+                han: yaku_worth(Variant::Red, i, rec.concealed),
             }
         })
         .collect();
@@ -145,7 +130,7 @@ pub fn win_yaku(rec: &WinRecord) -> Vec<Yaku> {
 }
 
 /// A win's yaku in the order Tenhou lists them, dora, red fives and ura last.
-pub fn yaku_list(rec: &WinRecord, seat_wind: usize, round_wind: usize) -> Vec<Yaku> {
+pub(super) fn yaku_list(rec: &WinRecord, seat_wind: usize, round_wind: usize) -> Vec<Yaku> {
     let mut yaku = win_yaku(rec);
     yaku.sort_by_key(|y| tenhou_yaku(y.name, seat_wind, round_wind).map_or(usize::MAX, |(_, rank)| rank));
     yaku
@@ -153,20 +138,20 @@ pub fn yaku_list(rec: &WinRecord, seat_wind: usize, round_wind: usize) -> Vec<Ya
 
 /// A round without a win, in engine seats (`dealer` too): the name and the payments Tenhou
 /// lists (tenpai payments for 1-3 tenpai seats, nagashi mangan as a mangan tsumo per seat).
-pub fn draw_outcome(rec: &DrawRecord, dealer: usize) -> Option<(DrawKind, Option<[i32; 4]>)> {
+pub(super) fn draw_outcome(rec: &DrawRecord, dealer: usize) -> Option<(LoggedDraw, Option<[i32; 4]>)> {
     let kind = match rec.kind? {
-        EngineDraw::Exhaustive => {
+        DrawKind::Exhaustive => {
             let tenpai = rec.tenpai.iter().filter(|&&t| t).count() as i32;
             return Some(match tenpai {
-                0 => (DrawKind::NoTenpai, None),
-                4 => (DrawKind::AllTenpai, None),
+                0 => (LoggedDraw::NoTenpai, None),
+                4 => (LoggedDraw::AllTenpai, None),
                 n => {
                     let deltas = rec.tenpai.map(|t| if t { 3000 / n } else { -3000 / (4 - n) });
-                    (DrawKind::Exhaustive, Some(deltas))
+                    (LoggedDraw::Exhaustive, Some(deltas))
                 }
             });
         }
-        EngineDraw::Nagashi => {
+        DrawKind::Nagashi => {
             let mut deltas = [0i32; 4];
             for w in (0..4).filter(|&w| rec.nagashi[w]) {
                 for p in (0..4).filter(|&p| p != w) {
@@ -175,19 +160,19 @@ pub fn draw_outcome(rec: &DrawRecord, dealer: usize) -> Option<(DrawKind, Option
                     deltas[w] += amount;
                 }
             }
-            return Some((DrawKind::Nagashi, Some(deltas)));
+            return Some((LoggedDraw::Nagashi, Some(deltas)));
         }
-        EngineDraw::Kyuushu => DrawKind::Kyuushu,
-        EngineDraw::FourRiichi => DrawKind::FourRiichi,
-        EngineDraw::TripleRon => DrawKind::TripleRon,
-        EngineDraw::FourKans => DrawKind::FourKans,
-        EngineDraw::FourWinds => DrawKind::FourWinds,
+        DrawKind::Kyuushu => LoggedDraw::Kyuushu,
+        DrawKind::FourRiichi => LoggedDraw::FourRiichi,
+        DrawKind::TripleRon => LoggedDraw::TripleRon,
+        DrawKind::FourKans => LoggedDraw::FourKans,
+        DrawKind::FourWinds => LoggedDraw::FourWinds,
     };
     Some((kind, None))
 }
 
 /// The score changes of a result by seat: every win's, or the draw's payments.
-pub fn outcome_deltas(outcome: &Outcome) -> [i32; 4] {
+pub(super) fn outcome_deltas(outcome: &Outcome) -> [i32; 4] {
     let mut sum = [0i32; 4];
     let mut add = |d: &[i32; 4]| (0..4).for_each(|p| sum[p] += d[p]);
     match outcome {

@@ -4,15 +4,16 @@
 
 use crate::generated::kernel::{self, GameState};
 use crate::generated::red as k;
-use crate::tenhou::log::{Discard, Draw, DrawKind, Outcome, Rel, Round, Tile};
+use crate::tenhou::log::{Discard, Draw, LoggedDraw, Outcome, Rel, Round};
 use crate::tenhou::plan::LIVE_START;
+use crate::tile::{Tile, TileType};
 
 /// The round being played.
 #[derive(Debug, Clone)]
 pub(super) struct Current {
     /// The round so far; its result is filled in at its end.
     pub(super) round: Round,
-    /// The wall it was dealt from, in the engine's dealing order.
+    /// The wall it was dealt from, in the engine's dealing order, as kernel tile values.
     pub(super) wall: [u8; 136],
     /// East 1's dealer: the engine's seat `p` is the log's seat `p - first`.
     pub(super) first: u32,
@@ -21,7 +22,7 @@ pub(super) struct Current {
     pub(super) riichi_made: [bool; 4],
     /// Each pon (log seat, tile type, its three tiles with the called one first, where it came
     /// from): an added kan is written from its pon.
-    pub(super) pons: Vec<(usize, u8, [Tile; 3], Rel)>,
+    pub(super) pons: Vec<(usize, TileType, [Tile; 3], Rel)>,
     /// Dora indicators revealed so far.
     pub(super) dora: usize,
 }
@@ -93,7 +94,7 @@ impl Current {
             discards: Default::default(),
             // Until the round ends.
             outcome: Outcome::Draw {
-                kind: DrawKind::Exhaustive,
+                kind: LoggedDraw::Exhaustive,
                 deltas: None,
             },
         };

@@ -5,10 +5,12 @@ use std::path::PathBuf;
 
 use serde_json::Value;
 
+use super::json::{discard_value, draw_value, round_line, yaku_text};
+use super::outcome::{base_points, limit_of, payment, points_text, win_deltas};
 use super::*;
-use crate::tenhou::log::{
-    collect_files, parse_game, tenhou_yaku, Discard, Draw, Limit, Outcome, Rel, Round, Tile, Yaku, YakuHan,
-};
+use crate::hand::{Yaku, YakuHan};
+use crate::tenhou::log::{collect_files, parse_game, tenhou_yaku, Discard, Draw, Limit, Outcome, Rel, Round};
+use crate::tile::Tile;
 
 const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/data/tenhou");
 
@@ -26,7 +28,7 @@ fn real_logs() -> Vec<(String, Game)> {
 }
 
 fn t(code: u8) -> Tile {
-    Tile::new(code).expect("a valid tile code in the test")
+    Tile::from_tenhou_code(code).expect("a valid tile code in the test")
 }
 
 #[test]
