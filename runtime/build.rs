@@ -34,15 +34,11 @@ fn write(path: &Path, text: impl AsRef<[u8]>) {
     }
 }
 
-fn kernel_sources(dir: &Path) -> Vec<(PathBuf, String)> {
-    let mut paths: Vec<PathBuf> = match std::fs::read_dir(dir) {
-        Ok(entries) => entries
-            .filter_map(|e| e.ok().map(|e| e.path()))
-            .filter(|p| p.extension().is_some_and(|x| x == "rs"))
-            .collect(),
-        Err(e) => fail(format!("cannot read {}: {e}", dir.display())),
-    };
-    paths.sort();
+fn kernel_sources(rules: &Path) -> Vec<(PathBuf, String)> {
+    let paths = rinshan_codegen::kernel_paths(rules);
+    if paths.is_empty() {
+        fail(format!("no kernel sources in {}", rules.join("kernel").display()));
+    }
     paths
         .into_iter()
         .map(|p| match std::fs::read_to_string(&p) {
@@ -80,7 +76,7 @@ fn main() {
     let table_consts = tables.kernel_consts();
     write(&out.join("table_consts.rs"), &table_consts);
 
-    let kernel = kernel_sources(&rules.join("kernel"));
+    let kernel = kernel_sources(&rules);
     for (path, _) in &kernel {
         println!("cargo:rerun-if-changed={}", path.display());
     }

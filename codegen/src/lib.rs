@@ -48,13 +48,18 @@ pub fn source_paths(rules_dir: &Path, variant: &str) -> [PathBuf; 3] {
 
 /// `rules_dir/kernel/*.rs`, sorted: [`load`] reads them for the option constants the kernel names.
 pub fn kernel_paths(rules_dir: &Path) -> Vec<PathBuf> {
-    let Ok(dir) = std::fs::read_dir(rules_dir.join("kernel")) else {
+    files_in(&rules_dir.join("kernel"), "rs")
+}
+
+/// The files of `dir` named `*.ext`, sorted; empty if the folder cannot be read.
+fn files_in(dir: &Path, ext: &str) -> Vec<PathBuf> {
+    let Ok(entries) = std::fs::read_dir(dir) else {
         return Vec::new();
     };
-    let mut paths: Vec<PathBuf> = dir
+    let mut paths: Vec<PathBuf> = entries
         .filter_map(Result::ok)
         .map(|e| e.path())
-        .filter(|p| p.extension().is_some_and(|x| x == "rs"))
+        .filter(|p| p.extension().is_some_and(|x| x == ext))
         .collect();
     paths.sort();
     paths
@@ -126,15 +131,8 @@ pub fn load_sources_with_kernel(
 
 /// File stems of `rules_dir/variants/*.toml`, sorted; empty if the folder cannot be read.
 pub fn variant_names(rules_dir: &Path) -> Vec<String> {
-    let Ok(dir) = std::fs::read_dir(rules_dir.join("variants")) else {
-        return Vec::new();
-    };
-    let mut names: Vec<String> = dir
-        .filter_map(Result::ok)
-        .map(|e| e.path())
-        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+    files_in(&rules_dir.join("variants"), "toml")
+        .iter()
         .filter_map(|p| p.file_stem().and_then(|s| s.to_str()).map(String::from))
-        .collect();
-    names.sort();
-    names
+        .collect()
 }

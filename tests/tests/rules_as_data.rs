@@ -20,19 +20,11 @@ fn read(path: &Path) -> String {
 
 /// (file name, text) of every kernel source, in name order.
 fn kernel_files() -> Vec<(String, String)> {
-    let mut kernel: Vec<PathBuf> = std::fs::read_dir(rules().join("kernel"))
-        .expect("kernel dir")
-        .map(|e| e.expect("entry").path())
-        .filter(|p| p.extension().is_some_and(|x| x == "rs"))
-        .collect();
-    kernel.sort();
-    kernel
+    rinshan_codegen::kernel_paths(&rules())
         .iter()
         .map(|p| {
-            (
-                p.file_name().and_then(|n| n.to_str()).unwrap_or_default().to_string(),
-                read(p),
-            )
+            let name = p.file_name().and_then(|n| n.to_str()).unwrap_or_default();
+            (name.to_string(), read(p))
         })
         .collect()
 }

@@ -1,7 +1,7 @@
 //! Arguments several commands take, declared once: the same names, defaults, help and errors
 //! everywhere (`--variant blue` fails the same way in `selfplay`, `score` and `bench`).
 
-use rinshan::env::{Backend, Mode};
+use rinshan::env::{Backend, Config, Mode};
 use rinshan::Variant;
 
 /// `--variant`.
@@ -36,4 +36,19 @@ pub struct GameArgs {
     /// CPU threads (default: all cores)
     #[arg(long)]
     pub threads: Option<usize>,
+}
+
+impl GameArgs {
+    /// The environment these arguments describe, `batch` games stepped together, each game
+    /// followed at once by the next (auto-reset).
+    pub fn config(&self, batch: usize) -> Config {
+        Config {
+            mode: self.mode,
+            backend: self.backend.backend,
+            seed: self.seed,
+            threads: self.threads,
+            auto_reset: true,
+            ..Config::new(self.variant.variant, batch)
+        }
+    }
 }

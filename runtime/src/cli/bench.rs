@@ -10,7 +10,7 @@ use rinshan::hand::{self, SCORE_IN_WORDS, SCORE_OUT_WORDS, SHANTEN_IN_WORDS, SHA
 use rinshan::random::{random_hand, random_win, Rng};
 use rinshan::Variant;
 
-use super::args::{BackendArg, GameArgs, VariantArg};
+use super::args::{GameArgs, VariantArg};
 use super::selfplay::policy_rng;
 use super::CliError;
 
@@ -105,26 +105,18 @@ fn env_point(config: Config, seconds: f64) -> Result<(f64, f64), CliError> {
 }
 
 fn env_bench(game: &GameArgs, seconds: f64, batches: &[usize]) -> Result<(), CliError> {
-    let GameArgs {
-        variant: VariantArg { variant },
-        mode,
-        backend: BackendArg { backend },
-        seed,
-        threads,
-    } = game.clone();
     if seconds.is_nan() || seconds <= 0.0 || batches.is_empty() || batches.contains(&0) {
         return Err(CliError::input(
             "--seconds-per-point must be positive and --batches positive sizes",
         ));
     }
+    let base = game.config(1);
+    let (variant, mode, backend, threads) = (base.variant, base.mode, base.backend, base.threads);
     let all = threads.unwrap_or_else(rayon::current_num_threads);
     let config = |batch: usize, threads: Option<usize>| Config {
-        mode,
-        backend,
-        seed,
-        auto_reset: true,
+        batch,
         threads,
-        ..Config::new(variant, batch)
+        ..base.clone()
     };
     let runs: Vec<(String, Option<usize>)> = match backend {
         Backend::Cpu => vec![

@@ -13,7 +13,7 @@ use rinshan::tenhou::write::{game_text, Finished, Recorder};
 use rinshan::Variant;
 use serde_json::json;
 
-use super::args::{BackendArg, GameArgs, VariantArg};
+use super::args::GameArgs;
 use super::CliError;
 
 #[derive(clap::Args)]
@@ -81,30 +81,14 @@ impl Tally {
 }
 
 pub fn run(args: Args) -> Result<(), CliError> {
-    let GameArgs {
-        variant: VariantArg { variant },
-        mode,
-        backend: BackendArg { backend },
-        seed,
-        threads,
-    } = args.game.clone();
+    let config = args.game.config(args.batch);
+    let (variant, seed) = (config.variant, config.seed);
     if args.games == 0 {
         return Err(CliError::input("--games must be at least 1"));
     }
     if let Some(dir) = &args.export {
-        check_export(dir, variant, mode, backend)?;
+        check_export(dir, &config)?;
     }
-    let config = Config {
-        variant,
-        mode,
-        batch: args.batch,
-        backend,
-        seed,
-        uma: None,
-        penalty: None,
-        auto_reset: true,
-        threads,
-    };
     let mut env = Env::new(config).map_err(|e| match e {
         rinshan::env::EnvError::Gpu(_) => CliError::failure(e),
         _ => CliError::input(e),
@@ -216,18 +200,18 @@ pub fn run(args: Args) -> Result<(), CliError> {
 }
 
 /// Why games cannot be exported as asked; creates the folder.
-fn check_export(dir: &Path, variant: Variant, mode: Mode, backend: Backend) -> Result<(), CliError> {
-    if variant != Variant::Red {
+fn check_export(dir: &Path, config: &Config) -> Result<(), CliError> {
+    if config.variant != Variant::Red {
         return Err(CliError::input(
             "--export writes Tenhou logs of the red variant only (--variant red)",
         ));
     }
-    if mode == Mode::Single {
+    if config.mode == Mode::Single {
         return Err(CliError::input(
             "--export needs --mode east or half: Tenhou has no one-hand games",
         ));
     }
-    if backend == Backend::Gpu {
+    if config.backend == Backend::Gpu {
         return Err(CliError::input(
             "--export needs --backend cpu: the recorder reads every game's state after each step",
         ));
