@@ -34,7 +34,7 @@ fn write(path: &Path, text: impl AsRef<[u8]>) {
     }
 }
 
-fn kernel_sources(rules: &Path) -> Vec<(PathBuf, String)> {
+fn kernel_sources(rules: &Path) -> Vec<Source> {
     let paths = rinshan_codegen::kernel_paths(rules);
     if paths.is_empty() {
         fail(format!("no kernel sources in {}", rules.join("kernel").display()));
@@ -42,7 +42,10 @@ fn kernel_sources(rules: &Path) -> Vec<(PathBuf, String)> {
     paths
         .into_iter()
         .map(|p| match std::fs::read_to_string(&p) {
-            Ok(text) => (p, text),
+            Ok(text) => Source {
+                path: p.display().to_string(),
+                text,
+            },
             Err(e) => fail(format!("cannot read {}: {e}", p.display())),
         })
         .collect()
@@ -77,8 +80,8 @@ fn main() {
     write(&out.join("table_consts.rs"), &table_consts);
 
     let kernel = kernel_sources(&rules);
-    for (path, _) in &kernel {
-        println!("cargo:rerun-if-changed={}", path.display());
+    for src in &kernel {
+        println!("cargo:rerun-if-changed={}", src.path);
     }
     let variants = rinshan_codegen::variant_names(&rules);
     if variants.is_empty() {
@@ -106,14 +109,7 @@ fn main() {
             text: code.kernel_rust,
         });
     }
-    let kernel_sources: Vec<Source> = kernel
-        .iter()
-        .map(|(p, t)| Source {
-            path: p.display().to_string(),
-            text: t.clone(),
-        })
-        .collect();
-    let shared = match rinshan_shaders_gen::shared_files(&kernel_sources, &generated) {
+    let shared = match rinshan_shaders_gen::shared_files(&kernel, &generated) {
         Ok(s) => s,
         Err(e) => fail(located(&root, &e.file, e.line, e.column, &e.message)),
     };
@@ -129,9 +125,9 @@ fn main() {
     modules.push_str("    #![allow(dead_code, clippy::all, unused_parens, unused_variables)]\n");
     modules.push_str("    use crate::tables::table;\n");
     include(&mut modules, &out.join("table_consts.rs"));
-    for ((path, _), &is_shared) in kernel.iter().zip(&shared) {
+    for (src, &is_shared) in kernel.iter().zip(&shared) {
         if is_shared {
-            include(&mut modules, path);
+            include(&mut modules, Path::new(&src.path));
         }
     }
     let mut io_types: Vec<&str> = ENTRIES
@@ -155,7 +151,7 @@ fn main() {
                 text: table_consts.clone(),
             },
         ];
-        sources.extend(kernel_sources.iter().cloned());
+        sources.extend(kernel.iter().cloned());
         let entries = rinshan_shaders_gen::entry_points(&ENTRIES, &UPDATE_ENTRIES);
         let wgsl = match rinshan_shaders_gen::translate_entry_points(&sources, &entries) {
             Ok(w) => w,
@@ -170,9 +166,9 @@ fn main() {
         );
         let _ = writeln!(modules, "    use super::*;");
         include(&mut modules, Path::new(&consts.path));
-        for ((path, _), &is_shared) in kernel.iter().zip(&shared) {
+        for (src, &is_shared) in kernel.iter().zip(&shared) {
             if !is_shared {
-                include(&mut modules, path);
+                include(&mut modules, Path::new(&src.path));
             }
         }
         let _ = writeln!(
