@@ -68,10 +68,7 @@ impl std::str::FromStr for Mode {
     type Err = crate::UnknownName;
 
     fn from_str(name: &str) -> Result<Mode, crate::UnknownName> {
-        Mode::ALL
-            .into_iter()
-            .find(|m| m.name() == name)
-            .ok_or_else(|| crate::UnknownName::new("mode", name, &Mode::ALL))
+        crate::UnknownName::find("mode", name, &Mode::ALL)
     }
 }
 
@@ -107,10 +104,7 @@ impl std::str::FromStr for Backend {
     type Err = crate::UnknownName;
 
     fn from_str(name: &str) -> Result<Backend, crate::UnknownName> {
-        Backend::ALL
-            .into_iter()
-            .find(|b| b.name() == name)
-            .ok_or_else(|| crate::UnknownName::new("backend", name, &Backend::ALL))
+        crate::UnknownName::find("backend", name, &Backend::ALL)
     }
 }
 

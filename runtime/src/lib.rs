@@ -82,6 +82,18 @@ impl UnknownName {
             known: known.iter().map(ToString::to_string).collect(),
         }
     }
+
+    /// The one of `all` written `name` (as its `Display` writes it), or the error naming them.
+    pub(crate) fn find<T: Copy + std::fmt::Display>(
+        what: &'static str,
+        name: &str,
+        all: &[T],
+    ) -> Result<T, UnknownName> {
+        all.iter()
+            .copied()
+            .find(|t| t.to_string() == name)
+            .ok_or_else(|| UnknownName::new(what, name, all))
+    }
 }
 
 impl std::fmt::Display for UnknownName {
