@@ -1,7 +1,7 @@
 // Tiles in and out of hands, and what a hand can do: completeness, waits, tenpai.
 // Tile values 0..33 are the types; 34, 35, 36 are the red fives of m, p, s (types 4, 13, 22).
 
-fn value_type(v: u32) -> u32 {
+pub fn value_type(v: u32) -> u32 {
     if v >= 34u32 {
         return (v - 34u32) * 9u32 + 4u32;
     }

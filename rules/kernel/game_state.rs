@@ -248,7 +248,7 @@ fn hand_remove(s: &mut GameState, seat: u32, t: u32) {
 }
 
 // One read of each packed word (not one per tile type).
-fn hand_counts(s: &mut GameState, seat: u32) -> [u32; 34] {
+pub fn hand_counts(s: &mut GameState, seat: u32) -> [u32; 34] {
     let mut c: [u32; 34] = [0u32; 34];
     for w in 0u32..5u32 {
         let word: u32 = s.hands[(seat * 5u32 + w) as usize];

@@ -2,7 +2,7 @@
 //! declares riichi and kans, calls often, and otherwise discards towards tenpai (a quarter of
 //! the time at random), so that riichi, tenpai draws, double rons and kans come up often.
 
-use rinshan::generated::kernel::GameState;
+use rinshan::generated::kernel::{self as kernel, GameState};
 use rinshan::generated::red as k;
 use rinshan::hand::shanten;
 use rinshan::random::Rng;
@@ -53,14 +53,14 @@ impl Policy {
             return self.pick(&discards).unwrap_or(k::ACTION_PASS);
         }
         let p = s.current as usize;
-        let hand: [u8; 34] = std::array::from_fn(|t| (s.hands[p * 5 + t / 8] >> (t % 8 * 4) & 15) as u8);
+        let hand: [u8; 34] = kernel::hand_counts(&mut { *s }, p as u32).map(|n| n as u8);
         let after = |a: u32| {
             let v = if a == k::ACTION_TSUMOGIRI {
                 s.drawn
             } else {
                 a - k::ACTION_DISCARD
             };
-            let t = if v >= 34 { (v - 34) * 9 + 4 } else { v } as usize;
+            let t = kernel::value_type(v) as usize;
             let mut h = hand;
             h[t] -= 1;
             shanten(&h).shanten

@@ -138,11 +138,10 @@ fn check_state(s: &GameState, g: u32) {
 /// (tiles held, tiles drawn from the wall) per type, read with the kernel's accessors.
 fn tiles(state: &GameState) -> ([u32; 34], [u32; 34]) {
     let mut s = *state;
-    let value_type = |v: u32| if v >= 34 { (v - 34) * 9 + 4 } else { v };
     let mut held = [0u32; 34];
     for seat in 0..4u32 {
-        for t in 0..34u32 {
-            held[t as usize] += k::hand_count(&mut s, seat, t);
+        for (h, n) in held.iter_mut().zip(k::hand_counts(&mut s, seat)) {
+            *h += n;
         }
         for i in 0..k::meld_count(&mut s, seat) {
             let m = s.melds[(seat * 4 + i) as usize];
@@ -157,16 +156,16 @@ fn tiles(state: &GameState) -> ([u32; 34], [u32; 34]) {
         for i in 0..k::byte_of(s.river_lens, seat) {
             let e = k::byte_of(s.rivers[(seat * 6 + i / 4) as usize], i % 4);
             if e & 64 == 0 {
-                held[value_type(e & 63) as usize] += 1;
+                held[k::value_type(e & 63) as usize] += 1;
             }
         }
     }
     let mut drawn = [0u32; 34];
     for i in 0..s.next_draw {
-        drawn[value_type(k::wall_tile(&mut s, i)) as usize] += 1;
+        drawn[k::value_type(k::wall_tile(&mut s, i)) as usize] += 1;
     }
     for n in 0..s.kans {
-        drawn[value_type(k::wall_tile(&mut s, k::WALL_RINSHAN + n)) as usize] += 1;
+        drawn[k::value_type(k::wall_tile(&mut s, k::WALL_RINSHAN + n)) as usize] += 1;
     }
     (held, drawn)
 }
