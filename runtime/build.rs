@@ -134,6 +134,11 @@ fn main() {
         .iter()
         .chain(UPDATE_ENTRIES.iter())
         .flat_map(|(_, _, input, output)| [*input, *output])
+        .chain(
+            READ_ENTRIES
+                .iter()
+                .flat_map(|(_, _, state, arg, out)| [*state, *arg, *out]),
+        )
         .filter(|ty| !matches!(*ty, "u32" | "i32" | "f32"))
         .collect();
     io_types.sort_unstable();
@@ -152,7 +157,7 @@ fn main() {
             },
         ];
         sources.extend(kernel.iter().cloned());
-        let entries = rinshan_shaders_gen::entry_points(&ENTRIES, &UPDATE_ENTRIES);
+        let entries = rinshan_shaders_gen::entry_points(&ENTRIES, &UPDATE_ENTRIES, &READ_ENTRIES);
         let wgsl = match rinshan_shaders_gen::translate_entry_points(&sources, &entries) {
             Ok(w) => w,
             Err(e) => fail(located(&root, &e.file, e.line, e.column, &e.message)),

@@ -206,6 +206,7 @@ fn accept_riichi(s: &mut GameState, p: u32) {
         g |= SEAT_DOUBLE_RIICHI;
     }
     s.seat_flags[p as usize] = g;
+    log_push(s, EV_RIICHI_ACCEPTED, p, LOG_NO_TILE, 0u32);
     s.scores[p as usize] -= RIICHI_STICK_POINTS as i32;
     s.rewards[p as usize] -= (RIICHI_STICK_POINTS / 100u32) as i32;
     s.sticks += 1u32;
@@ -412,6 +413,19 @@ fn do_call(s: &mut GameState, q: u32, from: u32, v: u32, a: u32) -> u32 {
             }
         }
     }
+    log_mark_called(s);
+    let mut ev: u32 = EV_PON;
+    let mut ev_flags: u32 = 0u32;
+    if kind == MELD_OPEN_KAN {
+        ev = EV_OPEN_KAN;
+    } else if kind == MELD_CHI {
+        ev = EV_CHI;
+        ev_flags = t - low;
+    }
+    if reds > (v >= 34u32) as u32 {
+        ev_flags |= LOG_WITH_RED;
+    }
+    log_push(s, ev, q, v, ev_flags);
     let n: u32 = meld_count(s, q);
     let src: u32 = (from + 4u32 - q) % 4u32;
     s.melds[(q * 4u32 + n) as usize] = meld_word(kind, low) | (src << MELD_FROM_SHIFT) | (reds << MELD_REDS_SHIFT);

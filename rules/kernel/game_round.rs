@@ -57,6 +57,8 @@ fn empty_state() -> GameState {
         win_yaku: [0u32; 8],
         win_score: [0u32; 8],
         draw_kind: 0u32,
+        log: [0u32; 64],
+        log_len: 0u32,
     }
 }
 
@@ -110,6 +112,7 @@ fn start_round(s: &mut GameState, wall: [u32; 136]) {
     s.claim_kan = 0u32;
     s.claim_options = [0u32; 4];
     s.claim_choices = [NO_CHOICE; 4];
+    log_clear(s);
     for j in 0u32..4u32 {
         let seat: u32 = (s.dealer + j) % 4u32;
         for k in 0u32..13u32 {
@@ -146,11 +149,13 @@ fn receive_draw(s: &mut GameState, seat: u32, v: u32, rinshan: u32) {
     s.kuikae = 0xffffu32;
     // Temporary furiten lasts until the seat's own next draw.
     s.seat_flags[seat as usize] &= !SEAT_FURITEN_TEMP;
+    log_draw(s);
 }
 
 fn reveal_pending_dora(s: &mut GameState) {
-    s.dora_revealed += s.dora_pending;
+    let n: u32 = s.dora_pending;
     s.dora_pending = 0u32;
+    reveal_dora(s, n);
 }
 
 fn last_round(s: &mut GameState) -> u32 {

@@ -18,8 +18,8 @@ const SEAT_RIICHI: u32 = 1; // riichi accepted (stick paid)
 const SEAT_DOUBLE_RIICHI: u32 = 2;
 const SEAT_IPPATSU: u32 = 4;
 const SEAT_RIICHI_PENDING: u32 = 8; // declared; accepted once the declaring discard is not ronned
-const SEAT_FURITEN_TEMP: u32 = 16; // a winning tile passed by since the last own draw
-const SEAT_FURITEN_RIICHI: u32 = 32; // a winning tile passed by in riichi: furiten for the rest of the round
+pub const SEAT_FURITEN_TEMP: u32 = 16; // a winning tile passed by since the last own draw
+pub const SEAT_FURITEN_RIICHI: u32 = 32; // a winning tile passed by in riichi: furiten for the rest of the round
 const SEAT_NAGASHI: u32 = 64; // every discard so far was a terminal or honor, none called
 const SEAT_CONCEALED: u32 = 128; // no open meld
 const SEAT_DISCARDED: u32 = 256; // has discarded at least once this round
@@ -233,6 +233,9 @@ pub struct GameState {
     pub win_score: [u32; 8],
     // DRAW_* of the last round that ended without a win, with its tenpai / nagashi seats.
     pub draw_kind: u32,
+    // The round's public events (game_log.rs): 16 bits each, 2 per word; count and flags.
+    pub log: [u32; 64],
+    pub log_len: u32,
 }
 
 pub fn hand_count(s: &mut GameState, seat: u32, t: u32) -> u32 {

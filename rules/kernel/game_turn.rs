@@ -169,10 +169,16 @@ fn do_discard(s: &mut GameState, v: u32, tsumogiri: bool) -> u32 {
     take_tile(s, p, v);
     let t: u32 = value_type(v);
     let mut entry: u32 = v;
+    let mut flags: u32 = 0u32;
     if tsumogiri {
         entry |= 128u32;
+        flags |= LOG_TSUMOGIRI;
+    }
+    if s.phase == PHASE_RIICHI_DISCARD {
+        flags |= LOG_RIICHI_TILE;
     }
     river_push(s, p, entry);
+    log_push(s, EV_DISCARD, p, v, flags);
     // The cached waits are those of the hand before the draw; discarding a tile of the drawn
     // tile's type gives that hand back.
     if s.drawn == NO_TILE_VALUE || value_type(s.drawn) != t {
@@ -216,8 +222,9 @@ fn do_self_kan(s: &mut GameState, t: u32) -> u32 {
         let n: u32 = meld_count(s, p);
         s.melds[(p * 4u32 + n) as usize] = meld_word(MELD_CLOSED_KAN, t) | (reds << MELD_REDS_SHIFT);
         s.meld_counts = with_byte(s.meld_counts, p, n + 1u32);
+        log_push(s, EV_CLOSED_KAN, p, t, LOG_WITH_RED * (reds > 0u32) as u32);
         // A closed kan shows its dora at once.
-        s.dora_revealed += 1u32;
+        reveal_dora(s, 1u32);
         update_waits(s, p);
         return set_claim(s, p, t, 2u32);
     }
@@ -232,6 +239,7 @@ fn do_self_kan(s: &mut GameState, t: u32) -> u32 {
             s.melds[(p * 4u32 + i) as usize] = ((m & !15u32) | MELD_ADDED_KAN) + red;
         }
     }
+    log_push(s, EV_ADDED_KAN, p, v, LOG_WITH_RED * (v >= 34u32) as u32);
     s.dora_pending += 1u32;
     update_waits(s, p);
     set_claim(s, p, v, 1u32)
@@ -249,6 +257,7 @@ fn do_turn_action(s: &mut GameState, a: u32) -> u32 {
     }
     if a == ACTION_RIICHI {
         s.seat_flags[p as usize] |= SEAT_RIICHI_PENDING;
+        log_push(s, EV_RIICHI, p, LOG_NO_TILE, 0u32);
         s.phase = PHASE_RIICHI_DISCARD;
         return TASK_DONE;
     }

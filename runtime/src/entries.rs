@@ -16,3 +16,11 @@ pub const UPDATE_ENTRIES: [(&str, &str, &str, &str); 2] = [
     ("game_step_main", "game_step", "GameState", "u32"),
     ("game_deal_main", "game_deal", "GameState", "DealInput"),
 ];
+
+/// The read entry points, after [`UPDATE_ENTRIES`] in binding order: (entry point, kernel function
+/// `fn(State, Arg) -> Out`, state struct, argument type, output struct). Each takes two binding
+/// slots: at slot k its state (read-only) binds 1+2k, its arguments 2+2k and its output 3+2k.
+pub const READ_ENTRIES: [(&str, &str, &str, &str, &str); 2] = [
+    ("observe_planes_main", "observe_planes", "GameState", "u32", "ObsPlanes"),
+    ("observe_tokens_main", "observe_tokens", "GameState", "u32", "ObsTokens"),
+];

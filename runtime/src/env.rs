@@ -12,6 +12,7 @@
 //! let step = env.step(&actions).unwrap();
 //! ```
 
+mod observe;
 mod table;
 
 use rayon::prelude::*;
@@ -22,6 +23,7 @@ use crate::gpu::{Gpu, GpuError};
 use crate::tile::Tile;
 use crate::Variant;
 
+pub use observe::Observer;
 pub use table::{Deal, DrawKind, DrawRecord, Table, WinRecord};
 
 /// How long one game lasts (the kernel's `MODE_*`).
@@ -131,6 +133,9 @@ pub struct Config {
     pub auto_reset: bool,
     /// CPU threads: `None` = rayon's global pool (all cores), `Some(n)` = a pool of n threads.
     pub threads: Option<usize>,
+    /// Observation forms written for each env's current player by every reset and step
+    /// ([`Env::observation`]); empty (the default) costs nothing.
+    pub observe: Vec<crate::observe::Form>,
 }
 
 impl Config {
@@ -146,6 +151,7 @@ impl Config {
             penalty: None,
             auto_reset: false,
             threads: None,
+            observe: Vec::new(),
         }
     }
 }
@@ -183,6 +189,13 @@ pub enum EnvError {
         /// What is wrong with it.
         reason: String,
     },
+    /// An observer seat outside 0..3 (4 = the current player, where a per-env seat is given).
+    BadSeat {
+        /// The env it was for.
+        env: usize,
+        /// The seat given.
+        seat: u32,
+    },
     /// A dealer outside 0..3.
     BadDealer {
         /// The env it was for.
@@ -209,6 +222,12 @@ impl std::fmt::Display for EnvError {
             EnvError::BadWall { env, reason } => write!(f, "wall of env {env}: {reason}"),
             EnvError::BadDealer { env, dealer } => {
                 write!(f, "first dealer of env {env} is {dealer}: seats are 0..3")
+            }
+            EnvError::BadSeat { env, seat } => {
+                write!(
+                    f,
+                    "observer seat {seat} of env {env}: seats are 0..3 (4 = the current player)"
+                )
             }
             EnvError::Gpu(e) => write!(f, "{e}"),
         }
@@ -387,6 +406,14 @@ const PARALLEL_MIN: usize = 32;
 const CHUNK: usize = 8;
 
 impl CpuEnv {
+    /// Runs `job` on the env's thread pool when it has one (and is not serial).
+    fn install<R: Send>(&self, job: impl FnOnce() -> R + Send) -> R {
+        match &self.pool {
+            Some(pool) if !self.serial => pool.install(job),
+            _ => job(),
+        }
+    }
+
     fn reset(&mut self, variant: Variant, inputs: &[u32]) {
         let serial = self.serial;
         let states = &mut self.states;
@@ -456,6 +483,10 @@ pub struct Env {
     /// ResetInput words of every env, reused by each reset.
     reset_inputs: Vec<u32>,
     epoch: u64,
+    /// The per-step observations, one buffer per form of `config.observe`.
+    observations: Vec<Vec<u32>>,
+    /// The buffer [`Env::observe`] returns.
+    observed: Vec<u8>,
 }
 
 impl Env {
@@ -540,6 +571,8 @@ impl Env {
             step: Step::with_batch(b),
             reset_inputs: vec![0; b * words.0],
             epoch: 0,
+            observations: config.observe.iter().map(|f| vec![0; b * f.words()]).collect(),
+            observed: Vec::new(),
             config,
         })
     }
@@ -641,6 +674,7 @@ impl Env {
                 self.step.fill(views);
             }
         }
+        self.write_observations()?;
         Ok(&self.step)
     }
 
@@ -709,6 +743,7 @@ impl Env {
                 self.step.fill(views);
             }
         }
+        self.write_observations()?;
         Ok(&self.step)
     }
 }

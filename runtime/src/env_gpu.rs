@@ -5,7 +5,16 @@
 //! `game_deal_main` on the states in place.
 
 use crate::gpu::{groups, EntrySpec, Gpu, GpuError};
+use crate::observe::Form;
 use crate::Variant;
+
+/// The read entry point that writes `form`.
+fn observe_entry(form: Form) -> &'static str {
+    match form {
+        Form::Planes => "observe_planes_main",
+        Form::Tokens => "observe_tokens_main",
+    }
+}
 
 const NEW: &str = "game_new_main";
 const VIEW: &str = "game_view_main";
@@ -43,6 +52,18 @@ pub(crate) struct GpuEnv {
     passes: [Option<Pass>; 4],
     /// The last views read back (StepView words of every env).
     views: Vec<u32>,
+    /// Observations, made on first use: observer seats, and per form its pass, output and readback.
+    observer_args: Option<wgpu::Buffer>,
+    observe: [Option<ObservePass>; 2],
+}
+
+/// One observation form's read entry, its output buffer and its readback, and the last words read.
+struct ObservePass {
+    pass: Pass,
+    out: wgpu::Buffer,
+    readback: wgpu::Buffer,
+    bytes: u64,
+    words: Vec<u32>,
 }
 
 impl GpuEnv {
@@ -95,6 +116,8 @@ impl GpuEnv {
             wgsl,
             passes: [None, None, None, None],
             views: Vec::with_capacity(batch * view_words),
+            observer_args: None,
+            observe: [None, None],
         })
     }
 
@@ -122,7 +145,7 @@ impl GpuEnv {
             }
         };
         let (pipeline, layout) = self.gpu.pipeline(self.wgsl, spec);
-        let bind_group = self.gpu.bind_group(&layout, spec, first, second);
+        let bind_group = self.gpu.bind_group(&layout, spec, first, second, None);
         self.passes[stage as usize] = Some(Pass { pipeline, bind_group });
     }
 
@@ -182,6 +205,72 @@ impl GpuEnv {
             self.gpu.queue().write_buffer(deals, 0, bytemuck::cast_slice(inputs));
         }
         self.run(Stage::Deal)
+    }
+
+    /// Observations of `form` for the seats in `args` (one per env; 4 = the current player), read
+    /// back from the device.
+    pub(crate) fn observe(&mut self, form: Form, args: &[u32]) -> Result<&[u32], GpuError> {
+        let device = self.gpu.device().clone();
+        let args_buffer = self.observer_args.get_or_insert_with(|| {
+            device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("rinshan observer seats"),
+                size: (self.batch * 4) as u64,
+                usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            })
+        });
+        self.gpu
+            .queue()
+            .write_buffer(args_buffer, 0, bytemuck::cast_slice(args));
+        let slot = form as usize;
+        if self.observe[slot].is_none() {
+            let bytes = (self.batch * form.bytes()) as u64;
+            let buffer = |label: &str, usage: wgpu::BufferUsages| {
+                device.create_buffer(&wgpu::BufferDescriptor {
+                    label: Some(label),
+                    size: bytes,
+                    usage,
+                    mapped_at_creation: false,
+                })
+            };
+            use wgpu::BufferUsages as U;
+            let out = buffer("rinshan observations", U::STORAGE | U::COPY_SRC);
+            let readback = buffer("rinshan observations readback", U::MAP_READ | U::COPY_DST);
+            let spec = EntrySpec::read(observe_entry(form));
+            let (pipeline, layout) = self.gpu.pipeline(self.wgsl, spec);
+            let Some(args_buffer) = &self.observer_args else {
+                unreachable!("made above")
+            };
+            let bind_group = self
+                .gpu
+                .bind_group(&layout, spec, &self.states, args_buffer, Some(&out));
+            self.observe[slot] = Some(ObservePass {
+                pass: Pass { pipeline, bind_group },
+                out,
+                readback,
+                bytes,
+                words: Vec::new(),
+            });
+        }
+        let Some(o) = &mut self.observe[slot] else {
+            unreachable!("made above")
+        };
+        let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
+            label: Some("rinshan observe"),
+        });
+        {
+            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                label: Some("rinshan observe"),
+                timestamp_writes: None,
+            });
+            pass.set_pipeline(&o.pass.pipeline);
+            pass.set_bind_group(0, &o.pass.bind_group, &[]);
+            pass.dispatch_workgroups(groups(self.batch), 1, 1);
+        }
+        encoder.copy_buffer_to_buffer(&o.out, 0, &o.readback, 0, o.bytes);
+        self.gpu.queue().submit([encoder.finish()]);
+        self.gpu.read_words(&o.readback, &mut o.words)?;
+        Ok(&o.words)
     }
 
     /// Every env's `GameState` words, read back from the device.

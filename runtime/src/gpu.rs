@@ -70,25 +70,44 @@ impl Kernel {
     }
 }
 
-/// One compute entry point of the generated module and its two storage bindings: the translator
-/// gives the k-th entry point (in [`crate::entries`] order) bindings 1+2k and 2+2k.
+/// One compute entry point of the generated module and its storage bindings: the translator
+/// gives the entry at binding slot k (in [`crate::entries`] order; a read entry takes two slots)
+/// bindings 1+2k and 2+2k, and a read entry also 3+2k.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub(crate) struct EntrySpec {
     pub name: &'static str,
-    /// (binding, read-only) of the entry's first and second buffer.
+    /// (binding, read-only) of the entry's first, second and (read entries) third buffer.
     pub first: (u32, bool),
     pub second: (u32, bool),
+    pub third: Option<(u32, bool)>,
 }
 
 impl EntrySpec {
+    /// The entry's first binding slot.
     fn index(name: &str) -> u32 {
-        let names = entries::ENTRIES
+        let slots = entries::ENTRIES
             .iter()
             .chain(entries::UPDATE_ENTRIES.iter())
-            .map(|e| e.0);
-        match names.enumerate().find(|(_, n)| *n == name) {
-            Some((k, _)) => k as u32,
-            None => unreachable!("`{name}` is not an entry point in entries.rs"),
+            .map(|e| (e.0, 1))
+            .chain(entries::READ_ENTRIES.iter().map(|e| (e.0, 2)));
+        let mut k = 0;
+        for (n, size) in slots {
+            if n == name {
+                return k;
+            }
+            k += size;
+        }
+        unreachable!("`{name}` is not an entry point in entries.rs")
+    }
+
+    /// A read entry: state and arguments (read-only) at 1+2k and 2+2k, output at 3+2k.
+    pub fn read(name: &'static str) -> EntrySpec {
+        let k = EntrySpec::index(name);
+        EntrySpec {
+            name,
+            first: (1 + 2 * k, true),
+            second: (2 + 2 * k, true),
+            third: Some((3 + 2 * k, false)),
         }
     }
 
@@ -99,6 +118,7 @@ impl EntrySpec {
             name,
             first: (1 + 2 * k, true),
             second: (2 + 2 * k, false),
+            third: None,
         }
     }
 
@@ -109,6 +129,7 @@ impl EntrySpec {
             name,
             first: (1 + 2 * k, false),
             second: (2 + 2 * k, true),
+            third: None,
         }
     }
 }
@@ -228,9 +249,11 @@ impl Gpu {
                 },
                 count: None,
             };
+            let mut bindings = vec![storage((0, true)), storage(entry.first), storage(entry.second)];
+            bindings.extend(entry.third.map(storage));
             let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
                 label: Some(entry.name),
-                entries: &[storage((0, true)), storage(entry.first), storage(entry.second)],
+                entries: &bindings,
             });
             let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
                 label: Some(entry.name),
@@ -250,31 +273,39 @@ impl Gpu {
         found.clone()
     }
 
-    /// A bind group for `entry`: the tables and its two buffers.
+    /// A bind group for `entry`: the tables and its buffers (`third` for a read entry's output).
     pub(crate) fn bind_group(
         &self,
         layout: &wgpu::BindGroupLayout,
         entry: EntrySpec,
         first: &wgpu::Buffer,
         second: &wgpu::Buffer,
+        third: Option<&wgpu::Buffer>,
     ) -> wgpu::BindGroup {
+        let mut entries = vec![
+            wgpu::BindGroupEntry {
+                binding: 0,
+                resource: self.tables.as_entire_binding(),
+            },
+            wgpu::BindGroupEntry {
+                binding: entry.first.0,
+                resource: first.as_entire_binding(),
+            },
+            wgpu::BindGroupEntry {
+                binding: entry.second.0,
+                resource: second.as_entire_binding(),
+            },
+        ];
+        if let (Some((binding, _)), Some(buffer)) = (entry.third, third) {
+            entries.push(wgpu::BindGroupEntry {
+                binding,
+                resource: buffer.as_entire_binding(),
+            });
+        }
         self.device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some(entry.name),
             layout,
-            entries: &[
-                wgpu::BindGroupEntry {
-                    binding: 0,
-                    resource: self.tables.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: entry.first.0,
-                    resource: first.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: entry.second.0,
-                    resource: second.as_entire_binding(),
-                },
-            ],
+            entries: &entries,
         })
     }
 
@@ -353,7 +384,7 @@ impl Gpu {
         });
         let spec = kernel.spec();
         let (pipeline, layout) = self.pipeline(wgsl, spec);
-        let bind_group = self.bind_group(&layout, spec, &input_buffer, &output_buffer);
+        let bind_group = self.bind_group(&layout, spec, &input_buffer, &output_buffer, None);
         let mut encoder = self
             .device
             .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("rinshan") });

@@ -9,6 +9,7 @@
 //! * [`hand`]     — shanten and hand scoring on the CPU, one hand or a batch
 //! * [`gpu`]      — the same kernels on a GPU through wgpu
 //! * [`env`]      — the batched game environment (reset, step, masks, rewards) on the CPU or the GPU
+//! * [`observe`]  — what an agent sees: the observation forms and the table documenting their fields
 //! * [`tenhou`]   — tenhou.net/6 logs: reading them and replaying them through the red variant
 //! * [`random`]   — deterministic random hands and legal actions for tests, benchmarks and self-play
 
@@ -29,6 +30,7 @@ mod env_gpu;
 pub mod gpu;
 pub mod hand;
 pub mod notation;
+pub mod observe;
 pub mod random;
 pub mod tenhou;
 pub mod tile;

@@ -11,12 +11,15 @@
 //!   record into a function-scope `var`, passes a pointer to it with the matching argument,
 //!   and writes it back (a `ptr<storage>` cannot be passed to a kernel function that takes
 //!   `ptr<function, T>`, so the copy is what makes `&mut State` work in place).
+//! - a `ReadEntry` takes two slots, k and k + 1: its read-only state array at binding `1 + 2k`,
+//!   its read-only argument array at `2 + 2k` and its output array at `3 + 2k` (`4 + 2k` stays
+//!   unused), so the entries around it keep the two-binding layout.
 
 use crate::diag::{Diag, Error, Result};
 use crate::items::Program;
 use crate::names::wgsl_ident;
 use crate::types::Ty;
-use crate::{Entry, UpdateEntry};
+use crate::{Entry, ReadEntry, UpdateEntry};
 
 pub(crate) const TABLES_DECL: &str = "@group(0) @binding(0) var<storage, read> tables: array<u32>;\n";
 
@@ -29,17 +32,13 @@ fn entry_error<'p>(prog: &'p Program, function: &'p str, fallback: Diag<'p>) -> 
 }
 
 /// Checks the entry point's name and the module-scope names it declares.
-fn check_names(prog: &Program, name: &str, suffixes: [&str; 2], bad: &impl Fn(String) -> Error) -> Result<()> {
+fn check_names(prog: &Program, name: &str, suffixes: &[&str], bad: &impl Fn(String) -> Error) -> Result<()> {
     if !is_plain_ident(name) || wgsl_ident(name) != *name {
         return Err(bad(format!(
             "entry point name `{name}` is not usable as a WGSL identifier"
         )));
     }
-    let globals = [
-        name.to_string(),
-        format!("{name}{}", suffixes[0]),
-        format!("{name}{}", suffixes[1]),
-    ];
+    let globals = std::iter::once(name.to_string()).chain(suffixes.iter().map(|s| format!("{name}{s}")));
     for global in globals {
         if prog.module_names.contains(&global) {
             return Err(bad(format!(
@@ -53,7 +52,7 @@ fn check_names(prog: &Program, name: &str, suffixes: [&str; 2], bad: &impl Fn(St
 pub(crate) fn lower_entry(prog: &Program, k: usize, entry: &Entry, fallback: Diag) -> Result<String> {
     let bad = entry_error(prog, &entry.function, fallback);
     let name = &entry.name;
-    check_names(prog, name, ["_in", "_out"], &bad)?;
+    check_names(prog, name, &["_in", "_out"], &bad)?;
     let Some(f) = prog.fns.get(&entry.function) else {
         return Err(fallback.whole_file(format!(
             "entry `{name}`: function `{}` is not defined in the kernel sources",
@@ -96,7 +95,7 @@ pub(crate) fn lower_entry(prog: &Program, k: usize, entry: &Entry, fallback: Dia
 pub(crate) fn lower_update_entry(prog: &Program, k: usize, entry: &UpdateEntry, fallback: Diag) -> Result<String> {
     let bad = entry_error(prog, &entry.function, fallback);
     let name = &entry.name;
-    check_names(prog, name, ["_state", "_arg"], &bad)?;
+    check_names(prog, name, &["_state", "_arg"], &bad)?;
     let Some(f) = prog.fns.get(&entry.function) else {
         return Err(fallback.whole_file(format!(
             "entry `{name}`: function `{}` is not defined in the kernel sources",
@@ -143,6 +142,51 @@ pub(crate) fn lower_update_entry(prog: &Program, k: usize, entry: &UpdateEntry, 
              var {local} = {name}_state[{index}];\n    \
              {func}(&{local}, {name}_arg[{index}]);\n    \
              {name}_state[{index}] = {local};\n\
+         }}\n"
+    ))
+}
+
+pub(crate) fn lower_read_entry(prog: &Program, k: usize, entry: &ReadEntry, fallback: Diag) -> Result<String> {
+    let bad = entry_error(prog, &entry.function, fallback);
+    let name = &entry.name;
+    check_names(prog, name, &["_state", "_arg", "_out"], &bad)?;
+    let Some(f) = prog.fns.get(&entry.function) else {
+        return Err(fallback.whole_file(format!(
+            "entry `{name}`: function `{}` is not defined in the kernel sources",
+            entry.function
+        )));
+    };
+    let state = entry_ty(&entry.state);
+    let arg = entry_ty(&entry.arg);
+    let output = entry_ty(&entry.output);
+    if f.params.len() != 2 || f.params[0].ty != state || f.params[1].ty != arg || f.ret != output {
+        return Err(bad(format!(
+            "entry `{name}` needs `fn {}(state: {}, arg: {}) -> {}`",
+            entry.function, entry.state, entry.arg, entry.output
+        )));
+    }
+    for ty in [&state, &arg, &output] {
+        host_shareable(prog, ty).map_err(|why| {
+            bad(format!(
+                "entry `{name}`: `{}` cannot live in a storage buffer: {why}",
+                ty.rust()
+            ))
+        })?;
+    }
+    let func = wgsl_ident(&entry.function);
+    let index = if func == "i" { "i_1" } else { "i" };
+    let (bstate, barg, bout) = (1 + 2 * k, 2 + 2 * k, 3 + 2 * k);
+    let (state_w, arg_w, out_w) = (state.wgsl(), arg.wgsl(), output.wgsl());
+    Ok(format!(
+        "@group(0) @binding({bstate}) var<storage, read> {name}_state: array<{state_w}>;\n\
+         @group(0) @binding({barg}) var<storage, read> {name}_arg: array<{arg_w}>;\n\
+         @group(0) @binding({bout}) var<storage, read_write> {name}_out: array<{out_w}>;\n\
+         \n\
+         @compute @workgroup_size(64)\n\
+         fn {name}(@builtin(global_invocation_id) gid: vec3<u32>) {{\n    \
+             let {index} = gid.x;\n    \
+             if ({index} >= arrayLength(&{name}_out)) {{ return; }}\n    \
+             {name}_out[{index}] = {func}({name}_state[{index}], {name}_arg[{index}]);\n\
          }}\n"
     ))
 }

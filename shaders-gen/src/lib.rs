@@ -74,13 +74,28 @@ pub struct UpdateEntry {
     pub arg: String,
 }
 
-/// One compute entry point of either kind.
+/// An entry that reads a record with an argument: `fn function(state: State, arg: Arg) -> Out`.
+///
+/// `name` runs once per element of the output array: `output[i] = function(state[i], arg[i])`
+/// (an observation of game `i` for the seat in `arg[i]`). All three must be host-shareable.
+#[derive(Debug, Clone)]
+pub struct ReadEntry {
+    pub name: String,
+    pub function: String,
+    pub state: String,
+    pub arg: String,
+    pub output: String,
+}
+
+/// One compute entry point of any kind.
 #[derive(Debug, Clone)]
 pub enum EntryPoint {
     /// `output[i] = function(input[i])`.
     Map(Entry),
     /// `function(&mut state[i], arg[i])`.
     Update(UpdateEntry),
+    /// `output[i] = function(state[i], arg[i])`; takes two binding slots.
+    Read(ReadEntry),
 }
 
 impl From<Entry> for EntryPoint {
@@ -95,9 +110,14 @@ impl From<UpdateEntry> for EntryPoint {
     }
 }
 
-/// The entry points of a module from plain tables, map entries first, then update entries (the
-/// binding order): `(name, function, input, output)` and `(name, function, state, arg)`.
-pub fn entry_points(map: &[(&str, &str, &str, &str)], update: &[(&str, &str, &str, &str)]) -> Vec<EntryPoint> {
+/// The entry points of a module from plain tables, map entries first, then update entries, then
+/// read entries (the binding order): `(name, function, input, output)`, `(name, function, state,
+/// arg)` and `(name, function, state, arg, output)`.
+pub fn entry_points(
+    map: &[(&str, &str, &str, &str)],
+    update: &[(&str, &str, &str, &str)],
+    read: &[(&str, &str, &str, &str, &str)],
+) -> Vec<EntryPoint> {
     let maps = map.iter().map(|(name, function, input, output)| {
         EntryPoint::Map(Entry {
             name: name.to_string(),
@@ -114,7 +134,16 @@ pub fn entry_points(map: &[(&str, &str, &str, &str)], update: &[(&str, &str, &st
             arg: arg.to_string(),
         })
     });
-    maps.chain(updates).collect()
+    let reads = read.iter().map(|(name, function, state, arg, output)| {
+        EntryPoint::Read(ReadEntry {
+            name: name.to_string(),
+            function: function.to_string(),
+            state: state.to_string(),
+            arg: arg.to_string(),
+            output: output.to_string(),
+        })
+    });
+    maps.chain(updates).chain(reads).collect()
 }
 
 impl EntryPoint {
@@ -123,6 +152,15 @@ impl EntryPoint {
         match self {
             EntryPoint::Map(e) => &e.name,
             EntryPoint::Update(e) => &e.name,
+            EntryPoint::Read(e) => &e.name,
+        }
+    }
+
+    /// Binding slots taken (two bindings each): a read entry needs three bindings, so two slots.
+    pub fn slots(&self) -> usize {
+        match self {
+            EntryPoint::Read(_) => 2,
+            _ => 1,
         }
     }
 }
@@ -137,9 +175,11 @@ pub fn translate(sources: &[Source], entries: &[Entry]) -> Result<String, Error>
     translate_entry_points(sources, &entries)
 }
 
-/// Like [`translate`], for a mix of entry kinds; the k-th entry point binds `1 + 2k` and
-/// `2 + 2k`: a `Map` entry its input (read) and output (read-write) arrays, an `Update` entry
-/// its state (read-write) and argument (read) arrays.
+/// Like [`translate`], for a mix of entry kinds. Entries take binding slots in order (a `Read`
+/// entry two, the others one); the entry at slot k binds `1 + 2k` and `2 + 2k`: a `Map` entry
+/// its input (read) and output (read-write) arrays, an `Update` entry its state (read-write)
+/// and argument (read) arrays, a `Read` entry its state and argument (read) and, at `3 + 2k`,
+/// its output (read-write).
 pub fn translate_entry_points(sources: &[Source], entries: &[EntryPoint]) -> Result<String, Error> {
     let mut files = Vec::new();
     for src in sources {
@@ -169,7 +209,8 @@ pub fn translate_entry_points(sources: &[Source], entries: &[EntryPoint]) -> Res
         file: sources.first().map_or("<no sources>", |s| s.path.as_str()),
     };
     let mut entry_names = std::collections::HashSet::new();
-    for (k, e) in entries.iter().enumerate() {
+    let mut k = 0;
+    for e in entries {
         if !entry_names.insert(e.name()) {
             return Err(fallback.whole_file(format!("two entries are named `{}`", e.name())));
         }
@@ -177,7 +218,9 @@ pub fn translate_entry_points(sources: &[Source], entries: &[EntryPoint]) -> Res
         out.push_str(&match e {
             EntryPoint::Map(e) => entry::lower_entry(&prog, k, e, fallback)?,
             EntryPoint::Update(e) => entry::lower_update_entry(&prog, k, e, fallback)?,
+            EntryPoint::Read(e) => entry::lower_read_entry(&prog, k, e, fallback)?,
         });
+        k += e.slots();
     }
     if let Err(msg) = validate(&out) {
         // A bug in the translator rather than in the kernel: report it with the WGSL.

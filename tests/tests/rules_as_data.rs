@@ -74,6 +74,7 @@ fn compile_with_kernel(
     let entries = rinshan_shaders_gen::entry_points(
         &rinshan_tests::entries::ENTRIES,
         &rinshan_tests::entries::UPDATE_ENTRIES,
+        &rinshan_tests::entries::READ_ENTRIES,
     );
     rinshan_shaders_gen::translate_entry_points(&sources, &entries).unwrap_or_else(|e| panic!("{e}"))
 }

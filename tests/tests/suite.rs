@@ -6,6 +6,7 @@ mod env_api;
 mod env_parity;
 mod game_invariants;
 mod generated_modules;
+mod observation;
 mod parity;
 mod rules_as_data;
 mod scenarios;

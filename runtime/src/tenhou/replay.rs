@@ -259,6 +259,7 @@ fn replay_in(
         penalty: None,
         auto_reset: false,
         threads: Some(1),
+        observe: Vec::new(),
     })?;
     env.reset()?;
     let mut runs: Vec<Run> = games

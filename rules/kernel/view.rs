@@ -1,0 +1,565 @@
+// What one seat may see of a game: the observation, in two forms read from the same facts.
+// Planes (C x 34 bytes, row-major, 4 bytes per word little-endian) for MLP/CNN agents, and tokens
+// (hand, melds, dora, the round's public events in order, ...) for Transformers; both carry the
+// same scalars. Seats are ego-centric: 0 = the observer, 1 = right, 2 = across, 3 = left.
+// Everything here reads only what the observer may know: its own hand, draws and waits, the
+// public record, and the decision it is asked for. Other seats' hands, waits, furiten, claim
+// options and choices, the wall and the hidden dead wall are never read (a test permutes them).
+// Field meanings, scales and dtypes are documented once, on the host (rinshan::observe::fields).
+
+// What the view needs about one observer, gathered once.
+struct Seen {
+    seat: u32,
+    hand: [u32; 34],
+    // counts by type of everything visible to the observer: own hand, rivers (not called), melds,
+    // indicators; and red fives among them outside the own hand, by suit.
+    seen: [u32; 34],
+    red_seen: u32,
+    // dora multiplicity by type (revealed indicators only).
+    dora: [u32; 34],
+    // The decision asked of the observer (DECISION_*).
+    decision: u32,
+}
+
+fn rel(seat: u32, q: u32) -> u32 {
+    (q + 4u32 - seat) % 4u32
+}
+
+fn observer(s: &mut GameState, arg: u32) -> u32 {
+    if arg >= 4u32 {
+        return s.current;
+    }
+    arg
+}
+
+fn decision_of(s: &mut GameState, seat: u32) -> u32 {
+    if s.current != seat {
+        return DECISION_NONE;
+    }
+    if s.phase == PHASE_TURN {
+        return DECISION_TURN;
+    }
+    if s.phase == PHASE_RIICHI_DISCARD {
+        return DECISION_RIICHI_DISCARD;
+    }
+    if s.phase == PHASE_CLAIM {
+        if s.claim_kan != 0u32 {
+            return DECISION_CHANKAN;
+        }
+        return DECISION_CLAIM;
+    }
+    DECISION_NONE
+}
+
+fn meld_types(m: u32, c: &mut [u32; 34]) {
+    let k: u32 = meld_kind(m);
+    let t: u32 = meld_tile(m);
+    if k == MELD_CHI {
+        c[t as usize] += 1u32;
+        c[(t + 1u32) as usize] += 1u32;
+        c[(t + 2u32) as usize] += 1u32;
+    } else if k == MELD_PON {
+        c[t as usize] += 3u32;
+    } else {
+        c[t as usize] += 4u32;
+    }
+}
+
+fn river_entry(s: &mut GameState, q: u32, i: u32) -> u32 {
+    byte_of(s.rivers[(q * 6u32 + i / 4u32) as usize], i % 4u32)
+}
+
+fn gather(s: &mut GameState, seat: u32) -> Seen {
+    let hand: [u32; 34] = hand_counts(s, seat);
+    let mut seen: [u32; 34] = hand;
+    let mut red_seen: u32 = 0u32;
+    let mut dora: [u32; 34] = [0u32; 34];
+    for q in 0u32..4u32 {
+        for i in 0u32..byte_of(s.river_lens, q) {
+            let e: u32 = river_entry(s, q, i);
+            if (e & 64u32) == 0u32 {
+                let v: u32 = e & 63u32;
+                seen[value_type(v) as usize] += 1u32;
+                if v >= 34u32 {
+                    red_seen |= 1u32 << (v - 34u32);
+                }
+            }
+        }
+        for i in 0u32..meld_count(s, q) {
+            let m: u32 = s.melds[(q * 4u32 + i) as usize];
+            meld_types(m, &mut seen);
+            if ((m >> MELD_REDS_SHIFT) & 3u32) != 0u32 {
+                red_seen |= 1u32 << (meld_tile(m) / 9u32);
+            }
+        }
+    }
+    for i in 0u32..s.dora_revealed {
+        let v: u32 = wall_tile(s, WALL_DORA + i);
+        let t: u32 = value_type(v);
+        seen[t as usize] += 1u32;
+        dora[dora_of(t) as usize] += 1u32;
+        if v >= 34u32 {
+            red_seen |= 1u32 << (v - 34u32);
+        }
+    }
+    for t in 0u32..34u32 {
+        seen[t as usize] = seen[t as usize].min(4u32);
+    }
+    Seen {
+        seat: seat,
+        hand: hand,
+        seen: seen,
+        red_seen: red_seen,
+        dora: dora,
+        decision: decision_of(s, seat),
+    }
+}
+
+fn put_byte(out: &mut [u32; 544], i: u32, v: u32) {
+    out[(i / 4u32) as usize] |= (v & 255u32) << ((i % 4u32) * 8u32);
+}
+
+fn put_tok(out: &mut [u32; 254], i: u32, v: u32) {
+    out[(i / 4u32) as usize] |= (v & 255u32) << ((i % 4u32) * 8u32);
+}
+
+fn put_plane(out: &mut [u32; 544], row: u32, t: u32, v: u32) {
+    put_byte(out, row * 34u32 + t, v);
+}
+
+fn put_scalar(sc: &mut [u32; 24], i: u32, v: i32) {
+    sc[(i / 2u32) as usize] |= ((v as u32) & 65535u32) << ((i % 2u32) * 16u32);
+}
+
+// The observer's own waits: those of its 13-tile hand (cached by the engine at each change of
+// that hand); none right after a call, when the hand has no 13-tile form yet.
+fn own_waits(s: &mut GameState, seat: u32) -> [u32; 2] {
+    let after_call: bool = s.current == seat && s.phase == PHASE_TURN && s.drawn == NO_TILE_VALUE;
+    if after_call {
+        return [0u32; 2];
+    }
+    [s.waits[(seat * 2u32) as usize], s.waits[(seat * 2u32 + 1u32) as usize]]
+}
+
+fn riichi_state(s: &mut GameState, q: u32) -> u32 {
+    let f: u32 = s.seat_flags[q as usize];
+    if (f & SEAT_DOUBLE_RIICHI) != 0u32 {
+        return RIICHI_DOUBLE;
+    }
+    if (f & SEAT_RIICHI) != 0u32 {
+        return RIICHI_ACCEPTED;
+    }
+    if (f & SEAT_RIICHI_PENDING) != 0u32 {
+        return RIICHI_DECLARED;
+    }
+    0u32
+}
+
+fn view_scalars(s: &mut GameState, v: Seen) -> [u32; 24] {
+    let seat: u32 = v.seat;
+    let mut sc: [u32; 24] = [0u32; 24];
+    let first: u32 = (s.dealer + 64u32 - s.round) % 4u32;
+    for j in 0u32..4u32 {
+        let p: u32 = (seat + j) % 4u32;
+        let f: u32 = s.seat_flags[p as usize];
+        put_scalar(&mut sc, S_SCORE + j, s.scores[p as usize] / 100i32);
+        let mut rank: u32 = 0u32;
+        for q in 0u32..4u32 {
+            let above: bool = s.scores[q as usize] > s.scores[p as usize];
+            let tie_before: bool =
+                s.scores[q as usize] == s.scores[p as usize] && (q + 4u32 - first) % 4u32 < (p + 4u32 - first) % 4u32;
+            if q != p && (above || tie_before) {
+                rank += 1u32;
+            }
+        }
+        put_scalar(&mut sc, S_RANK + j, rank as i32);
+        put_scalar(&mut sc, S_RIICHI + j, riichi_state(s, p) as i32);
+        put_scalar(&mut sc, S_IPPATSU + j, ((f & SEAT_IPPATSU) != 0u32) as i32);
+        put_scalar(&mut sc, S_CONCEALED + j, ((f & SEAT_CONCEALED) != 0u32) as i32);
+        put_scalar(&mut sc, S_DISCARDS + j, byte_of(s.river_lens, p) as i32);
+        put_scalar(&mut sc, S_MELDS + j, meld_count(s, p) as i32);
+    }
+    put_scalar(&mut sc, S_ROUND, s.round as i32);
+    put_scalar(&mut sc, S_ROUND_WIND, ((s.round / 4u32) % 4u32) as i32);
+    put_scalar(&mut sc, S_SEAT_WIND, rel(s.dealer, seat) as i32);
+    put_scalar(&mut sc, S_DEALER, rel(seat, s.dealer) as i32);
+    put_scalar(&mut sc, S_HONBA, s.honba as i32);
+    put_scalar(&mut sc, S_STICKS, s.sticks as i32);
+    put_scalar(&mut sc, S_TILES_LEFT, (s.live_end - s.next_draw) as i32);
+    put_scalar(&mut sc, S_KANS, s.kans as i32);
+    put_scalar(&mut sc, S_DORA_REVEALED, s.dora_revealed as i32);
+    put_scalar(&mut sc, S_SHANTEN, shanten(ShantenInput { hand: v.hand }).shanten);
+    let w: [u32; 2] = own_waits(s, seat);
+    let f: u32 = s.seat_flags[seat as usize];
+    let furiten_now: bool = (f & (SEAT_FURITEN_TEMP | SEAT_FURITEN_RIICHI)) != 0u32
+        || (w[0] & s.discarded[(seat * 2u32) as usize]) != 0u32
+        || (w[1] & s.discarded[(seat * 2u32 + 1u32) as usize]) != 0u32;
+    put_scalar(&mut sc, S_FURITEN, furiten_now as i32);
+    put_scalar(&mut sc, S_DECISION, v.decision as i32);
+    let mut from: i32 = -1i32;
+    if v.decision == DECISION_CLAIM || v.decision == DECISION_CHANKAN {
+        from = rel(seat, s.claim_from) as i32;
+    }
+    put_scalar(&mut sc, S_CLAIM_FROM, from);
+    put_scalar(&mut sc, S_FIRST_GO_AROUND, s.uninterrupted as i32);
+    put_scalar(&mut sc, S_MODE, s.mode as i32);
+    let mut last: i32 = 0i32;
+    if s.mode != MODE_SINGLE {
+        last = last_round(s) as i32;
+    }
+    put_scalar(&mut sc, S_ROUNDS_LEFT, last - (s.round as i32));
+    let mut own: [u32; 34] = v.hand;
+    let mut reds: u32 = 0u32;
+    for suit in 0u32..3u32 {
+        reds += holds_red(s, seat, suit) as u32;
+    }
+    for i in 0u32..meld_count(s, seat) {
+        let m: u32 = s.melds[(seat * 4u32 + i) as usize];
+        meld_types(m, &mut own);
+        reds += (m >> MELD_REDS_SHIFT) & 3u32;
+    }
+    let mut dora: u32 = reds;
+    for t in 0u32..34u32 {
+        dora += own[t as usize] * v.dora[t as usize];
+    }
+    put_scalar(&mut sc, S_OWN_DORA, dora as i32);
+    put_scalar(&mut sc, S_OWN_RED, reds as i32);
+    put_scalar(&mut sc, S_EVENTS, log_count(s) as i32);
+    put_scalar(&mut sc, S_ROUNDS_PLAYED, s.rounds as i32);
+    sc
+}
+
+fn set_has(set: [u32; 2], t: u32) -> bool {
+    ((set[(t / 32u32) as usize] >> (t % 32u32)) & 1u32) != 0u32
+}
+
+fn set_add(set: &mut [u32; 2], t: u32) {
+    set[(t / 32u32) as usize] |= 1u32 << (t % 32u32);
+}
+
+// Tiles safe against each seat (genbutsu), by absolute seat: its own discards, anything
+// discarded since its last discard, and anything discarded after its riichi declaration.
+fn safe_sets(s: &mut GameState) -> [u32; 8] {
+    let mut since: [u32; 8] = [0u32; 8];
+    let mut after_riichi: [u32; 8] = [0u32; 8];
+    let mut riichi: u32 = 0u32;
+    for i in 0u32..log_count(s) {
+        let e: u32 = log_entry(s, i);
+        let k: u32 = log_kind(e);
+        let a: u32 = log_actor(e);
+        if k == EV_RIICHI {
+            riichi |= 1u32 << a;
+        }
+        if k == EV_DISCARD {
+            let t: u32 = value_type(log_tile(e));
+            since[(a * 2u32) as usize] = 0u32;
+            since[(a * 2u32 + 1u32) as usize] = 0u32;
+            for q in 0u32..4u32 {
+                if q != a {
+                    since[(q * 2u32 + t / 32u32) as usize] |= 1u32 << (t % 32u32);
+                    if ((riichi >> q) & 1u32) != 0u32 {
+                        after_riichi[(q * 2u32 + t / 32u32) as usize] |= 1u32 << (t % 32u32);
+                    }
+                }
+            }
+        }
+    }
+    let mut safe: [u32; 8] = [0u32; 8];
+    for i in 0u32..8u32 {
+        safe[i as usize] = s.discarded[i as usize] | since[i as usize] | after_riichi[i as usize];
+    }
+    safe
+}
+
+fn mask_row(out: &mut [u32; 544], mask: [u32; 3], a: u32, row: u32, t: u32) {
+    if mask_has(mask, a) {
+        put_plane(out, row, t, 1u32);
+    }
+}
+
+pub fn observe_planes(state: GameState, arg: u32) -> ObsPlanes {
+    let mut s: GameState = state;
+    planes_of(&mut s, arg)
+}
+
+fn planes_of(s: &mut GameState, arg: u32) -> ObsPlanes {
+    let seat: u32 = observer(s, arg);
+    let v: Seen = gather(s, seat);
+    let mut out: [u32; 544] = [0u32; 544];
+    for t in 0u32..34u32 {
+        let c: u32 = v.hand[t as usize];
+        for k in 0u32..4u32 {
+            if c > k {
+                put_plane(&mut out, P_HAND + k, t, 1u32);
+            }
+        }
+        if v.seen[t as usize] != 0u32 {
+            put_plane(&mut out, P_SEEN, t, v.seen[t as usize]);
+        }
+        if v.dora[t as usize] != 0u32 {
+            put_plane(&mut out, P_DORA, t, v.dora[t as usize]);
+        }
+    }
+    for suit in 0u32..3u32 {
+        if holds_red(s, seat, suit) {
+            put_plane(&mut out, P_RED, suit * 9u32 + 4u32, 1u32);
+        }
+        if ((v.red_seen >> suit) & 1u32) != 0u32 {
+            put_plane(&mut out, P_RED_SEEN, suit * 9u32 + 4u32, 1u32);
+        }
+    }
+    if v.decision == DECISION_TURN || v.decision == DECISION_RIICHI_DISCARD {
+        if s.drawn != NO_TILE_VALUE {
+            put_plane(&mut out, P_DRAWN, value_type(s.drawn), 1u32);
+        }
+        let m: [u32; 3] = s.mask;
+        // A red and a black five are one type here.
+        let mut legal: [u32; 2] = [0u32; 2];
+        for a in 0u32..ACTION_DISCARD_COUNT {
+            if mask_has(m, ACTION_DISCARD + a) {
+                set_add(&mut legal, value_type(a));
+            }
+        }
+        if mask_has(m, ACTION_TSUMOGIRI) {
+            set_add(&mut legal, value_type(s.drawn));
+        }
+        for t in 0u32..34u32 {
+            if set_has(legal, t) {
+                put_plane(&mut out, P_LEGAL_DISCARD, t, 1u32);
+            }
+        }
+        for t in 0u32..34u32 {
+            mask_row(&mut out, m, ACTION_SELF_KAN + t, P_SELF_KAN, t);
+        }
+    }
+    if v.decision == DECISION_CLAIM || v.decision == DECISION_CHANKAN {
+        let t: u32 = value_type(s.claim_tile);
+        let m: [u32; 3] = s.mask;
+        put_plane(&mut out, P_TARGET, t, 1u32);
+        if mask_has(m, ACTION_CHI_LEFT) || mask_has(m, ACTION_CHI_LEFT_RED) {
+            put_plane(&mut out, P_CHI_LOW, t, 1u32);
+        }
+        if mask_has(m, ACTION_CHI_MIDDLE) || mask_has(m, ACTION_CHI_MIDDLE_RED) {
+            put_plane(&mut out, P_CHI_MIDDLE, t, 1u32);
+        }
+        if mask_has(m, ACTION_CHI_RIGHT) || mask_has(m, ACTION_CHI_RIGHT_RED) {
+            put_plane(&mut out, P_CHI_HIGH, t, 1u32);
+        }
+        if mask_has(m, ACTION_PON) || mask_has(m, ACTION_PON_RED) {
+            put_plane(&mut out, P_PON, t, 1u32);
+        }
+        mask_row(&mut out, m, ACTION_OPEN_KAN, P_OPEN_KAN, t);
+    }
+    let w: [u32; 2] = own_waits(s, seat);
+    for t in 0u32..34u32 {
+        if set_has(w, t) {
+            put_plane(&mut out, P_WAITS, t, 1u32);
+        }
+    }
+    let round_wind: u32 = EAST + (s.round / 4u32) % 4u32;
+    let seat_wind: u32 = EAST + rel(s.dealer, seat);
+    put_plane(&mut out, P_YAKUHAI, round_wind, 1u32 + (round_wind == seat_wind) as u32);
+    if round_wind != seat_wind {
+        put_plane(&mut out, P_YAKUHAI, seat_wind, 1u32);
+    }
+    for t in FIRST_DRAGON..34u32 {
+        put_plane(&mut out, P_YAKUHAI, t, 1u32);
+    }
+    for i in 0u32..s.dora_revealed {
+        let t: u32 = value_type(wall_tile(s, WALL_DORA + i));
+        let at: u32 = P_DORA_INDICATORS * 34u32 + t;
+        out[(at / 4u32) as usize] += 1u32 << ((at % 4u32) * 8u32);
+    }
+    view_seat_planes(s, seat, &mut out);
+    ObsPlanes {
+        planes: out,
+        scalars: view_scalars(s, v),
+    }
+}
+
+// Rows P_SEAT.. : each seat's river, melds and the tiles safe against it.
+fn view_seat_planes(s: &mut GameState, seat: u32, out: &mut [u32; 544]) {
+    let safe: [u32; 8] = safe_sets(s);
+    let mut riichi_tile: [u32; 4] = [NO_TILE_VALUE; 4];
+    for i in 0u32..log_count(s) {
+        let e: u32 = log_entry(s, i);
+        let k: u32 = log_kind(e);
+        let a: u32 = log_actor(e);
+        if k == EV_DISCARD && (log_flags(e) & LOG_RIICHI_TILE) != 0u32 {
+            riichi_tile[a as usize] = value_type(log_tile(e));
+        }
+        if k == EV_CHI || k == EV_PON || k == EV_OPEN_KAN {
+            let row: u32 = P_SEAT + rel(seat, a) * P_SEAT_ROWS + P_SEAT_CALLED_IN;
+            put_plane(out, row, value_type(log_tile(e)), 1u32);
+        }
+    }
+    for j in 0u32..4u32 {
+        let q: u32 = (seat + j) % 4u32;
+        let base: u32 = P_SEAT + j * P_SEAT_ROWS;
+        let mut discarded: [u32; 34] = [0u32; 34];
+        let mut tedashi: [u32; 34] = [0u32; 34];
+        let mut first: [u32; 34] = [0u32; 34];
+        let mut last: [u32; 34] = [0u32; 34];
+        let mut away: [u32; 34] = [0u32; 34];
+        let len: u32 = byte_of(s.river_lens, q);
+        for i in 0u32..len {
+            let e: u32 = river_entry(s, q, i);
+            let t: u32 = value_type(e & 63u32);
+            discarded[t as usize] += 1u32;
+            if (e & 128u32) == 0u32 {
+                tedashi[t as usize] += 1u32;
+            }
+            if first[t as usize] == 0u32 {
+                first[t as usize] = i + 1u32;
+            }
+            last[t as usize] = i + 1u32;
+            if (e & 64u32) != 0u32 {
+                away[t as usize] += 1u32;
+            }
+            if i + 1u32 == len {
+                put_plane(out, base + P_SEAT_LAST_DISCARD, t, 1u32);
+            }
+        }
+        let mut meld_tiles: [u32; 34] = [0u32; 34];
+        for i in 0u32..meld_count(s, q) {
+            let m: u32 = s.melds[(q * 4u32 + i) as usize];
+            meld_types(m, &mut meld_tiles);
+            if meld_kind(m) == MELD_CLOSED_KAN {
+                put_plane(out, base + P_SEAT_CLOSED_KAN, meld_tile(m), 1u32);
+            }
+        }
+        let sq: [u32; 2] = [safe[(q * 2u32) as usize], safe[(q * 2u32 + 1u32) as usize]];
+        for t in 0u32..34u32 {
+            if discarded[t as usize] != 0u32 {
+                put_plane(out, base + P_SEAT_DISCARDED, t, discarded[t as usize]);
+                put_plane(out, base + P_SEAT_TEDASHI, t, tedashi[t as usize]);
+                put_plane(out, base + P_SEAT_FIRST_TURN, t, first[t as usize]);
+                put_plane(out, base + P_SEAT_LAST_TURN, t, last[t as usize]);
+                put_plane(out, base + P_SEAT_CALLED_AWAY, t, away[t as usize]);
+            }
+            if set_has(sq, t) {
+                put_plane(out, base + P_SEAT_SAFE, t, 1u32);
+            }
+            if meld_tiles[t as usize] != 0u32 {
+                put_plane(out, base + P_SEAT_MELD_TILES, t, meld_tiles[t as usize]);
+            }
+        }
+        if riichi_tile[q as usize] != NO_TILE_VALUE {
+            put_plane(out, base + P_SEAT_RIICHI_TILE, riichi_tile[q as usize], 1u32);
+        }
+    }
+}
+
+pub fn observe_tokens(state: GameState, arg: u32) -> ObsTokens {
+    let mut s: GameState = state;
+    tokens_of(&mut s, arg)
+}
+
+fn tokens_of(s: &mut GameState, arg: u32) -> ObsTokens {
+    let seat: u32 = observer(s, arg);
+    let v: Seen = gather(s, seat);
+    let mut out: [u32; 254] = [0u32; 254];
+    for t in 0u32..34u32 {
+        put_tok(&mut out, T_HAND + t, v.hand[t as usize]);
+        put_tok(&mut out, T_SEEN + t, v.seen[t as usize]);
+    }
+    for suit in 0u32..3u32 {
+        put_tok(&mut out, T_HAND_RED + suit, holds_red(s, seat, suit) as u32);
+    }
+    let mut drawn: u32 = NO_TILE_BYTE;
+    if (v.decision == DECISION_TURN || v.decision == DECISION_RIICHI_DISCARD) && s.drawn != NO_TILE_VALUE {
+        drawn = s.drawn;
+    }
+    put_tok(&mut out, T_DRAWN, drawn);
+    let mut target: u32 = NO_TILE_BYTE;
+    if v.decision == DECISION_CLAIM || v.decision == DECISION_CHANKAN {
+        target = s.claim_tile;
+    }
+    put_tok(&mut out, T_TARGET, target);
+    for j in 0u32..4u32 {
+        let q: u32 = (seat + j) % 4u32;
+        for i in 0u32..4u32 {
+            let at: u32 = T_MELDS + (j * 4u32 + i) * 4u32;
+            if i < meld_count(s, q) {
+                let m: u32 = s.melds[(q * 4u32 + i) as usize];
+                put_tok(&mut out, at, meld_kind(m));
+                put_tok(&mut out, at + 1u32, meld_tile(m));
+                put_tok(&mut out, at + 2u32, (m >> MELD_REDS_SHIFT) & 3u32);
+                let mut from: u32 = NO_TILE_BYTE;
+                if meld_kind(m) != MELD_CLOSED_KAN {
+                    from = (m >> MELD_FROM_SHIFT) & 3u32;
+                }
+                put_tok(&mut out, at + 3u32, from);
+            } else {
+                out[(at / 4u32) as usize] = 0xffffffffu32;
+            }
+        }
+    }
+    for i in 0u32..5u32 {
+        let mut ind: u32 = NO_TILE_BYTE;
+        if i < s.dora_revealed {
+            ind = wall_tile(s, WALL_DORA + i);
+        }
+        put_tok(&mut out, T_DORA + i, ind);
+    }
+    let sc: [u32; 24] = view_scalars(s, v);
+    for i in 0u32..24u32 {
+        out[(T_SCALARS / 4u32 + i) as usize] = sc[i as usize];
+    }
+    let n: u32 = view_events(s, seat, &mut out);
+    put_tok(&mut out, T_EVENTS_LEN, n);
+    ObsTokens { words: out }
+}
+
+// The round's public events as tokens [kind, actor (ego), tile or 255, flags], one word each,
+// with each draw as a token of its own (its tile shown to the drawer only).
+fn view_events(s: &mut GameState, seat: u32, out: &mut [u32; 254]) -> u32 {
+    let mut n: u32 = 0u32;
+    let mut live: u32 = 0u32;
+    let mut replacement: u32 = 0u32;
+    let mut after_kan: bool = false;
+    let base: u32 = T_EVENTS / 4u32;
+    for i in 0u32..log_count(s) {
+        let e: u32 = log_entry(s, i);
+        let k: u32 = log_kind(e);
+        let a: u32 = log_actor(e);
+        let f: u32 = log_flags(e);
+        if (f & LOG_DREW) != 0u32 {
+            let mut pos: u32 = WALL_LIVE_START + live;
+            if after_kan {
+                pos = WALL_RINSHAN + replacement;
+                replacement += 1u32;
+            } else {
+                live += 1u32;
+            }
+            let mut tile: u32 = NO_TILE_BYTE;
+            if a == seat {
+                tile = wall_tile(s, pos);
+            }
+            if n < TOKEN_EVENTS {
+                out[(base + n) as usize] = EV_DRAW | (rel(seat, a) << 8u32) | (tile << 16u32);
+                n += 1u32;
+            }
+        }
+        let mut tile: u32 = log_tile(e);
+        if tile == LOG_NO_TILE {
+            tile = NO_TILE_BYTE;
+        }
+        if n < TOKEN_EVENTS {
+            out[(base + n) as usize] = k | (rel(seat, a) << 8u32) | (tile << 16u32) | ((f & !LOG_DREW) << 24u32);
+            n += 1u32;
+        }
+        if k != EV_DORA {
+            after_kan = k == EV_OPEN_KAN || k == EV_CLOSED_KAN || k == EV_ADDED_KAN;
+        }
+    }
+    if (s.log_len & LOG_PENDING_DRAW) != 0u32 && s.phase != PHASE_OVER && n < TOKEN_EVENTS {
+        let mut tile: u32 = NO_TILE_BYTE;
+        if s.current == seat {
+            tile = s.drawn;
+        }
+        out[(base + n) as usize] = EV_DRAW | (rel(seat, s.current) << 8u32) | (tile << 16u32);
+        n += 1u32;
+    }
+    n
+}

@@ -1,0 +1,114 @@
+// The layout of the observation records that rules/kernel/view.rs writes: one fact each, read by
+// the view, the host's field table (rinshan::observe) and the GPU entry points.
+
+// `arg` of the observe functions: the observing seat 0..3, or OBSERVE_CURRENT for the player to move.
+pub const OBSERVE_CURRENT: u32 = 4;
+
+pub const NO_TILE_BYTE: u32 = 255;
+
+// Planes: rows of 34 tile types.
+pub const PLANE_ROWS: u32 = 64;
+pub const PLANE_WORDS: u32 = 544;
+pub const P_HAND: u32 = 0;
+pub const P_RED: u32 = 4;
+pub const P_DRAWN: u32 = 5;
+pub const P_TARGET: u32 = 6;
+pub const P_WAITS: u32 = 7;
+pub const P_LEGAL_DISCARD: u32 = 8;
+pub const P_CHI_LOW: u32 = 9;
+pub const P_CHI_MIDDLE: u32 = 10;
+pub const P_CHI_HIGH: u32 = 11;
+pub const P_PON: u32 = 12;
+pub const P_OPEN_KAN: u32 = 13;
+pub const P_SELF_KAN: u32 = 14;
+pub const P_YAKUHAI: u32 = 15;
+// Per ego seat, P_SEAT + seat * P_SEAT_ROWS + one of the P_SEAT_* offsets.
+pub const P_SEAT: u32 = 16;
+pub const P_SEAT_ROWS: u32 = 11;
+pub const P_SEAT_DISCARDED: u32 = 0;
+pub const P_SEAT_TEDASHI: u32 = 1;
+pub const P_SEAT_FIRST_TURN: u32 = 2;
+pub const P_SEAT_LAST_TURN: u32 = 3;
+pub const P_SEAT_RIICHI_TILE: u32 = 4;
+pub const P_SEAT_SAFE: u32 = 5;
+pub const P_SEAT_MELD_TILES: u32 = 6;
+pub const P_SEAT_CALLED_IN: u32 = 7;
+pub const P_SEAT_CLOSED_KAN: u32 = 8;
+pub const P_SEAT_LAST_DISCARD: u32 = 9;
+pub const P_SEAT_CALLED_AWAY: u32 = 10;
+pub const P_DORA_INDICATORS: u32 = 60;
+pub const P_DORA: u32 = 61;
+pub const P_SEEN: u32 = 62;
+pub const P_RED_SEEN: u32 = 63;
+
+// Scalars: 48 int16, two per word.
+pub const SCALARS: u32 = 48;
+pub const SCALAR_WORDS: u32 = 24;
+pub const S_SCORE: u32 = 0;
+pub const S_RANK: u32 = 4;
+pub const S_ROUND: u32 = 8;
+pub const S_ROUND_WIND: u32 = 9;
+pub const S_SEAT_WIND: u32 = 10;
+pub const S_DEALER: u32 = 11;
+pub const S_HONBA: u32 = 12;
+pub const S_STICKS: u32 = 13;
+pub const S_TILES_LEFT: u32 = 14;
+pub const S_KANS: u32 = 15;
+pub const S_DORA_REVEALED: u32 = 16;
+pub const S_RIICHI: u32 = 17;
+pub const S_IPPATSU: u32 = 21;
+pub const S_CONCEALED: u32 = 25;
+pub const S_DISCARDS: u32 = 29;
+pub const S_MELDS: u32 = 33;
+pub const S_SHANTEN: u32 = 37;
+pub const S_FURITEN: u32 = 38;
+pub const S_DECISION: u32 = 39;
+pub const S_CLAIM_FROM: u32 = 40;
+pub const S_FIRST_GO_AROUND: u32 = 41;
+pub const S_MODE: u32 = 42;
+pub const S_ROUNDS_LEFT: u32 = 43;
+pub const S_OWN_DORA: u32 = 44;
+pub const S_OWN_RED: u32 = 45;
+pub const S_EVENTS: u32 = 46;
+pub const S_ROUNDS_PLAYED: u32 = 47;
+
+// S_DECISION values.
+pub const DECISION_NONE: u32 = 0;
+pub const DECISION_TURN: u32 = 1;
+pub const DECISION_RIICHI_DISCARD: u32 = 2;
+pub const DECISION_CLAIM: u32 = 3;
+pub const DECISION_CHANKAN: u32 = 4;
+
+// S_RIICHI values.
+pub const RIICHI_DECLARED: u32 = 1;
+pub const RIICHI_ACCEPTED: u32 = 2;
+pub const RIICHI_DOUBLE: u32 = 3;
+
+#[derive(Clone, Copy)]
+#[repr(C)]
+pub struct ObsPlanes {
+    pub planes: [u32; 544],
+    pub scalars: [u32; 24],
+}
+
+// Tokens: byte offsets of the fields in ObsTokens.words.
+pub const TOKEN_WORDS: u32 = 254;
+pub const T_HAND: u32 = 0;
+pub const T_HAND_RED: u32 = 36;
+pub const T_DRAWN: u32 = 39;
+pub const T_TARGET: u32 = 40;
+pub const T_EVENTS_LEN: u32 = 41;
+pub const T_MELDS: u32 = 44;
+pub const T_DORA: u32 = 108;
+pub const T_SEEN: u32 = 116;
+pub const T_SCALARS: u32 = 152;
+pub const T_EVENTS: u32 = 248;
+// Events of the token form: draws are tokens of their own, so a round needs at most 114 + 70.
+pub const TOKEN_EVENTS: u32 = 192;
+
+#[derive(Clone, Copy)]
+#[repr(C)]
+pub struct ObsTokens {
+    pub words: [u32; 254],
+}
+

@@ -1,0 +1,129 @@
+//! Observations of the games of an [`Env`]: any seat of each game, in either form, on request or
+//! written every step for the current player ([`Config::observe`]).
+
+use rayon::prelude::*;
+
+use super::{Backing, Env, EnvError};
+use crate::generated::kernel;
+use crate::observe::Form;
+use crate::Variant;
+
+/// Whose observation to write, per env.
+#[derive(Debug, Clone, Copy)]
+pub enum Observer<'a> {
+    /// Each env's current player (the seat that decides next).
+    Current,
+    /// The same seat (0..3) in every env.
+    Seat(u32),
+    /// One seat per env (0..3, or 4 for that env's current player).
+    Seats(&'a [u32]),
+}
+
+/// Writes `form` observations of `states` (GameState words) for the seats in `args` into `out`.
+pub(crate) fn observe_cpu(variant: Variant, form: Form, states: &[u32], args: &[u32], out: &mut [u32], serial: bool) {
+    let sts: &[kernel::GameState] = bytemuck::cast_slice(states);
+    with_variant!(variant, v => match form {
+        Form::Planes => {
+            let outs: &mut [kernel::ObsPlanes] = bytemuck::cast_slice_mut(out);
+            let one = |((o, s), a): ((&mut kernel::ObsPlanes, &kernel::GameState), &u32)| *o = v::observe_planes(*s, *a);
+            if serial {
+                outs.iter_mut().zip(sts).zip(args).for_each(one);
+            } else {
+                outs.par_iter_mut().zip(sts.par_iter()).zip(args.par_iter()).with_min_len(8).for_each(one);
+            }
+        }
+        Form::Tokens => {
+            let outs: &mut [kernel::ObsTokens] = bytemuck::cast_slice_mut(out);
+            let one = |((o, s), a): ((&mut kernel::ObsTokens, &kernel::GameState), &u32)| *o = v::observe_tokens(*s, *a);
+            if serial {
+                outs.iter_mut().zip(sts).zip(args).for_each(one);
+            } else {
+                outs.par_iter_mut().zip(sts.par_iter()).zip(args.par_iter()).with_min_len(8).for_each(one);
+            }
+        }
+    })
+}
+
+impl Env {
+    fn observer_args(&self, observer: Observer) -> Result<Vec<u32>, EnvError> {
+        let b = self.batch();
+        match observer {
+            Observer::Current => Ok(vec![kernel::OBSERVE_CURRENT; b]),
+            Observer::Seat(s) if s < 4 => Ok(vec![s; b]),
+            Observer::Seat(s) => Err(EnvError::BadSeat { env: 0, seat: s }),
+            Observer::Seats(seats) => {
+                self.check_len("seats", seats.len())?;
+                if let Some(env) = seats.iter().position(|&s| s > kernel::OBSERVE_CURRENT) {
+                    return Err(EnvError::BadSeat { env, seat: seats[env] });
+                }
+                Ok(seats.to_vec())
+            }
+        }
+    }
+
+    /// Writes one `form` observation per env into `out` (`batch * form.bytes()` bytes, env-major),
+    /// for the seats `observer` names. Seats that are not deciding see everything public and their
+    /// own hand, and no decision. On the GPU, only this call reads observations back.
+    pub fn observe_into(&mut self, form: Form, observer: Observer, out: &mut [u8]) -> Result<(), EnvError> {
+        let want = self.batch() * form.bytes();
+        if out.len() != want {
+            return Err(EnvError::WrongLength {
+                what: "observation bytes",
+                expected: want,
+                got: out.len(),
+            });
+        }
+        let args = self.observer_args(observer)?;
+        let variant = self.variant();
+        match &mut self.backing {
+            Backing::Cpu(cpu) => {
+                let mut words = vec![0u32; self.config.batch * form.words()];
+                cpu.install(|| observe_cpu(variant, form, &cpu.states, &args, &mut words, cpu.serial));
+                out.copy_from_slice(bytemuck::cast_slice(&words));
+            }
+            Backing::Gpu(gpu) => {
+                let words = gpu.observe(form, &args)?;
+                out.copy_from_slice(bytemuck::cast_slice(words));
+            }
+        }
+        Ok(())
+    }
+
+    /// As [`Env::observe_into`], into a buffer the env keeps (overwritten by the next call).
+    pub fn observe(&mut self, form: Form, observer: Observer) -> Result<&[u8], EnvError> {
+        let mut buf = std::mem::take(&mut self.observed);
+        buf.resize(self.batch() * form.bytes(), 0);
+        let r = self.observe_into(form, observer, &mut buf);
+        self.observed = buf;
+        r.map(|()| self.observed.as_slice())
+    }
+
+    /// The current player's observation of each env in `form`, written by the last reset or step
+    /// when [`Config::observe`] asks for that form (`batch * form.bytes()` bytes).
+    pub fn observation(&self, form: Form) -> Option<&[u8]> {
+        let i = self.config.observe.iter().position(|&f| f == form)?;
+        Some(bytemuck::cast_slice(&self.observations[i]))
+    }
+
+    /// Fills the per-step observations of [`Config::observe`] (current players).
+    pub(super) fn write_observations(&mut self) -> Result<(), EnvError> {
+        if self.config.observe.is_empty() {
+            return Ok(());
+        }
+        let variant = self.variant();
+        let args = vec![kernel::OBSERVE_CURRENT; self.batch()];
+        for (i, &form) in self.config.observe.iter().enumerate() {
+            match &mut self.backing {
+                Backing::Cpu(cpu) => {
+                    let out = &mut self.observations[i];
+                    cpu.install(|| observe_cpu(variant, form, &cpu.states, &args, out, cpu.serial));
+                }
+                Backing::Gpu(gpu) => {
+                    let words = gpu.observe(form, &args)?;
+                    self.observations[i].copy_from_slice(words);
+                }
+            }
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,372 @@
+//! The observation shows a seat only what it may know, and the same game seen from any seat
+//! gives the same picture:
+//! - hidden resampling: permuting every tile the observer cannot see (other hands, the wall, the
+//!   hidden dead wall) and scrambling other seats' waits, furiten, claim options and choices, the
+//!   seeds and the step counter leaves both forms byte-identical;
+//! - seat rotation: the same game with the seats relabelled gives each seat the same observation;
+//! - the event tokens replay the round (each seat's discards in order, every draw of the
+//!   observer with its tile).
+
+use rinshan::generated::kernel::{
+    self, GameState, ObsPlanes, ObsTokens, ResetInput, MODE_HALF, OBSERVE_CURRENT, SEAT_FURITEN_RIICHI,
+    SEAT_FURITEN_TEMP, WALL_DORA, WALL_LIVE_END, WALL_LIVE_START, WALL_RINSHAN, WALL_URA,
+};
+use rinshan::generated::{no_red, red};
+use rinshan::random::Rng;
+use rinshan::Variant;
+
+/// One variant's kernels, as plain functions.
+#[derive(Clone, Copy)]
+struct Kernels {
+    variant: Variant,
+    new: fn(ResetInput) -> GameState,
+    step: fn(&mut GameState, u32),
+    planes: fn(GameState, u32) -> ObsPlanes,
+    tokens: fn(GameState, u32) -> ObsTokens,
+}
+
+const KERNELS: [Kernels; 2] = [
+    Kernels {
+        variant: Variant::Red,
+        new: red::game_new,
+        step: red::game_step,
+        planes: red::observe_planes,
+        tokens: red::observe_tokens,
+    },
+    Kernels {
+        variant: Variant::NoRed,
+        new: no_red::game_new,
+        step: no_red::game_step,
+        planes: no_red::observe_planes,
+        tokens: no_red::observe_tokens,
+    },
+];
+
+fn reset_input(seed: u64, dealer: u32, wall: Option<[u32; 136]>) -> ResetInput {
+    ResetInput {
+        seed: [seed as u32, (seed >> 32) as u32],
+        mode: MODE_HALF,
+        dealer,
+        use_wall: u32::from(wall.is_some()),
+        wall: wall.unwrap_or([0; 136]),
+        uma: [15000, 5000, -5000, -15000],
+        penalty: -1.0,
+        auto_reset: 0,
+    }
+}
+
+fn both(k: &Kernels, s: &GameState, seat: u32) -> (Vec<u32>, Vec<u32>) {
+    (
+        bytemuck::cast_slice(&[(k.planes)(*s, seat)]).to_vec(),
+        bytemuck::cast_slice(&[(k.tokens)(*s, seat)]).to_vec(),
+    )
+}
+
+fn wall_set(s: &mut GameState, i: u32, v: u32) {
+    let w = &mut s.wall[(i / 4) as usize];
+    *w = (*w & !(255 << ((i % 4) * 8))) | (v << ((i % 4) * 8));
+}
+
+/// The wall positions the observer drew from this round, kept up to date step by step from the
+/// engine's counters (not from the event log under test).
+#[derive(Default)]
+struct OwnDraws {
+    round_key: Option<(u32, u32, u32)>,
+    positions: Vec<u32>,
+}
+
+impl OwnDraws {
+    fn update(&mut self, before: &GameState, after: &mut GameState, observer: u32) {
+        let key = Some((after.games, after.rounds, after.round * 64 + after.honba));
+        let drew_now = after.drawn != 255 && after.current == observer;
+        if key != self.round_key || after.next_draw < before.next_draw {
+            self.round_key = key;
+            self.positions.clear();
+            if after.dealer == observer {
+                self.positions.push(WALL_LIVE_START);
+            }
+            return;
+        }
+        if after.next_draw == before.next_draw + 1 && drew_now {
+            self.positions.push(after.next_draw - 1);
+        }
+        if after.kans == before.kans + 1 && drew_now && after.rinshan == 1 {
+            self.positions.push(WALL_RINSHAN + after.kans - 1);
+        }
+    }
+}
+
+/// A copy of `s` in which everything `observer` cannot see is reshuffled or scrambled.
+fn resample(s: &GameState, observer: u32, own_draws: &[u32], rng: &mut Rng) -> GameState {
+    let mut r = *s;
+    let mut pool: Vec<u32> = Vec::new();
+    let mut hidden_positions: Vec<u32> = Vec::new();
+    for i in s.next_draw..WALL_LIVE_END {
+        hidden_positions.push(i);
+    }
+    for i in WALL_DORA + s.dora_revealed..WALL_DORA + 5 {
+        hidden_positions.push(i);
+    }
+    for i in WALL_URA..WALL_URA + 5 {
+        hidden_positions.push(i);
+    }
+    for i in WALL_RINSHAN + s.kans..WALL_RINSHAN + 4 {
+        hidden_positions.push(i);
+    }
+    for &i in &hidden_positions {
+        pool.push(kernel::wall_tile(&mut r, i));
+    }
+    let mut sizes = [0usize; 4];
+    for q in (0..4).filter(|&q| q != observer) {
+        let counts = kernel::hand_counts(&mut r, q);
+        for t in 0..34u32 {
+            let mut n = counts[t as usize];
+            if t < 27 && t % 9 == 4 && kernel::holds_red(&mut r, q, t / 9) {
+                pool.push(34 + t / 9);
+                n -= 1;
+            }
+            for _ in 0..n {
+                pool.push(t);
+            }
+            sizes[q as usize] += counts[t as usize] as usize;
+        }
+    }
+    for i in (1..pool.len()).rev() {
+        pool.swap(i, rng.below(i as u32 + 1) as usize);
+    }
+    let mut next = pool.into_iter();
+    for &i in &hidden_positions {
+        wall_set(&mut r, i, next.next().expect("pool"));
+    }
+    for q in (0..4).filter(|&q| q != observer) {
+        for w in 0..5 {
+            r.hands[(q * 5 + w) as usize] = 0;
+        }
+        r.red &= !(7 << (q * 3));
+        let mut given = Vec::new();
+        for _ in 0..sizes[q as usize] {
+            let v = next.next().expect("pool");
+            let t = kernel::value_type(v);
+            r.hands[(q * 5 + t / 8) as usize] += 1 << ((t % 8) * 4);
+            if v >= 34 {
+                r.red |= 1 << (q * 3 + v - 34);
+            }
+            given.push(v);
+        }
+        if s.current == q && s.drawn != 255 && !given.is_empty() {
+            r.drawn = given[rng.below(given.len() as u32) as usize];
+        }
+        // Waits, furiten and claim prompts of another seat follow from its hand.
+        r.waits[(q * 2) as usize] = rng.next_u64() as u32;
+        r.waits[(q * 2 + 1) as usize] = (rng.next_u64() as u32) & 3;
+        r.seat_flags[q as usize] ^= (SEAT_FURITEN_TEMP | SEAT_FURITEN_RIICHI) & rng.next_u64() as u32;
+        r.claim_options[q as usize] = (rng.next_u64() as u32) & 1023;
+        r.claim_choices[q as usize] = rng.below(256);
+    }
+    // Tiles that left the wall into other hands: their positions tell nothing now.
+    let dealt_by = |i: u32| (s.dealer + i / 13) % 4;
+    for i in 0..WALL_LIVE_START {
+        if dealt_by(i) != observer {
+            wall_set(&mut r, i, rng.below(37));
+        }
+    }
+    for i in WALL_LIVE_START..s.next_draw {
+        if !own_draws.contains(&i) {
+            wall_set(&mut r, i, rng.below(37));
+        }
+    }
+    for i in WALL_RINSHAN..WALL_RINSHAN + s.kans {
+        if !own_draws.contains(&i) {
+            wall_set(&mut r, i, rng.below(37));
+        }
+    }
+    if s.current != observer {
+        r.mask = [
+            (rng.next_u64() as u32),
+            (rng.next_u64() as u32),
+            (rng.next_u64() as u32),
+        ];
+    }
+    r.seed = [(rng.next_u64() as u32), (rng.next_u64() as u32)];
+    r.steps = rng.next_u64() as u32;
+    r
+}
+
+fn hidden_resampling(k: Kernels) {
+    let variant = k.variant;
+    let mut rng = Rng::new(77);
+    let mut states = 0usize;
+    let mut game = 0u64;
+    while states < 100_000 {
+        let mut s = (k.new)(reset_input(1000 + game, 4, None));
+        let mut draws: [OwnDraws; 4] = Default::default();
+        for (q, d) in draws.iter_mut().enumerate() {
+            d.update(&s, &mut s.clone(), q as u32);
+        }
+        let mut policy = Rng::new(5000 + game);
+        while s.terminated == 0 {
+            let observer = rng.below(4);
+            let (p, t) = both(&k, &s, observer);
+            let r = resample(&s, observer, &draws[observer as usize].positions, &mut rng);
+            let (rp, rt) = both(&k, &r, observer);
+            assert!(
+                p == rp,
+                "{variant}: game {game}, step {}: planes of seat {observer} changed when hidden tiles were resampled",
+                s.steps
+            );
+            if t != rt {
+                let i = t.iter().zip(&rt).position(|(a, b)| a != b).unwrap_or(0);
+                eprintln!(
+                    "word {i}: {:08x} vs {:08x}; own draws {:?}, next_draw {}, current {}, drawn {}",
+                    t[i], rt[i], draws[observer as usize].positions, s.next_draw, s.current, s.drawn
+                );
+            }
+            assert!(
+                t == rt,
+                "{variant}: game {game}, step {}: tokens of seat {observer} changed when hidden tiles were resampled",
+                s.steps
+            );
+            states += 1;
+            let before = s;
+            let a = policy.pick_legal(&s.mask);
+            (k.step)(&mut s, a);
+            for (q, d) in draws.iter_mut().enumerate() {
+                d.update(&before, &mut s, q as u32);
+            }
+        }
+        game += 1;
+    }
+    eprintln!("{variant}: {states} states of {game} half games, hidden tiles resampled, observations unchanged");
+}
+
+#[test]
+fn red_observations_do_not_depend_on_hidden_tiles() {
+    hidden_resampling(KERNELS[0]);
+}
+
+#[test]
+fn no_red_observations_do_not_depend_on_hidden_tiles() {
+    hidden_resampling(KERNELS[1]);
+}
+
+/// The same walls dealt with the seats relabelled by `shift`: seat q of the first game is seat
+/// q + shift of the second, and must see exactly what it saw.
+fn seat_rotation(k: Kernels) {
+    let variant = k.variant;
+    let mut checked = 0usize;
+    for game in 0..12u64 {
+        let first = (k.new)(reset_input(300 + game, 4, None));
+        let wall: [u32; 136] = std::array::from_fn(|i| kernel::wall_tile(&mut first.clone(), i as u32));
+        let dealer = first.dealer;
+        let shift = 1 + (game % 3) as u32;
+        let mut a = (k.new)(reset_input(300 + game, dealer, Some(wall)));
+        let mut b = (k.new)(reset_input(300 + game, (dealer + shift) % 4, Some(wall)));
+        let mut policy = Rng::new(9000 + game);
+        while a.terminated == 0 {
+            assert_eq!(
+                (a.current + shift) % 4,
+                b.current,
+                "{variant}: game {game}: the relabelled game went another way"
+            );
+            for q in 0..4 {
+                assert!(
+                    both(&k, &a, q) == both(&k, &b, (q + shift) % 4),
+                    "{variant}: game {game}, step {}: seat {q} and its relabelled seat {} see different things",
+                    a.steps,
+                    (q + shift) % 4
+                );
+            }
+            checked += 1;
+            let act = policy.pick_legal(&a.mask);
+            (k.step)(&mut a, act);
+            (k.step)(&mut b, act);
+        }
+        assert_eq!(b.terminated, 1);
+    }
+    eprintln!("{variant}: {checked} positions x 4 seats equal under seat relabelling");
+}
+
+#[test]
+fn red_observations_are_the_same_from_relabelled_seats() {
+    seat_rotation(KERNELS[0]);
+}
+
+#[test]
+fn no_red_observations_are_the_same_from_relabelled_seats() {
+    seat_rotation(KERNELS[1]);
+}
+
+fn token_byte(t: &ObsTokens, at: u32) -> u8 {
+    bytemuck::cast_slice::<u32, u8>(&t.words)[at as usize]
+}
+
+/// The event tokens replay each round: every seat's discards appear in its river's order with
+/// the river's tsumogiri and called flags, the observer's draws show the tiles it received, and
+/// nobody else's draw shows a tile.
+#[test]
+fn event_tokens_replay_the_rivers_and_own_draws() {
+    let k = KERNELS[0];
+    let mut positions = 0;
+    for game in 0..20u64 {
+        let mut s = (k.new)(reset_input(40 + game, 4, None));
+        let mut policy = Rng::new(game);
+        let mut own: Vec<Vec<u32>> = vec![Vec::new(); 4];
+        let mut round = (s.rounds, s.games);
+        while s.terminated == 0 {
+            if (s.rounds, s.games) != round {
+                round = (s.rounds, s.games);
+                own.iter_mut().for_each(Vec::clear);
+            }
+            if s.drawn != 255 && own[s.current as usize].last() != Some(&(s.next_draw * 64 + s.kans)) {
+                own[s.current as usize].push(s.next_draw * 64 + s.kans);
+            }
+            for seat in 0..4u32 {
+                let t = (k.tokens)(s, seat);
+                let n = token_byte(&t, kernel::T_EVENTS_LEN) as u32;
+                let mut rivers: Vec<Vec<u32>> = vec![Vec::new(); 4];
+                let mut draws = 0;
+                for i in 0..n {
+                    let e = t.words[(kernel::T_EVENTS / 4 + i) as usize];
+                    let (kind, actor, tile, flags) = (e & 255, (e >> 8) & 255, (e >> 16) & 255, e >> 24);
+                    let abs = (seat + actor) % 4;
+                    if kind == kernel::EV_DISCARD {
+                        rivers[abs as usize].push(
+                            tile | (flags & kernel::LOG_TSUMOGIRI) << 7
+                                | u32::from(flags & kernel::LOG_CALLED != 0) << 6,
+                        );
+                    }
+                    if kind == kernel::EV_DRAW {
+                        assert_eq!(
+                            tile == 255,
+                            actor != 0,
+                            "game {game}: a draw's tile is shown to its drawer only"
+                        );
+                        draws += u32::from(actor == 0);
+                    }
+                }
+                for q in 0..4u32 {
+                    let len = kernel::byte_of(s.river_lens, q);
+                    let river: Vec<u32> = (0..len)
+                        .map(|i| kernel::byte_of(s.rivers[(q * 6 + i / 4) as usize], i % 4))
+                        .collect();
+                    assert_eq!(
+                        rivers[q as usize], river,
+                        "game {game}, step {}: seat {seat}'s events disagree with seat {q}'s river",
+                        s.steps
+                    );
+                }
+                assert_eq!(
+                    draws as usize,
+                    own[seat as usize].len(),
+                    "game {game}, step {}: seat {seat}'s own draws",
+                    s.steps
+                );
+                positions += 1;
+            }
+            let a = policy.pick_legal(&s.mask);
+            (k.step)(&mut s, a);
+        }
+    }
+    assert!(positions > 10_000);
+    let _ = OBSERVE_CURRENT;
+}
