@@ -12,9 +12,10 @@ pub const ENTRIES: [(&str, &str, &str, &str); 4] = [
 /// The in-place update entry points, after [`ENTRIES`] in binding order: (entry point, kernel
 /// function `fn(&mut State, Arg)`, state struct, argument type). The k-th entry point of the
 /// module (k counts [`ENTRIES`] first) binds its state (read-write) at 1+2k and its arguments at 2+2k.
-pub const UPDATE_ENTRIES: [(&str, &str, &str, &str); 2] = [
+pub const UPDATE_ENTRIES: [(&str, &str, &str, &str); 3] = [
     ("game_step_main", "game_step", "GameState", "u32"),
     ("game_deal_main", "game_deal", "GameState", "DealInput"),
+    ("game_play_main", "game_play", "GameState", "u32"),
 ];
 
 /// The read entry points, after [`UPDATE_ENTRIES`] in binding order: (entry point, kernel function

@@ -136,6 +136,13 @@ pub struct Config {
     /// Observation forms written for each env's current player by every reset and step
     /// ([`Env::observation`]); empty (the default) costs nothing.
     pub observe: Vec<crate::observe::Form>,
+    /// Hero mode: who plays each seat, per env (or one entry for every env); `None` = the caller.
+    /// A step then plays the caller's action and the built-in agents' decisions until one of the
+    /// caller's seats must decide or the game ends, adding up the rewards. After a reset or a
+    /// finished game an agent may be the first to move: `current_player` then names its seat and
+    /// the next step's action for that env is ignored (the agents play up to the caller's turn).
+    /// Empty (the default): the caller plays every seat.
+    pub agents: Vec<[Option<crate::agents::Agent>; 4]>,
 }
 
 impl Config {
@@ -152,6 +159,7 @@ impl Config {
             auto_reset: false,
             threads: None,
             observe: Vec::new(),
+            agents: Vec::new(),
         }
     }
 }
@@ -440,7 +448,7 @@ impl CpuEnv {
         }
     }
 
-    fn step(&mut self, variant: Variant, actions: &[u32]) {
+    fn step(&mut self, variant: Variant, actions: &[u32], play: bool) {
         let serial = self.serial;
         let states = &mut self.states;
         let views = &mut self.views;
@@ -449,7 +457,11 @@ impl CpuEnv {
                 let sts: &mut [kernel::GameState] = bytemuck::cast_slice_mut(states);
                 let vws: &mut [kernel::StepView] = bytemuck::cast_slice_mut(views);
                 let one = |((s, w), a): ((&mut kernel::GameState, &mut kernel::StepView), &u32)| {
-                    v::game_step(s, *a);
+                    if play {
+                        v::game_play(s, *a);
+                    } else {
+                        v::game_step(s, *a);
+                    }
                     *w = v::game_view(*s);
                 };
                 if serial {
@@ -487,6 +499,8 @@ pub struct Env {
     observations: Vec<Vec<u32>>,
     /// The buffer [`Env::observe`] returns.
     observed: Vec<u8>,
+    /// Hero mode's per-env step arguments.
+    play_args: Vec<u32>,
 }
 
 impl Env {
@@ -517,6 +531,13 @@ impl Env {
             return Err(EnvError::BadThreads(
                 "threads must be at least 1 (None = all cores)".into(),
             ));
+        }
+        if config.agents.len() > 1 && config.agents.len() != config.batch {
+            return Err(EnvError::WrongLength {
+                what: "agent seatings",
+                expected: config.batch,
+                got: config.agents.len(),
+            });
         }
         if let Some(p) = config.penalty {
             if !p.is_finite() {
@@ -573,6 +594,7 @@ impl Env {
             epoch: 0,
             observations: config.observe.iter().map(|f| vec![0; b * f.words()]).collect(),
             observed: Vec::new(),
+            play_args: vec![0; if config.agents.is_empty() { 0 } else { b }],
             config,
         })
     }
@@ -664,13 +686,22 @@ impl Env {
     pub fn step(&mut self, actions: &[u32]) -> Result<&Step, EnvError> {
         self.check_len("actions", actions.len())?;
         let variant = self.variant();
+        let play = !self.config.agents.is_empty();
+        if play {
+            // The kernel's hero-mode argument: the action in the low byte, the seating above.
+            for (i, (arg, &a)) in self.play_args.iter_mut().zip(actions).enumerate() {
+                let seats = &self.config.agents[if self.config.agents.len() == 1 { 0 } else { i }];
+                *arg = a.min(255) | (crate::agents::seats_word(seats) << 8);
+            }
+        }
+        let actions = if play { &self.play_args[..] } else { actions };
         match &mut self.backing {
             Backing::Cpu(cpu) => {
-                cpu.step(variant, actions);
+                cpu.step(variant, actions, play);
                 self.step.fill(&cpu.views);
             }
             Backing::Gpu(gpu) => {
-                let views = gpu.step(actions)?;
+                let views = gpu.step(actions, play)?;
                 self.step.fill(views);
             }
         }

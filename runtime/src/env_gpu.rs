@@ -20,6 +20,7 @@ const NEW: &str = "game_new_main";
 const VIEW: &str = "game_view_main";
 const STEP: &str = "game_step_main";
 const DEAL: &str = "game_deal_main";
+const PLAY: &str = "game_play_main";
 
 /// The passes, made on first use (a driver may take long to compile the step pipeline).
 #[derive(Clone, Copy)]
@@ -28,6 +29,7 @@ enum Stage {
     Step = 1,
     View = 2,
     Deal = 3,
+    Play = 4,
 }
 
 struct Pass {
@@ -49,7 +51,7 @@ pub(crate) struct GpuEnv {
     views_buffer: wgpu::Buffer,
     view_readback: wgpu::Buffer,
     wgsl: &'static str,
-    passes: [Option<Pass>; 4],
+    passes: [Option<Pass>; 5],
     /// The last views read back (StepView words of every env).
     views: Vec<u32>,
     /// Observations, made on first use: observer seats, and per form its pass, output and readback.
@@ -114,7 +116,7 @@ impl GpuEnv {
             views_buffer: views,
             view_readback,
             wgsl,
-            passes: [None, None, None, None],
+            passes: [None, None, None, None, None],
             views: Vec::with_capacity(batch * view_words),
             observer_args: None,
             observe: [None, None],
@@ -136,6 +138,7 @@ impl GpuEnv {
         let (spec, first, second) = match stage {
             Stage::New => (EntrySpec::map(NEW), &self.reset_inputs, &self.states),
             Stage::Step => (EntrySpec::update(STEP), &self.states, &self.actions),
+            Stage::Play => (EntrySpec::update(PLAY), &self.states, &self.actions),
             Stage::View => (EntrySpec::map(VIEW), &self.states, &self.views_buffer),
             Stage::Deal => {
                 let Some(deals) = &self.deal_inputs else {
@@ -184,11 +187,12 @@ impl GpuEnv {
         self.run(Stage::New)
     }
 
-    pub(crate) fn step(&mut self, actions: &[u32]) -> Result<&[u32], GpuError> {
+    /// One step (`play`: hero mode, `actions` are `game_play` arguments).
+    pub(crate) fn step(&mut self, actions: &[u32], play: bool) -> Result<&[u32], GpuError> {
         self.gpu
             .queue()
             .write_buffer(&self.actions, 0, bytemuck::cast_slice(actions));
-        self.run(Stage::Step)
+        self.run(if play { Stage::Play } else { Stage::Step })
     }
 
     /// Deals the rounds of `inputs` (`DealInput` words of every env; `deal == 0` leaves an env alone).

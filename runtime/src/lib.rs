@@ -9,6 +9,8 @@
 //! * [`hand`]     — shanten and hand scoring on the CPU, one hand or a batch
 //! * [`gpu`]      — the same kernels on a GPU through wgpu
 //! * [`env`]      — the batched game environment (reset, step, masks, rewards) on the CPU or the GPU
+//! * [`agents`]   — the built-in baseline agents (random, rule, greedy, defensive)
+//! * [`arena`]    — rating agents by duplicate play
 //! * [`observe`]  — what an agent sees: the observation forms and the table documenting their fields
 //! * [`tenhou`]   — tenhou.net/6 logs: reading them and replaying them through the red variant
 //! * [`random`]   — deterministic random hands and legal actions for tests, benchmarks and self-play
@@ -24,6 +26,8 @@ pub mod generated {
     include!(concat!(env!("OUT_DIR"), "/generated.rs"));
 }
 
+pub mod agents;
+pub mod arena;
 mod entries;
 pub mod env;
 mod env_gpu;

@@ -1,8 +1,10 @@
 //! CPU vs GPU environment parity: the same seeds and the same random legal actions give
-//! identical current players, masks, rewards and terminations at every step of whole games, and
-//! identical states at the end.
+//! identical current players, masks, rewards, terminations and observations (both forms, the
+//! current player's at every step and every seat's every 25 steps) at every step of whole
+//! games, and identical states at the end.
 
-use rinshan::env::{Backend, Config, Env, Mode};
+use rinshan::env::{Backend, Config, Env, Mode, Observer};
+use rinshan::observe::Form;
 use rinshan::random::Rng;
 use rinshan::Variant;
 
@@ -19,6 +21,7 @@ fn parity(variant: Variant) {
         auto_reset: false,
         threads: None,
         backend: Backend::Cpu,
+        observe: Form::ALL.to_vec(),
         ..Config::new(variant, BATCH)
     };
     let mut cpu = Env::new(config.clone()).expect("cpu env");
@@ -28,6 +31,12 @@ fn parity(variant: Variant) {
     let c = cpu.reset().expect("cpu reset").clone();
     let g = gpu.reset().expect("gpu reset").clone();
     assert_eq!(c, g, "{variant}: reset");
+    for form in Form::ALL {
+        assert!(
+            cpu.observation(form) == gpu.observation(form),
+            "{variant}: {form} observations after reset"
+        );
+    }
     assert_eq!(
         cpu.states_words().expect("cpu states"),
         gpu.states_words().expect("gpu states"),
@@ -63,6 +72,22 @@ fn parity(variant: Variant) {
         assert_eq!(c.rewards, g.rewards, "{variant}: step {steps}: rewards");
         assert_eq!(c.terminated, g.terminated, "{variant}: step {steps}: terminated");
         assert_eq!(&c, g, "{variant}: step {steps}: the other fields");
+        for form in Form::ALL {
+            assert!(
+                cpu.observation(form) == gpu.observation(form),
+                "{variant}: step {steps}: {form} observations of the current players"
+            );
+            if steps % 25 == 0 {
+                for seat in 0..4 {
+                    let on_cpu = cpu.observe(form, Observer::Seat(seat)).expect("cpu observe").to_vec();
+                    let on_gpu = gpu.observe(form, Observer::Seat(seat)).expect("gpu observe");
+                    assert!(
+                        on_cpu == on_gpu,
+                        "{variant}: step {steps}: {form} observations of seat {seat}"
+                    );
+                }
+            }
+        }
         // A finished game (no auto-reset) stays finished.
         for i in 0..BATCH {
             assert!(!last.terminated[i] || c.terminated[i], "{variant}: env {i} restarted");

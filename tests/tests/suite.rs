@@ -1,6 +1,7 @@
 //! rinshan's test suite in one binary: each module is one concern (a clean build links one
 //! wgpu-heavy test executable for this crate instead of one per file).
 
+mod agents;
 mod brute_force;
 mod env_api;
 mod env_parity;

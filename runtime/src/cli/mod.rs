@@ -1,5 +1,6 @@
 //! Command-line front end. Each subcommand lives in its own module.
 
+mod arena;
 mod args;
 mod bench;
 mod replay;
@@ -52,6 +53,8 @@ enum Command {
     Selfplay(selfplay::Args),
     /// Replay tenhou.net/6 logs through the red variant and compare every round, e.g. `rinshan replay logs/`
     Replay(replay::Args),
+    /// Rate built-in agents by duplicate play, e.g. `rinshan arena --agents greedy,rule,rule,rule --games 4000`
+    Arena(arena::Args),
     /// Benchmarks: `bench hands` (shanten, scoring), `bench env` (environment steps by batch size)
     Bench {
         #[command(subcommand)]
@@ -65,6 +68,7 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
         Command::Score(a) => score::run(a),
         Command::Selfplay(a) => selfplay::run(a),
         Command::Replay(a) => replay::run(a),
+        Command::Arena(a) => arena::run(a),
         Command::Bench { what } => bench::run(what),
     }
 }

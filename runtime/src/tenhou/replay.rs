@@ -260,6 +260,7 @@ fn replay_in(
         auto_reset: false,
         threads: Some(1),
         observe: Vec::new(),
+        agents: Vec::new(),
     })?;
     env.reset()?;
     let mut runs: Vec<Run> = games

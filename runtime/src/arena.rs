@@ -1,0 +1,276 @@
+//! Rating agents by duplicate play: every set of walls is played four times with the players
+//! rotated through the seats, so each player meets the same tiles from every seat and luck
+//! cancels out. Reports per player the average rank with a 95% confidence interval (over sets,
+//! the unit of the duplicate design), the rank histogram, the average final score, and per round
+//! the win, deal-in, call and riichi rates and the points per win.
+
+use rayon::prelude::*;
+
+use crate::agents::Agent;
+use crate::env::{env_seed, Mode};
+use crate::generated::kernel::{self, GameState, ResetInput};
+use crate::Variant;
+
+/// A policy of the caller's, for [`run`]: one action per decision, from the deciding seat's planes
+/// observation ([`crate::observe::Form::Planes`] bytes) and its legal mask.
+pub trait Policy: Sync {
+    /// The action id to play (an illegal one ends the game with the penalty, and is counted).
+    fn act(&self, planes: &[u8], mask: &[u32; 3]) -> u32;
+}
+
+/// Who plays a seat in the arena.
+#[derive(Clone, Copy)]
+pub enum Player<'a> {
+    /// A built-in agent.
+    Builtin(Agent),
+    /// A caller's policy, reported under `name`.
+    Policy {
+        /// The name in the report.
+        name: &'a str,
+        /// The policy.
+        policy: &'a dyn Policy,
+    },
+}
+
+impl Player<'_> {
+    /// The name the report uses.
+    pub fn name(&self) -> String {
+        match self {
+            Player::Builtin(a) => a.name().to_string(),
+            Player::Policy { name, .. } => name.to_string(),
+        }
+    }
+}
+
+/// What to play.
+#[derive(Clone)]
+pub struct Arena<'a> {
+    /// The rules.
+    pub variant: Variant,
+    /// Game length.
+    pub mode: Mode,
+    /// The players of seats 0..3 in the first game of each set; the set's other games rotate them.
+    pub players: [Player<'a>; 4],
+    /// Sets of walls; each set is four games (one per rotation).
+    pub sets: usize,
+    /// Seeds the walls (set `i` uses `env_seed(seed, i, 0)`).
+    pub seed: u64,
+}
+
+/// One player's results.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Standing {
+    /// The player's name (players with the same name are pooled).
+    pub name: String,
+    /// Games played (seat-games: a name in two seats counts twice per game).
+    pub games: u64,
+    /// Average final rank, 1 = first.
+    pub mean_rank: f64,
+    /// Half-width of the 95% confidence interval of `mean_rank` (normal, over sets).
+    pub rank_ci95: f64,
+    /// Finishes in 1st..4th place.
+    pub ranks: [u64; 4],
+    /// Average final score in points (before uma; the arena pays none).
+    pub mean_score: f64,
+    /// Rounds played.
+    pub rounds: u64,
+    /// Rounds won (ron or tsumo) / rounds.
+    pub win_rate: f64,
+    /// Rounds in which the player's discard was ronned / rounds.
+    pub deal_in_rate: f64,
+    /// Rounds in which the player called chi, pon or an open kan / rounds.
+    pub call_rate: f64,
+    /// Rounds in which the player declared riichi / rounds.
+    pub riichi_rate: f64,
+    /// Average score change of a winning round for the winner (hand, honba and sticks).
+    pub points_per_win: f64,
+    /// Illegal actions played (a built-in agent never plays one).
+    pub illegal: u64,
+}
+
+/// The whole result.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Report {
+    /// Games played (4 per set).
+    pub games: u64,
+    /// Decisions played.
+    pub decisions: u64,
+    /// One standing per distinct player name, best average rank first.
+    pub standings: Vec<Standing>,
+}
+
+/// Per seat-game tallies.
+#[derive(Clone, Copy, Default)]
+struct Tally {
+    rank: u32,
+    score: i64,
+    rounds: u64,
+    wins: u64,
+    deal_ins: u64,
+    calls: u64,
+    riichis: u64,
+    win_points: i64,
+    illegal: u64,
+}
+
+fn rank_of(scores: &[i32; 4], first_dealer: u32, p: usize) -> u32 {
+    let order = |q: usize| (q as u32 + 4 - first_dealer) % 4;
+    (0..4)
+        .filter(|&q| q != p && (scores[q] > scores[p] || (scores[q] == scores[p] && order(q) < order(p))))
+        .count() as u32
+}
+
+/// Plays one game with `seating[p]` in seat p; returns the tallies per seat and the decisions.
+fn play(arena: &Arena, seed: u64, seating: &[Player; 4]) -> ([Tally; 4], u64) {
+    with_variant!(arena.variant, v => {
+        let mut s: GameState = v::game_new(ResetInput {
+            seed: [seed as u32, (seed >> 32) as u32],
+            mode: arena.mode.kernel(),
+            dealer: 4,
+            use_wall: 0,
+            wall: [0; 136],
+            uma: [0; 4],
+            penalty: v::host::ILLEGAL_ACTION_PENALTY,
+            auto_reset: 0,
+        });
+        let first_dealer = s.dealer;
+        let mut t = [Tally::default(); 4];
+        let (mut called, mut riichi) = ([false; 4], [false; 4]);
+        let mut decisions = 0u64;
+        let calls = [v::ACTION_CHI_LEFT, v::ACTION_CHI_LEFT_RED, v::ACTION_CHI_MIDDLE, v::ACTION_CHI_MIDDLE_RED,
+            v::ACTION_CHI_RIGHT, v::ACTION_CHI_RIGHT_RED, v::ACTION_PON, v::ACTION_PON_RED, v::ACTION_OPEN_KAN];
+        let round_end = kernel::EVENT_RON | kernel::EVENT_TSUMO | kernel::EVENT_EXHAUSTIVE_DRAW | kernel::EVENT_ABORTIVE_DRAW;
+        while s.terminated == 0 {
+            let p = s.current as usize;
+            let planes = v::observe_planes(s, kernel::OBSERVE_CURRENT);
+            let a = match seating[p] {
+                Player::Builtin(agent) => v::agent_act(agent.kernel(), planes, s.mask, s.seed, s.steps),
+                Player::Policy { policy, .. } => policy.act(bytemuck::bytes_of(&planes), &s.mask),
+            };
+            riichi[p] |= a == v::ACTION_RIICHI;
+            called[p] |= calls.contains(&a);
+            v::game_step(&mut s, a);
+            decisions += 1;
+            if s.illegal != 0 {
+                t[(s.illegal - 1) as usize].illegal += 1;
+            }
+            if s.events & round_end != 0 {
+                for q in 0..4 {
+                    t[q].rounds += 1;
+                    t[q].calls += u64::from(called[q]);
+                    t[q].riichis += u64::from(riichi[q]);
+                    if s.winners >> q & 1 == 1 {
+                        t[q].wins += 1;
+                        t[q].win_points += i64::from(s.rewards[q]) * 100;
+                    }
+                }
+                if s.deal_in != 0 {
+                    t[(s.deal_in - 1) as usize].deal_ins += 1;
+                }
+                called = [false; 4];
+                riichi = [false; 4];
+            }
+        }
+        for q in 0..4 {
+            t[q].rank = rank_of(&s.scores, first_dealer, q);
+            t[q].score = i64::from(s.scores[q]);
+        }
+        (t, decisions)
+    })
+}
+
+/// Plays the arena (sets in parallel on rayon's pool), calling `progress(games_done)` as games finish.
+pub fn run(arena: &Arena, progress: &(dyn Fn(u64) + Sync)) -> Report {
+    let names: Vec<String> = {
+        let mut n: Vec<String> = arena.players.iter().map(Player::name).collect();
+        n.sort();
+        n.dedup();
+        n
+    };
+    let done = std::sync::atomic::AtomicU64::new(0);
+    // Per set: for each name, the (rank sum, count) of its seat-games, and the tallies.
+    let sets: Vec<(Vec<(f64, u64)>, Vec<Tally>, Vec<String>, u64)> = (0..arena.sets)
+        .into_par_iter()
+        .map(|set| {
+            let seed = env_seed(arena.seed, set as u64, 0);
+            let mut by_name = vec![(0.0, 0u64); names.len()];
+            let mut tallies = Vec::new();
+            let mut who = Vec::new();
+            let mut decisions = 0;
+            for rotation in 0..4 {
+                let seating: [Player; 4] = std::array::from_fn(|p| arena.players[(p + rotation) % 4]);
+                let (t, d) = play(arena, seed, &seating);
+                decisions += d;
+                for p in 0..4 {
+                    let name = seating[p].name();
+                    let i = names.iter().position(|n| *n == name).unwrap_or(0);
+                    by_name[i].0 += f64::from(t[p].rank + 1);
+                    by_name[i].1 += 1;
+                    tallies.push(t[p]);
+                    who.push(name);
+                }
+                progress(done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1);
+            }
+            (by_name, tallies, who, decisions)
+        })
+        .collect();
+    let mut report = Report {
+        games: 4 * arena.sets as u64,
+        decisions: sets.iter().map(|s| s.3).sum(),
+        standings: Vec::new(),
+    };
+    for (i, name) in names.iter().enumerate() {
+        let unit_means: Vec<f64> = sets.iter().map(|s| s.0[i].0 / s.0[i].1 as f64).collect();
+        let n = unit_means.len() as f64;
+        let mean = unit_means.iter().sum::<f64>() / n;
+        let var = if n > 1.0 {
+            unit_means.iter().map(|m| (m - mean).powi(2)).sum::<f64>() / (n - 1.0)
+        } else {
+            0.0
+        };
+        let mut st = Standing {
+            name: name.clone(),
+            mean_rank: mean,
+            rank_ci95: 1.96 * (var / n).sqrt(),
+            ..Standing::default()
+        };
+        let (mut score, mut wins, mut deal_ins, mut calls, mut riichis, mut win_points) =
+            (0i64, 0u64, 0u64, 0u64, 0u64, 0i64);
+        for s in &sets {
+            for (t, who) in s.1.iter().zip(&s.2) {
+                if who == name {
+                    st.games += 1;
+                    st.ranks[t.rank as usize] += 1;
+                    score += t.score;
+                    st.rounds += t.rounds;
+                    wins += t.wins;
+                    deal_ins += t.deal_ins;
+                    calls += t.calls;
+                    riichis += t.riichis;
+                    win_points += t.win_points;
+                    st.illegal += t.illegal;
+                }
+            }
+        }
+        let per_round = |x: u64| {
+            if st.rounds == 0 {
+                0.0
+            } else {
+                x as f64 / st.rounds as f64
+            }
+        };
+        st.mean_score = score as f64 / st.games.max(1) as f64;
+        st.win_rate = per_round(wins);
+        st.deal_in_rate = per_round(deal_ins);
+        st.call_rate = per_round(calls);
+        st.riichi_rate = per_round(riichis);
+        st.points_per_win = if wins == 0 {
+            0.0
+        } else {
+            win_points as f64 / wins as f64
+        };
+        report.standings.push(st);
+    }
+    report.standings.sort_by(|a, b| a.mean_rank.total_cmp(&b.mean_rank));
+    report
+}
