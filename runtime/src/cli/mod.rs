@@ -3,6 +3,7 @@
 mod arena;
 mod args;
 mod bench;
+mod observe;
 mod replay;
 mod score;
 mod selfplay;
@@ -53,6 +54,8 @@ enum Command {
     Selfplay(selfplay::Args),
     /// Replay tenhou.net/6 logs through the red variant and compare every round, e.g. `rinshan replay logs/`
     Replay(replay::Args),
+    /// A seat's observation at a position of a tenhou.net/6 log, e.g. `rinshan observe game.json --round 2 --step 10`
+    Observe(observe::Args),
     /// Rate built-in agents by duplicate play, e.g. `rinshan arena --agents greedy,rule,rule,rule --games 4000`
     Arena(arena::Args),
     /// Benchmarks: `bench hands` (shanten, scoring), `bench env` (environment steps by batch size)
@@ -69,6 +72,7 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
         Command::Selfplay(a) => selfplay::run(a),
         Command::Replay(a) => replay::run(a),
         Command::Arena(a) => arena::run(a),
+        Command::Observe(a) => observe::run(a),
         Command::Bench { what } => bench::run(what),
     }
 }

@@ -3,6 +3,7 @@
 //! * [`log`]    — reads tenhou.net/6 JSON logs (one record per line, or one whole game) into typed
 //!   rounds: starting hands, draws and calls, discards and kans, and the result with its yaku.
 //! * [`plan`]   — a logged round in the order of play: the wall it was dealt from and its decisions
+//! * [`position`] — every decision of a logged round with the state before it (for observations)
 //! * [`replay`] — drives the environment with the logged decisions and compares every round
 //! * [`write`]  — records games played in rinshan (red variant) as tenhou.net/6 logs
 //!
@@ -11,5 +12,6 @@
 
 pub mod log;
 pub mod plan;
+pub mod position;
 pub mod replay;
 pub mod write;

@@ -7,6 +7,10 @@
 //! 3 = left. Tiles are types 0..33 (1-9m, 1-9p, 1-9s, E S W N, white green red) or, where a
 //! physical tile is named, values 0..36 with 34/35/36 = red 5m/5p/5s; -1 = none.
 
+mod text;
+
+pub use text::{describe, field_values};
+
 use crate::generated::kernel as k;
 
 /// A form of the observation.

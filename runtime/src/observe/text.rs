@@ -1,0 +1,188 @@
+//! Observations as text for people: what `rinshan observe` prints and the golden snapshots pin.
+//! Reads the record through the field table only, as any consumer would.
+
+use std::fmt::Write as _;
+
+use super::{Dtype, Form, EVENT_KINDS, PLANE_ROWS, SCALARS, SEAT_ROWS};
+use crate::generated::kernel as k;
+use crate::{Tile, TileType};
+
+const SEATS: [&str; 4] = ["self", "right", "across", "left"];
+
+/// The elements of field `name` of a `form` record, widened to i32.
+pub fn field_values(form: Form, record: &[u8], name: &str) -> Vec<i32> {
+    let Some(f) = form.field(name) else {
+        return Vec::new();
+    };
+    let bytes = &record[f.offset..f.offset + f.len()];
+    match f.dtype {
+        Dtype::U8 => bytes.iter().map(|&b| i32::from(b)).collect(),
+        Dtype::I8 => bytes.iter().map(|&b| i32::from(b as i8)).collect(),
+        Dtype::I16 => bytes
+            .chunks(2)
+            .map(|c| i32::from(i16::from_le_bytes([c[0], c[1]])))
+            .collect(),
+    }
+}
+
+fn type_name(t: usize) -> String {
+    TileType::new(t as u8).map_or(format!("?{t}"), |t| t.name())
+}
+
+fn tile_name(v: i32) -> String {
+    if v < 0 {
+        return "-".into();
+    }
+    u8::try_from(v)
+        .ok()
+        .and_then(Tile::from_value)
+        .map_or(format!("?{v}"), |t| t.name())
+}
+
+fn scalars_text(out: &mut String, scalars: &[i32]) {
+    for s in SCALARS {
+        let i = s.index as usize;
+        let vals: Vec<String> = scalars[i..i + s.count as usize].iter().map(i32::to_string).collect();
+        let _ = writeln!(out, "  {:<16} {}", s.name, vals.join(" "));
+    }
+}
+
+/// A record of `form` as text: the nonzero plane rows (or the token fields) and the scalars.
+pub fn describe(form: Form, record: &[u8]) -> String {
+    let mut out = String::new();
+    match form {
+        Form::Planes => {
+            let planes = field_values(form, record, "planes");
+            let mut names: Vec<(u32, String)> = PLANE_ROWS
+                .iter()
+                .flat_map(|r| {
+                    (0..r.count).map(move |i| {
+                        (
+                            r.row + i,
+                            if r.count == 1 {
+                                r.name.to_string()
+                            } else {
+                                format!("{}{}", r.name, i + 1)
+                            },
+                        )
+                    })
+                })
+                .collect();
+            for seat in 0..4u32 {
+                for r in SEAT_ROWS {
+                    names.push((
+                        k::P_SEAT + seat * k::P_SEAT_ROWS + r.row,
+                        format!("{}.{}", SEATS[seat as usize], r.name),
+                    ));
+                }
+            }
+            names.sort();
+            out.push_str("planes (nonzero cells):\n");
+            for (row, name) in names {
+                let cells: Vec<String> = (0..34)
+                    .filter_map(|t| {
+                        let v = planes[row as usize * 34 + t];
+                        (v != 0).then(|| {
+                            if v == 1 {
+                                type_name(t)
+                            } else {
+                                format!("{}={v}", type_name(t))
+                            }
+                        })
+                    })
+                    .collect();
+                if !cells.is_empty() {
+                    let _ = writeln!(out, "  {row:>2} {name:<20} {}", cells.join(" "));
+                }
+            }
+        }
+        Form::Tokens => {
+            let hand = field_values(form, record, "hand");
+            let red = field_values(form, record, "hand_red");
+            let mut tiles = Vec::new();
+            for (t, &n) in hand.iter().enumerate() {
+                let reds = if t < 27 && t % 9 == 4 { red[t / 9] } else { 0 };
+                for i in 0..n {
+                    tiles.push(if i < reds {
+                        tile_name(34 + (t / 9) as i32)
+                    } else {
+                        type_name(t)
+                    });
+                }
+            }
+            let _ = writeln!(out, "hand: {}", tiles.join(" "));
+            let one = |n: &str| field_values(form, record, n).first().copied().unwrap_or(-1);
+            let _ = writeln!(
+                out,
+                "drawn: {}  target: {}",
+                tile_name(one("drawn")),
+                tile_name(one("target"))
+            );
+            let melds = field_values(form, record, "melds");
+            let kinds = ["chi", "pon", "open kan", "closed kan", "added kan"];
+            for seat in 0..4 {
+                let list: Vec<String> = (0..4)
+                    .filter_map(|i| {
+                        let m = &melds[(seat * 4 + i) * 4..(seat * 4 + i) * 4 + 4];
+                        (m[0] >= 0).then(|| {
+                            // `from` is relative to the meld's owner.
+                            let from = match m[3] {
+                                1 => " from its right",
+                                2 => " from across it",
+                                3 => " from its left",
+                                _ => "",
+                            };
+                            format!(
+                                "{} {}{} (reds {})",
+                                kinds.get(m[0] as usize).unwrap_or(&"?"),
+                                type_name(m[1] as usize),
+                                from,
+                                m[2]
+                            )
+                        })
+                    })
+                    .collect();
+                if !list.is_empty() {
+                    let _ = writeln!(out, "melds of {}: {}", SEATS[seat], list.join(", "));
+                }
+            }
+            let dora: Vec<String> = field_values(form, record, "dora_indicators")
+                .into_iter()
+                .filter(|&v| v >= 0)
+                .map(tile_name)
+                .collect();
+            let _ = writeln!(out, "dora indicators: {}", dora.join(" "));
+            let seen = field_values(form, record, "tiles_seen");
+            let seen: Vec<String> = seen
+                .iter()
+                .enumerate()
+                .filter(|(_, &n)| n > 0)
+                .map(|(t, n)| format!("{}={n}", type_name(t)))
+                .collect();
+            let _ = writeln!(out, "tiles seen: {}", seen.join(" "));
+            let events = field_values(form, record, "events");
+            let n = one("events_len").max(0) as usize;
+            out.push_str("events:\n");
+            for e in events.chunks(4).take(n) {
+                let kind = EVENT_KINDS.iter().find(|x| x.0 as i32 == e[0]).map_or("?", |x| x.1);
+                let seat = SEATS.get(e[1] as usize).unwrap_or(&"?");
+                let tile = if e[2] >= 0 {
+                    format!(" {}", tile_name(e[2]))
+                } else if e[0] == k::EV_DRAW as i32 {
+                    " ?".into()
+                } else {
+                    String::new()
+                };
+                let flags = if e[3] != 0 {
+                    format!(" [flags {}]", e[3])
+                } else {
+                    String::new()
+                };
+                let _ = writeln!(out, "  {seat:<6} {kind}{tile}{flags}");
+            }
+        }
+    }
+    out.push_str("scalars:\n");
+    scalars_text(&mut out, &field_values(form, record, "scalars"));
+    out
+}

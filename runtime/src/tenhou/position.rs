@@ -1,0 +1,96 @@
+//! The positions of a logged round: every decision the engine asks for while the round is
+//! replayed (the log's own moves, and the claim prompts it passes), each with the game state
+//! before it. `rinshan observe` and the observation snapshots look at a log through these.
+
+use super::log::{round_name, Game};
+use super::plan::plan;
+use crate::env::{Config, Deal, Env, Mode};
+use crate::generated::kernel::GameState;
+use crate::generated::red as k;
+use crate::Variant;
+
+/// One decision of a replayed round.
+#[derive(Clone)]
+pub struct Position {
+    /// 0-based decision index within the round (claim prompts included).
+    pub step: usize,
+    /// The seat deciding.
+    pub seat: u32,
+    /// The action played (the log's move, or a pass at a prompt the log does not take).
+    pub action: u32,
+    /// What the log says for this decision (`pass` at a prompt it does not list).
+    pub what: String,
+    /// The game state before the decision.
+    pub state: GameState,
+}
+
+/// The decisions of round `round` (0-based index into the game's rounds) in order of play.
+pub fn round_positions(game: &Game, round: usize) -> Result<Vec<Position>, String> {
+    let Some(r) = game.rounds.get(round) else {
+        return Err(format!(
+            "{}: no round {round} (the log has {})",
+            game.path,
+            game.rounds.len()
+        ));
+    };
+    let where_ = format!("{}: line {} ({})", game.path, r.line, round_name(r.kyoku, r.honba));
+    let p = plan(r).map_err(|e| format!("{where_}: {e}"))?;
+    let mut env = Env::new(Config {
+        mode: Mode::Half,
+        uma: Some([0; 4]),
+        threads: Some(1),
+        ..Config::new(Variant::Red, 1)
+    })
+    .map_err(|e| e.to_string())?;
+    env.reset().map_err(|e| e.to_string())?;
+    let deal = Deal {
+        round: r.kyoku,
+        dealer: r.dealer() as u32,
+        honba: r.honba,
+        sticks: r.sticks,
+        scores: r.scores,
+        wall: p.wall,
+    };
+    env.deal(&[Some(deal)]).map_err(|e| e.to_string())?;
+    let mut out = Vec::new();
+    let mut next = 0;
+    loop {
+        let step = env.last().clone();
+        let words = env.states_words().map_err(|e| e.to_string())?;
+        let state: GameState = *bytemuck::from_bytes(bytemuck::cast_slice(&words));
+        let seat = step.current_player[0];
+        let claim = step.legal_actions(0).any(|a| a == k::ACTION_PASS);
+        let (action, what) = match p.moves.get(next) {
+            Some(m) if m.seat == seat as usize && m.claim == claim => {
+                next += 1;
+                (m.action, m.what.clone())
+            }
+            _ if claim => (k::ACTION_PASS, "pass".to_string()),
+            Some(m) => {
+                return Err(format!(
+                    "{where_}: step {}: the log has seat {} {}, the engine asks seat {seat}",
+                    out.len(),
+                    m.seat,
+                    m.what
+                ))
+            }
+            None => break,
+        };
+        out.push(Position {
+            step: out.len(),
+            seat,
+            action,
+            what,
+            state,
+        });
+        let after = env.step(&[action]).map_err(|e| e.to_string())?;
+        use crate::env::events as e;
+        if after.events[0] & (e::RON | e::TSUMO | e::EXHAUSTIVE_DRAW | e::ABORTIVE_DRAW) != 0
+            || after.terminated[0]
+            || after.illegal[0]
+        {
+            break;
+        }
+    }
+    Ok(out)
+}
