@@ -112,3 +112,35 @@ pub struct ObsTokens {
     pub words: [u32; 254],
 }
 
+
+// The analysis tier (opt-in, same knowledge as the observation): byte offsets in ObsAnalysis.
+pub const ANALYSIS_WORDS: u32 = 34;
+pub const A_DISCARD_SHANTEN: u32 = 0;
+pub const A_DISCARD_UKEIRE: u32 = 34;
+pub const A_WAITS: u32 = 68;
+pub const A_IMPROVING: u32 = 102;
+
+#[derive(Clone, Copy)]
+#[repr(C)]
+pub struct ObsAnalysis {
+    pub words: [u32; 34],
+}
+
+// The oracle (opt-in, hidden information, never part of an observation): byte offsets in
+// ObsOracle. Other seats in ego order (right, across, left).
+pub const ORACLE_WORDS: u32 = 78;
+pub const O_HANDS: u32 = 0;
+pub const O_RED: u32 = 102;
+pub const O_SHANTEN: u32 = 112;
+pub const O_FURITEN: u32 = 115;
+pub const O_WAITS: u32 = 120;
+pub const O_WALL: u32 = 224;
+pub const O_RINSHAN: u32 = 296;
+pub const O_DORA: u32 = 300;
+pub const O_URA: u32 = 305;
+
+#[derive(Clone, Copy)]
+#[repr(C)]
+pub struct ObsOracle {
+    pub words: [u32; 78],
+}

@@ -23,6 +23,7 @@ use crate::gpu::{Gpu, GpuError};
 use crate::tile::Tile;
 use crate::Variant;
 
+pub(crate) use observe::observe_cpu;
 pub use observe::Observer;
 pub use table::{Deal, DrawKind, DrawRecord, Table, WinRecord};
 

@@ -13,6 +13,8 @@ fn observe_entry(form: Form) -> &'static str {
     match form {
         Form::Planes => "observe_planes_main",
         Form::Tokens => "observe_tokens_main",
+        Form::Analysis => "observe_analysis_main",
+        Form::Oracle => "observe_oracle_main",
     }
 }
 
@@ -56,7 +58,7 @@ pub(crate) struct GpuEnv {
     views: Vec<u32>,
     /// Observations, made on first use: observer seats, and per form its pass, output and readback.
     observer_args: Option<wgpu::Buffer>,
-    observe: [Option<ObservePass>; 2],
+    observe: [Option<ObservePass>; 4],
 }
 
 /// One observation form's read entry, its output buffer and its readback, and the last words read.
@@ -119,7 +121,7 @@ impl GpuEnv {
             passes: [None, None, None, None, None],
             views: Vec::with_capacity(batch * view_words),
             observer_args: None,
-            observe: [None, None],
+            observe: [None, None, None, None],
         })
     }
 

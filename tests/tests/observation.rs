@@ -2,13 +2,13 @@
 //! gives the same picture:
 //! - hidden resampling: permuting every tile the observer cannot see (other hands, the wall, the
 //!   hidden dead wall) and scrambling other seats' waits, furiten, claim options and choices, the
-//!   seeds and the step counter leaves both forms byte-identical;
+//!   seeds and the step counter leaves both forms and the analysis tier byte-identical;
 //! - seat rotation: the same game with the seats relabelled gives each seat the same observation;
 //! - the event tokens replay the round (each seat's discards in order, every draw of the
 //!   observer with its tile).
 
 use rinshan::generated::kernel::{
-    self, GameState, ObsPlanes, ObsTokens, ResetInput, MODE_HALF, OBSERVE_CURRENT, SEAT_FURITEN_RIICHI,
+    self, GameState, ObsAnalysis, ObsPlanes, ObsTokens, ResetInput, MODE_HALF, OBSERVE_CURRENT, SEAT_FURITEN_RIICHI,
     SEAT_FURITEN_TEMP, WALL_DORA, WALL_LIVE_END, WALL_LIVE_START, WALL_RINSHAN, WALL_URA,
 };
 use rinshan::generated::{no_red, red};
@@ -23,6 +23,7 @@ struct Kernels {
     step: fn(&mut GameState, u32),
     planes: fn(GameState, u32) -> ObsPlanes,
     tokens: fn(GameState, u32) -> ObsTokens,
+    analysis: fn(GameState, u32) -> ObsAnalysis,
 }
 
 const KERNELS: [Kernels; 2] = [
@@ -32,6 +33,7 @@ const KERNELS: [Kernels; 2] = [
         step: red::game_step,
         planes: red::observe_planes,
         tokens: red::observe_tokens,
+        analysis: red::observe_analysis,
     },
     Kernels {
         variant: Variant::NoRed,
@@ -39,6 +41,7 @@ const KERNELS: [Kernels; 2] = [
         step: no_red::game_step,
         planes: no_red::observe_planes,
         tokens: no_red::observe_tokens,
+        analysis: no_red::observe_analysis,
     },
 ];
 
@@ -55,11 +58,11 @@ fn reset_input(seed: u64, dealer: u32, wall: Option<[u32; 136]>) -> ResetInput {
     }
 }
 
+/// Planes, and tokens followed by the analysis tier.
 fn both(k: &Kernels, s: &GameState, seat: u32) -> (Vec<u32>, Vec<u32>) {
-    (
-        bytemuck::cast_slice(&[(k.planes)(*s, seat)]).to_vec(),
-        bytemuck::cast_slice(&[(k.tokens)(*s, seat)]).to_vec(),
-    )
+    let mut tokens: Vec<u32> = bytemuck::cast_slice(&[(k.tokens)(*s, seat)]).to_vec();
+    tokens.extend_from_slice(bytemuck::cast_slice(&[(k.analysis)(*s, seat)]));
+    (bytemuck::cast_slice(&[(k.planes)(*s, seat)]).to_vec(), tokens)
 }
 
 fn wall_set(s: &mut GameState, i: u32, v: u32) {

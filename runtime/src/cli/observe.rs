@@ -24,7 +24,7 @@ pub struct Args {
     /// The observing seat (absolute, 0..3); default: the seat deciding
     #[arg(long)]
     seat: Option<u32>,
-    /// planes or tokens
+    /// planes, tokens, analysis or oracle (what the seat cannot see)
     #[arg(long, default_value = "tokens")]
     form: Form,
     /// Print the fields as JSON arrays
@@ -64,10 +64,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
         Some(s) => s,
         None => pos.seat,
     };
-    let record: Vec<u8> = match args.form {
-        Form::Planes => bytemuck::bytes_of(&rinshan::generated::red::observe_planes(pos.state, seat)).to_vec(),
-        Form::Tokens => bytemuck::bytes_of(&rinshan::generated::red::observe_tokens(pos.state, seat)).to_vec(),
-    };
+    let record = rinshan::observe::record(rinshan::Variant::Red, args.form, &pos.state, seat);
     let round = &game.rounds[args.round];
     if args.json {
         let fields: serde_json::Map<String, serde_json::Value> = args

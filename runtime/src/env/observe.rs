@@ -20,28 +20,42 @@ pub enum Observer<'a> {
 }
 
 /// Writes `form` observations of `states` (GameState words) for the seats in `args` into `out`.
-pub(crate) fn observe_cpu(variant: Variant, form: Form, states: &[u32], args: &[u32], out: &mut [u32], serial: bool) {
+pub(crate) fn observe_cpu<S: bytemuck::Pod>(
+    variant: Variant,
+    form: Form,
+    states: &[S],
+    args: &[u32],
+    out: &mut [u32],
+    serial: bool,
+) {
     let sts: &[kernel::GameState] = bytemuck::cast_slice(states);
     with_variant!(variant, v => match form {
-        Form::Planes => {
-            let outs: &mut [kernel::ObsPlanes] = bytemuck::cast_slice_mut(out);
-            let one = |((o, s), a): ((&mut kernel::ObsPlanes, &kernel::GameState), &u32)| *o = v::observe_planes(*s, *a);
-            if serial {
-                outs.iter_mut().zip(sts).zip(args).for_each(one);
-            } else {
-                outs.par_iter_mut().zip(sts.par_iter()).zip(args.par_iter()).with_min_len(8).for_each(one);
-            }
-        }
-        Form::Tokens => {
-            let outs: &mut [kernel::ObsTokens] = bytemuck::cast_slice_mut(out);
-            let one = |((o, s), a): ((&mut kernel::ObsTokens, &kernel::GameState), &u32)| *o = v::observe_tokens(*s, *a);
-            if serial {
-                outs.iter_mut().zip(sts).zip(args).for_each(one);
-            } else {
-                outs.par_iter_mut().zip(sts.par_iter()).zip(args.par_iter()).with_min_len(8).for_each(one);
-            }
-        }
+        Form::Planes => each(out, sts, args, serial, v::observe_planes),
+        Form::Tokens => each(out, sts, args, serial, v::observe_tokens),
+        Form::Analysis => each(out, sts, args, serial, v::observe_analysis),
+        Form::Oracle => each(out, sts, args, serial, v::observe_oracle),
     })
+}
+
+/// `out[i] = f(states[i], args[i])` over the batch, in parallel unless `serial`.
+fn each<T: bytemuck::Pod + Send>(
+    out: &mut [u32],
+    sts: &[kernel::GameState],
+    args: &[u32],
+    serial: bool,
+    f: fn(kernel::GameState, u32) -> T,
+) {
+    let outs: &mut [T] = bytemuck::cast_slice_mut(out);
+    let one = |((o, s), a): ((&mut T, &kernel::GameState), &u32)| *o = f(*s, *a);
+    if serial {
+        outs.iter_mut().zip(sts).zip(args).for_each(one);
+    } else {
+        outs.par_iter_mut()
+            .zip(sts.par_iter())
+            .zip(args.par_iter())
+            .with_min_len(8)
+            .for_each(one);
+    }
 }
 
 impl Env {

@@ -20,17 +20,29 @@ pub enum Form {
     Planes,
     /// Hand, melds, dora, the round's public events in order, and the scalars: for Transformers.
     Tokens,
+    /// The opt-in analysis tier: shanten and ukeire after each discard, waits, improving draws.
+    /// Computed from the observer's hand and the tiles it has seen: no more than it may know.
+    Analysis,
+    /// The opt-in oracle: what the observer cannot see (other hands, shanten, waits, furiten, the
+    /// live wall in draw order, the replacement tiles, every dora and ura indicator). Hidden
+    /// information for oracle guiding and centralised critics; never part of an observation.
+    Oracle,
 }
 
 impl Form {
-    /// Both forms.
-    pub const ALL: [Form; 2] = [Form::Planes, Form::Tokens];
+    /// Every form.
+    pub const ALL: [Form; 4] = [Form::Planes, Form::Tokens, Form::Analysis, Form::Oracle];
+
+    /// The observation's forms (what an agent may see).
+    pub const OBSERVATIONS: [Form; 3] = [Form::Planes, Form::Tokens, Form::Analysis];
 
     /// The name users write: `planes` or `tokens`.
     pub fn name(self) -> &'static str {
         match self {
             Form::Planes => "planes",
             Form::Tokens => "tokens",
+            Form::Analysis => "analysis",
+            Form::Oracle => "oracle",
         }
     }
 
@@ -39,6 +51,8 @@ impl Form {
         match self {
             Form::Planes => crate::hand::words::<k::ObsPlanes>(),
             Form::Tokens => crate::hand::words::<k::ObsTokens>(),
+            Form::Analysis => crate::hand::words::<k::ObsAnalysis>(),
+            Form::Oracle => crate::hand::words::<k::ObsOracle>(),
         }
     }
 
@@ -52,6 +66,8 @@ impl Form {
         match self {
             Form::Planes => &PLANES_FIELDS,
             Form::Tokens => &TOKENS_FIELDS,
+            Form::Analysis => &ANALYSIS_FIELDS,
+            Form::Oracle => &ORACLE_FIELDS,
         }
     }
 
@@ -73,6 +89,15 @@ impl std::str::FromStr for Form {
     fn from_str(name: &str) -> Result<Form, crate::UnknownName> {
         crate::UnknownName::find("observation form", name, &Form::ALL)
     }
+}
+
+/// One `form` record of `state` seen by `seat` (0..3, or 4 for the player to move), computed on
+/// the CPU: for a single position (a log's, a test's); batches go through
+/// [`crate::env::Env::observe`].
+pub fn record(variant: crate::Variant, form: Form, state: &k::GameState, seat: u32) -> Vec<u8> {
+    let mut words = vec![0u32; form.words()];
+    crate::env::observe_cpu(variant, form, bytemuck::bytes_of(state), &[seat], &mut words, true);
+    bytemuck::cast_slice(&words).to_vec()
 }
 
 /// Element type of a field.
@@ -228,6 +253,109 @@ pub static TOKENS_FIELDS: [Field; 10] = [
         shape: &[u(k::TOKEN_EVENTS), 4],
         doc: "this round's public events in order, one row each: [kind, actor (ego seat), tile (0..36, -1 none or hidden), flags]; rows past `events_len` are 0. See the event kinds",
     },
+];
+
+const fn field(name: &'static str, offset: u32, dtype: Dtype, shape: &'static [usize], doc: &'static str) -> Field {
+    Field {
+        name,
+        offset: offset as usize,
+        dtype,
+        shape,
+        doc,
+    }
+}
+
+/// The fields of [`Form::Analysis`].
+pub static ANALYSIS_FIELDS: [Field; 4] = [
+    field(
+        "discard_shanten",
+        k::A_DISCARD_SHANTEN,
+        Dtype::I8,
+        &[34],
+        "at a turn (3k+2 tiles): shanten after discarding one of the type; -1 where the type is not held or at a claim",
+    ),
+    field(
+        "discard_ukeire",
+        k::A_DISCARD_UKEIRE,
+        Dtype::U8,
+        &[34],
+        "at a turn: unseen copies of the tiles that would lower that shanten (0..136)",
+    ),
+    field(
+        "waits",
+        k::A_WAITS,
+        Dtype::U8,
+        &[34],
+        "tiles completing the observer's 13-tile hand (as the planes' waits row)",
+    ),
+    field(
+        "improving",
+        k::A_IMPROVING,
+        Dtype::U8,
+        &[34],
+        "with 3k+1 tiles (waiting for a draw or a claim): unseen copies of each type that would lower the shanten",
+    ),
+];
+
+/// The fields of [`Form::Oracle`].
+pub static ORACLE_FIELDS: [Field; 9] = [
+    field(
+        "others_hand",
+        k::O_HANDS,
+        Dtype::U8,
+        &[3, 34],
+        "concealed counts of the right, across and left seats",
+    ),
+    field(
+        "others_red",
+        k::O_RED,
+        Dtype::U8,
+        &[3, 3],
+        "their concealed red 5m, 5p, 5s",
+    ),
+    field("others_shanten", k::O_SHANTEN, Dtype::I8, &[3], "their exact shanten"),
+    field(
+        "others_furiten",
+        k::O_FURITEN,
+        Dtype::U8,
+        &[3],
+        "whether each is furiten",
+    ),
+    field(
+        "others_waits",
+        k::O_WAITS,
+        Dtype::U8,
+        &[3, 34],
+        "tiles completing each one's 13-tile hand",
+    ),
+    field(
+        "wall",
+        k::O_WALL,
+        Dtype::I8,
+        &[70],
+        "the live wall in draw order (tile values); -1 once drawn or given to the dead wall by a kan",
+    ),
+    field(
+        "rinshan",
+        k::O_RINSHAN,
+        Dtype::I8,
+        &[4],
+        "the replacement tiles in order; -1 once drawn",
+    ),
+    field(
+        "dora_indicators",
+        k::O_DORA,
+        Dtype::I8,
+        &[5],
+        "all five dora indicator positions, revealed or not",
+    ),
+    field(
+        "ura_indicators",
+        k::O_URA,
+        Dtype::I8,
+        &[5],
+        "the five ura dora indicators",
+    ),
 ];
 
 /// One row (or block of rows) of the planes, with its scale.

@@ -181,6 +181,34 @@ pub fn describe(form: Form, record: &[u8]) -> String {
                 let _ = writeln!(out, "  {seat:<6} {kind}{tile}{flags}");
             }
         }
+        Form::Analysis | Form::Oracle => {
+            for f in form.fields() {
+                let values = field_values(form, record, f.name);
+                if f.shape.last() == Some(&34) {
+                    for (r, row) in values.chunks(34).enumerate() {
+                        let cells: Vec<String> = row
+                            .iter()
+                            .enumerate()
+                            .filter(|(_, &v)| v != 0)
+                            .map(|(t, v)| format!("{}={v}", type_name(t)))
+                            .collect();
+                        let label = if f.shape.len() > 1 {
+                            format!("{}[{r}]", f.name)
+                        } else {
+                            f.name.to_string()
+                        };
+                        let _ = writeln!(out, "{label}: {}", cells.join(" "));
+                    }
+                } else if matches!(f.name, "wall" | "rinshan" | "dora_indicators" | "ura_indicators") {
+                    let tiles: Vec<String> = values.iter().map(|&v| tile_name(v)).collect();
+                    let _ = writeln!(out, "{}: {}", f.name, tiles.join(" "));
+                } else {
+                    let nums: Vec<String> = values.iter().map(i32::to_string).collect();
+                    let _ = writeln!(out, "{}: {}", f.name, nums.join(" "));
+                }
+            }
+            return out;
+        }
     }
     out.push_str("scalars:\n");
     scalars_text(&mut out, &field_values(form, record, "scalars"));
