@@ -436,3 +436,12 @@ pub fn game_play(s: &mut GameState, arg: u32) {
     s.illegal = illegal;
     s.terminated = ended as u32;
 }
+
+// The action the built-in agent seated at the player to move would play (`arg`: 4 bits per
+// seat, as in game_play), for hosts that step themselves (self-play with per-step statistics).
+pub fn game_agent_action(state: GameState, arg: u32) -> u32 {
+    let mut s: GameState = state;
+    let agent: u32 = (arg >> (s.current * 4u32)) & 15u32;
+    let o: ObsPlanes = planes_of(&mut s, OBSERVE_CURRENT);
+    agent_act(agent, o, s.mask, s.seed, s.steps)
+}

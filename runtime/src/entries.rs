@@ -21,7 +21,7 @@ pub const UPDATE_ENTRIES: [(&str, &str, &str, &str); 3] = [
 /// The read entry points, after [`UPDATE_ENTRIES`] in binding order: (entry point, kernel function
 /// `fn(State, Arg) -> Out`, state struct, argument type, output struct). Each takes two binding
 /// slots: at slot k its state (read-only) binds 1+2k, its arguments 2+2k and its output 3+2k.
-pub const READ_ENTRIES: [(&str, &str, &str, &str, &str); 4] = [
+pub const READ_ENTRIES: [(&str, &str, &str, &str, &str); 5] = [
     ("observe_planes_main", "observe_planes", "GameState", "u32", "ObsPlanes"),
     ("observe_tokens_main", "observe_tokens", "GameState", "u32", "ObsTokens"),
     (
@@ -32,4 +32,5 @@ pub const READ_ENTRIES: [(&str, &str, &str, &str, &str); 4] = [
         "ObsAnalysis",
     ),
     ("observe_oracle_main", "observe_oracle", "GameState", "u32", "ObsOracle"),
+    ("agent_action_main", "game_agent_action", "GameState", "u32", "u32"),
 ];

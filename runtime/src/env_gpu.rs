@@ -23,6 +23,7 @@ const VIEW: &str = "game_view_main";
 const STEP: &str = "game_step_main";
 const DEAL: &str = "game_deal_main";
 const PLAY: &str = "game_play_main";
+const AGENT_ACTION: &str = "agent_action_main";
 
 /// The passes, made on first use (a driver may take long to compile the step pipeline).
 #[derive(Clone, Copy)]
@@ -58,11 +59,12 @@ pub(crate) struct GpuEnv {
     views: Vec<u32>,
     /// Observations, made on first use: observer seats, and per form its pass, output and readback.
     observer_args: Option<wgpu::Buffer>,
-    observe: [Option<ObservePass>; 4],
+    reads: std::collections::HashMap<&'static str, ReadPass>,
 }
 
-/// One observation form's read entry, its output buffer and its readback, and the last words read.
-struct ObservePass {
+/// One read entry's pass (observations, agents' actions), its output buffer and its readback, and
+/// the last words read.
+struct ReadPass {
     pass: Pass,
     out: wgpu::Buffer,
     readback: wgpu::Buffer,
@@ -121,7 +123,7 @@ impl GpuEnv {
             passes: [None, None, None, None, None],
             views: Vec::with_capacity(batch * view_words),
             observer_args: None,
-            observe: [None, None, None, None],
+            reads: std::collections::HashMap::new(),
         })
     }
 
@@ -216,6 +218,16 @@ impl GpuEnv {
     /// Observations of `form` for the seats in `args` (one per env; 4 = the current player), read
     /// back from the device.
     pub(crate) fn observe(&mut self, form: Form, args: &[u32]) -> Result<&[u32], GpuError> {
+        self.read(observe_entry(form), form.words(), args)
+    }
+
+    /// The actions of the built-in agents seated as `args` says (a seats word per env).
+    pub(crate) fn agent_actions(&mut self, args: &[u32]) -> Result<&[u32], GpuError> {
+        self.read(AGENT_ACTION, 1, args)
+    }
+
+    /// Runs the read entry `entry` (`words` output words per env) on the states with `args`.
+    fn read(&mut self, entry: &'static str, words: usize, args: &[u32]) -> Result<&[u32], GpuError> {
         let device = self.gpu.device().clone();
         let args_buffer = self.observer_args.get_or_insert_with(|| {
             device.create_buffer(&wgpu::BufferDescriptor {
@@ -228,9 +240,8 @@ impl GpuEnv {
         self.gpu
             .queue()
             .write_buffer(args_buffer, 0, bytemuck::cast_slice(args));
-        let slot = form as usize;
-        if self.observe[slot].is_none() {
-            let bytes = (self.batch * form.bytes()) as u64;
+        if !self.reads.contains_key(entry) {
+            let bytes = (self.batch * words * 4) as u64;
             let buffer = |label: &str, usage: wgpu::BufferUsages| {
                 device.create_buffer(&wgpu::BufferDescriptor {
                     label: Some(label),
@@ -242,7 +253,7 @@ impl GpuEnv {
             use wgpu::BufferUsages as U;
             let out = buffer("rinshan observations", U::STORAGE | U::COPY_SRC);
             let readback = buffer("rinshan observations readback", U::MAP_READ | U::COPY_DST);
-            let spec = EntrySpec::read(observe_entry(form));
+            let spec = EntrySpec::read(entry);
             let (pipeline, layout) = self.gpu.pipeline(self.wgsl, spec);
             let Some(args_buffer) = &self.observer_args else {
                 unreachable!("made above")
@@ -250,15 +261,18 @@ impl GpuEnv {
             let bind_group = self
                 .gpu
                 .bind_group(&layout, spec, &self.states, args_buffer, Some(&out));
-            self.observe[slot] = Some(ObservePass {
-                pass: Pass { pipeline, bind_group },
-                out,
-                readback,
-                bytes,
-                words: Vec::new(),
-            });
+            self.reads.insert(
+                entry,
+                ReadPass {
+                    pass: Pass { pipeline, bind_group },
+                    out,
+                    readback,
+                    bytes,
+                    words: Vec::new(),
+                },
+            );
         }
-        let Some(o) = &mut self.observe[slot] else {
+        let Some(o) = self.reads.get_mut(entry) else {
             unreachable!("made above")
         };
         let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {

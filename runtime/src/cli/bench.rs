@@ -7,6 +7,7 @@ use std::time::Instant;
 use rinshan::env::{Backend, Config, Env};
 use rinshan::gpu::{Gpu, Kernel};
 use rinshan::hand::{self, SCORE_IN_WORDS, SCORE_OUT_WORDS, SHANTEN_IN_WORDS, SHANTEN_OUT_WORDS};
+use rinshan::observe::Form;
 use rinshan::random::{random_hand, random_win, Rng};
 use rinshan::Variant;
 
@@ -40,6 +41,10 @@ pub enum What {
         /// Batch sizes to measure (comma-separated)
         #[arg(long, value_delimiter = ',', default_values_t = [1usize, 4, 16, 64, 256, 1024, 4096, 16384])]
         batches: Vec<usize>,
+        /// Also write these observations (planes, tokens, analysis; comma-separated) of the
+        /// current players every step, measured beside the same batch without them
+        #[arg(long, value_delimiter = ',')]
+        observe: Vec<Form>,
     },
 }
 
@@ -65,7 +70,8 @@ pub fn run(what: What) -> Result<(), CliError> {
             game,
             seconds_per_point,
             batches,
-        } => env_bench(&game, seconds_per_point, &batches),
+            observe,
+        } => env_bench(&game, seconds_per_point, &batches, &observe),
     }
 }
 
@@ -104,7 +110,7 @@ fn env_point(config: Config, seconds: f64) -> Result<(f64, f64), CliError> {
     }
 }
 
-fn env_bench(game: &GameArgs, seconds: f64, batches: &[usize]) -> Result<(), CliError> {
+fn env_bench(game: &GameArgs, seconds: f64, batches: &[usize], observe: &[Form]) -> Result<(), CliError> {
     if seconds.is_nan() || seconds <= 0.0 || batches.is_empty() || batches.contains(&0) {
         return Err(CliError::input(
             "--seconds-per-point must be positive and --batches positive sizes",
@@ -141,20 +147,48 @@ fn env_bench(game: &GameArgs, seconds: f64, batches: &[usize]) -> Result<(), Cli
         "  env steps/s time the step calls only (state update, view, readback); +policy includes choosing the actions"
     );
     println!("  ratio = env steps/s over the batch-1 figure of the first row");
+    if !observe.is_empty() {
+        let names: Vec<&str> = observe.iter().map(|f| f.name()).collect();
+        let bytes: usize = observe.iter().map(|f| f.bytes()).sum();
+        println!(
+            "  observed: {} ({bytes} bytes per observation) of the current player every step; with/without = same batch, same run",
+            names.join(" + ")
+        );
+    }
     let mut base = None;
     for (name, threads) in runs {
         println!("{name}");
-        println!(
-            "  {:>7} {:>14} {:>9} {:>16}",
-            "batch", "env steps/s", "ratio", "+policy steps/s"
-        );
+        if observe.is_empty() {
+            println!(
+                "  {:>7} {:>14} {:>9} {:>16}",
+                "batch", "env steps/s", "ratio", "+policy steps/s"
+            );
+        } else {
+            println!(
+                "  {:>7} {:>14} {:>9} {:>16} {:>16} {:>13}",
+                "batch", "env steps/s", "ratio", "+policy steps/s", "observed steps/s", "with/without"
+            );
+        }
         for &b in batches {
             let (env_rate, with_policy) = env_point(config(b, threads), seconds)?;
             let base = *base.get_or_insert(env_rate);
-            println!(
-                "  {b:>7} {env_rate:>14.0} {:>8.2}x {with_policy:>16.0}",
-                env_rate / base
-            );
+            if observe.is_empty() {
+                println!(
+                    "  {b:>7} {env_rate:>14.0} {:>8.2}x {with_policy:>16.0}",
+                    env_rate / base
+                );
+            } else {
+                let observed = Config {
+                    observe: observe.to_vec(),
+                    ..config(b, threads)
+                };
+                let (obs_rate, _) = env_point(observed, seconds)?;
+                println!(
+                    "  {b:>7} {env_rate:>14.0} {:>8.2}x {with_policy:>16.0} {obs_rate:>16.0} {:>12.2}x",
+                    env_rate / base,
+                    obs_rate / env_rate
+                );
+            }
         }
     }
     Ok(())

@@ -1,12 +1,13 @@
-//! `rinshan selfplay`: a random legal policy plays whole games in a batch of envs; prints how fast,
-//! and how the games went (win, deal-in and draw rates, final scores, yaku frequencies); with
-//! `--export DIR`, writes each counted game as a tenhou.net/6 log.
+//! `rinshan selfplay`: the built-in agents (or a random legal policy) play whole games in a batch
+//! of envs; prints how fast, and how the games went (win, deal-in and draw rates, final scores,
+//! yaku frequencies); with `--export DIR`, writes each counted game as a tenhou.net/6 log.
 
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use indicatif::{ProgressBar, ProgressStyle};
+use rinshan::agents::Agent;
 use rinshan::env::{env_seed, events, Backend, Config, Env, Mode};
 use rinshan::random::Rng;
 use rinshan::tenhou::write::{game_text, Finished, Recorder};
@@ -29,6 +30,11 @@ pub struct Args {
     /// Print the summary as JSON
     #[arg(long)]
     json: bool,
+    /// Who plays the four seats: built-in agents (random, rule, greedy, defensive), rotated one
+    /// seat per env so each agent plays every seat; or `uniform` for a uniformly random legal
+    /// policy drawn on the host (most such games end in draws)
+    #[arg(long, value_delimiter = ',', default_value = "defensive,greedy,rule,random")]
+    agents: Vec<String>,
     /// Also write each counted game as DIR/game-<n>.json (n = 1..games), a tenhou.net/6 log that
     /// `rinshan replay` reads. Red variant, east or half games, CPU backend only (the games'
     /// states are read after every step)
@@ -80,8 +86,30 @@ impl Tally {
     }
 }
 
+/// The seatings of `--agents` (None: the host's uniform random policy).
+fn seatings(agents: &[String], batch: usize) -> Result<Option<Vec<[Agent; 4]>>, CliError> {
+    if agents.len() == 1 && agents[0] == "uniform" {
+        return Ok(None);
+    }
+    let parsed: Vec<Agent> = agents
+        .iter()
+        .map(|a| a.parse().map_err(CliError::input))
+        .collect::<Result<_, _>>()?;
+    let [a, b, c, d] = parsed[..] else {
+        return Err(CliError::input(format!(
+            "--agents needs 4 agents (one per seat) or `uniform`, got {}",
+            parsed.len()
+        )));
+    };
+    let four = [a, b, c, d];
+    Ok(Some(
+        (0..batch).map(|i| std::array::from_fn(|p| four[(p + i) % 4])).collect(),
+    ))
+}
+
 pub fn run(args: Args) -> Result<(), CliError> {
     let config = args.game.config(args.batch);
+    let seatings = seatings(&args.agents, args.batch)?;
     let (variant, seed) = (config.variant, config.seed);
     if args.games == 0 {
         return Err(CliError::input("--games must be at least 1"));
@@ -125,9 +153,14 @@ pub fn run(args: Args) -> Result<(), CliError> {
         None => None,
     };
     while games < args.games {
-        let step = env.last();
-        for (i, a) in actions.iter_mut().enumerate() {
-            *a = rngs[i].pick_legal(&step.legal_action_mask[i]);
+        match &seatings {
+            Some(seats) => actions = env.agent_actions(seats).map_err(CliError::failure)?,
+            None => {
+                let step = env.last();
+                for (i, a) in actions.iter_mut().enumerate() {
+                    *a = rngs[i].pick_legal(&step.legal_action_mask[i]);
+                }
+            }
         }
         env.step(&actions).map_err(CliError::failure)?;
         let mut recorded = match &mut recorder {
@@ -270,6 +303,7 @@ fn summary(
             "backend": args.game.backend.backend.to_string(),
             "batch": args.batch,
             "seed": args.game.seed,
+            "agents": args.agents,
             "games": games,
             "steps": t.steps,
             "avg_steps_per_game": ratio(t.steps, games),
@@ -294,8 +328,11 @@ fn summary(
     }
     let pct = |a: u64, b: u64| 100.0 * ratio(a, b);
     println!(
-        "rinshan selfplay: variant {variant}, mode {}, batch {}, backend {backend}, seed {}",
-        args.game.mode, args.batch, args.game.seed
+        "rinshan selfplay: variant {variant}, mode {}, batch {}, backend {backend}, seed {}, players {}",
+        args.game.mode,
+        args.batch,
+        args.game.seed,
+        args.agents.join(",")
     );
     println!("  games                 {games}");
     println!(
@@ -303,7 +340,7 @@ fn summary(
         t.steps,
         ratio(t.steps, games)
     );
-    println!("  speed                 {steps_per_s:.0} env steps/s (random policy included), {seconds:.2} s");
+    println!("  speed                 {steps_per_s:.0} env steps/s (choosing the actions included), {seconds:.2} s");
     println!(
         "  rounds                {} ({:.2} per game)",
         t.rounds,

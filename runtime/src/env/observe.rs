@@ -141,3 +141,38 @@ impl Env {
         Ok(())
     }
 }
+
+impl Env {
+    /// The action each env's current player would play if the built-in agent seated there
+    /// (`seatings`: one per env, or one for all) decided: for callers that step themselves and
+    /// keep per-step statistics (self-play with agents). Computed in the kernel on either backend.
+    pub fn agent_actions(&mut self, seatings: &[[crate::agents::Agent; 4]]) -> Result<Vec<u32>, EnvError> {
+        let b = self.batch();
+        if seatings.len() != 1 && seatings.len() != b {
+            return Err(EnvError::WrongLength {
+                what: "agent seatings",
+                expected: b,
+                got: seatings.len(),
+            });
+        }
+        let args: Vec<u32> = (0..b)
+            .map(|i| crate::agents::seats_word(&seatings[if seatings.len() == 1 { 0 } else { i }].map(Some)))
+            .collect();
+        let variant = self.variant();
+        match &mut self.backing {
+            Backing::Cpu(cpu) => {
+                let mut out = vec![0u32; b];
+                let sts: &[kernel::GameState] = bytemuck::cast_slice(&cpu.states);
+                with_variant!(variant, v => cpu.install(|| {
+                    if cpu.serial {
+                        out.iter_mut().zip(sts).zip(&args).for_each(|((o, s), a)| *o = v::game_agent_action(*s, *a));
+                    } else {
+                        out.par_iter_mut().zip(sts.par_iter()).zip(args.par_iter()).with_min_len(8).for_each(|((o, s), a)| *o = v::game_agent_action(*s, *a));
+                    }
+                }));
+                Ok(out)
+            }
+            Backing::Gpu(gpu) => Ok(gpu.agent_actions(&args)?.to_vec()),
+        }
+    }
+}
