@@ -2,7 +2,7 @@
 //! same file compiles and runs as native Rust.
 
 use rinshan_shaders_gen::{
-    translate, translate_entry_points, validate_with_info, Entry, EntryPoint, Source, UpdateEntry,
+    translate, translate_entry_points, validate_with_info, Entry, EntryPoint, ReadEntry, Source, UpdateEntry,
 };
 
 const FIXTURE: &str = include_str!("fixtures/sample_kernel.rs");
@@ -332,6 +332,65 @@ fn mixed_entry_kinds_share_the_binding_sequence() {
         assert!(wgsl.contains(needle), "missing {needle}:\n{wgsl}");
     }
     assert_spirv(&wgsl);
+}
+
+#[test]
+fn a_read_entry_takes_two_slots_and_the_next_entry_follows_them() {
+    let src = "#[derive(Clone, Copy)]\npub struct A {\n    x: u32,\n}\n\npub fn peek(a: A, seat: u32) -> u32 {\n    a.x + seat\n}\n\npub fn bump(a: &mut A, by: u32) {\n    a.x += by;\n}\n";
+    let wgsl = translate_entry_points(
+        &[Source {
+            path: "k.rs".into(),
+            text: src.into(),
+        }],
+        &[
+            EntryPoint::Read(ReadEntry {
+                name: "look".into(),
+                function: "peek".into(),
+                state: "A".into(),
+                arg: "u32".into(),
+                output: "u32".into(),
+            }),
+            EntryPoint::Update(UpdateEntry {
+                name: "upd".into(),
+                function: "bump".into(),
+                state: "A".into(),
+                arg: "u32".into(),
+            }),
+        ],
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    for needle in [
+        "@group(0) @binding(1) var<storage, read> look_state: array<A>;",
+        "@group(0) @binding(2) var<storage, read> look_arg: array<u32>;",
+        "@group(0) @binding(3) var<storage, read_write> look_out: array<u32>;",
+        "look_out[i] = peek(look_state[i], look_arg[i]);",
+        "@group(0) @binding(5) var<storage, read_write> upd_state: array<A>;",
+        "@group(0) @binding(6) var<storage, read> upd_arg: array<u32>;",
+    ] {
+        assert!(wgsl.contains(needle), "missing {needle}:\n{wgsl}");
+    }
+    assert_spirv(&wgsl);
+}
+
+#[test]
+fn a_read_entry_with_the_wrong_signature_is_rejected_at_its_function() {
+    let src = "pub struct A {\n    x: u32,\n}\n\npub fn peek(a: A) -> u32 {\n    a.x\n}\n";
+    let e = translate_entry_points(
+        &[Source {
+            path: "k.rs".into(),
+            text: src.into(),
+        }],
+        &[EntryPoint::Read(ReadEntry {
+            name: "look".into(),
+            function: "peek".into(),
+            state: "A".into(),
+            arg: "u32".into(),
+            output: "u32".into(),
+        })],
+    )
+    .expect_err("one parameter, not two");
+    assert_eq!((e.file.as_str(), e.line), ("k.rs", 5));
+    assert!(e.message.contains("needs `fn peek(state: A, arg: u32) -> u32`"), "{}", e.message);
 }
 
 #[test]

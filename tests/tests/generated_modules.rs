@@ -24,6 +24,7 @@ fn every_variant_module_validates_with_naga() {
             .iter()
             .chain(rinshan_tests::entries::UPDATE_ENTRIES.iter())
             .map(|e| e.0)
+            .chain(rinshan_tests::entries::READ_ENTRIES.iter().map(|e| e.0))
             .collect();
         assert_eq!(entries, expected, "{v}");
     }
