@@ -390,7 +390,11 @@ fn a_read_entry_with_the_wrong_signature_is_rejected_at_its_function() {
     )
     .expect_err("one parameter, not two");
     assert_eq!((e.file.as_str(), e.line), ("k.rs", 5));
-    assert!(e.message.contains("needs `fn peek(state: A, arg: u32) -> u32`"), "{}", e.message);
+    assert!(
+        e.message.contains("needs `fn peek(state: A, arg: u32) -> u32`"),
+        "{}",
+        e.message
+    );
 }
 
 #[test]

@@ -8,6 +8,7 @@ mod env_parity;
 mod game_invariants;
 mod generated_modules;
 mod observation;
+mod observation_fields;
 mod observation_snapshots;
 mod parity;
 mod rules_as_data;
