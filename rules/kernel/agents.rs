@@ -384,7 +384,8 @@ pub fn agent_act(agent: u32, o: ObsPlanes, mask: [u32; 3], seed: [u32; 2], nonce
 // Hero mode: the caller's action (bits 0-7; ignored when the seat to move is not the caller's)
 // then the built-in agents of bits 8.. (4 bits per seat, AGENT_CALLER = the caller's seat) play
 // until one of the caller's seats must decide or the game ends. The step's outputs add up every
-// decision played (rewards summed, events and winners merged).
+// decision played (rewards summed, events and winners merged). One call site of game_step and
+// of the agent: GPU compilers inline each once.
 pub fn game_play(s: &mut GameState, arg: u32) {
     let agents: u32 = arg >> 8u32;
     let mut rewards: [i32; 4] = [0i32; 4];
@@ -395,38 +396,31 @@ pub fn game_play(s: &mut GameState, arg: u32) {
     let mut illegal: u32 = 0u32;
     let mut ended: bool = false;
     let mut played: u32 = 0u32;
-    if ((agents >> (s.current * 4u32)) & 15u32) == AGENT_CALLER || s.phase == PHASE_OVER {
-        game_step(s, arg & 255u32);
-        played = 1u32;
-    } else {
-        clear_step_outputs(s);
-        if s.terminated != 0u32 && s.auto_reset != 0u32 {
-            s.terminated = 0u32;
-        }
-    }
     loop {
-        if played > 0u32 {
-            for p in 0u32..4u32 {
-                rewards[p as usize] += s.rewards[p as usize];
-            }
-            events |= s.events;
-            winners |= s.winners;
-            if s.deal_in != 0u32 {
-                deal_in = s.deal_in;
-            }
-            yaku[0] |= s.yaku[0];
-            yaku[1] |= s.yaku[1];
-            illegal |= s.illegal;
-            ended = ended || s.terminated != 0u32;
-        }
         let agent: u32 = (agents >> (s.current * 4u32)) & 15u32;
-        if ended || s.phase == PHASE_OVER || agent == AGENT_CALLER || played > 20000u32 {
+        let mut a: u32 = arg & 255u32;
+        if played == 0u32 && (agent == AGENT_CALLER || s.phase == PHASE_OVER) {
+            // The caller's own decision (or a finished game, which stays finished).
+        } else if ended || agent == AGENT_CALLER || s.phase == PHASE_OVER || played > 20000u32 {
             break;
+        } else {
+            let o: ObsPlanes = planes_of(s, OBSERVE_CURRENT);
+            a = agent_act(agent, o, s.mask, s.seed, s.steps);
         }
-        let o: ObsPlanes = planes_of(s, OBSERVE_CURRENT);
-        let a: u32 = agent_act(agent, o, s.mask, s.seed, s.steps);
         game_step(s, a);
         played += 1u32;
+        for p in 0u32..4u32 {
+            rewards[p as usize] += s.rewards[p as usize];
+        }
+        events |= s.events;
+        winners |= s.winners;
+        if s.deal_in != 0u32 {
+            deal_in = s.deal_in;
+        }
+        yaku[0] |= s.yaku[0];
+        yaku[1] |= s.yaku[1];
+        illegal |= s.illegal;
+        ended = ended || s.terminated != 0u32;
     }
     s.rewards = rewards;
     s.events = events;

@@ -4,6 +4,7 @@
 //! steps) at every step of whole games, and identical states at the end. Hero mode (built-in
 //! agents playing three seats inside a step) is compared the same way.
 
+use rinshan::agents::Agent;
 use rinshan::env::{Backend, Config, Env, Mode, Observer};
 use rinshan::observe::Form;
 use rinshan::random::Rng;
@@ -73,6 +74,14 @@ fn parity(variant: Variant) {
         assert_eq!(c.rewards, g.rewards, "{variant}: step {steps}: rewards");
         assert_eq!(c.terminated, g.terminated, "{variant}: step {steps}: terminated");
         assert_eq!(&c, g, "{variant}: step {steps}: the other fields");
+        if steps % 25 == 0 {
+            let seating = [[Agent::Defensive, Agent::Greedy, Agent::Rule, Agent::Random]];
+            assert_eq!(
+                cpu.agent_actions(&seating).expect("cpu agents"),
+                gpu.agent_actions(&seating).expect("gpu agents"),
+                "{variant}: step {steps}: the agents' actions"
+            );
+        }
         for form in Form::ALL {
             assert!(
                 form == Form::Oracle || cpu.observation(form) == gpu.observation(form),
@@ -122,7 +131,6 @@ fn no_red_half_games_are_identical_on_cpu_and_gpu() {
 /// Hero mode on both backends: the caller plays one seat at random, the three agents the others.
 #[test]
 fn hero_mode_is_identical_on_cpu_and_gpu() {
-    use rinshan::agents::Agent;
     let Some(gpu) = rinshan_tests::gpu_or_skip("hero_mode_parity") else {
         return;
     };
