@@ -99,6 +99,15 @@ pub struct Report {
     pub standings: Vec<Standing>,
 }
 
+/// One wall set's results: per name (rank sum, seat-games), then every seat-game's tally and
+/// player name, and the decisions played.
+struct SetResult {
+    by_name: Vec<(f64, u64)>,
+    tallies: Vec<Tally>,
+    who: Vec<String>,
+    decisions: u64,
+}
+
 /// Per seat-game tallies.
 #[derive(Clone, Copy, Default)]
 struct Tally {
@@ -155,13 +164,13 @@ fn play(arena: &Arena, seed: u64, seating: &[Player; 4]) -> ([Tally; 4], u64) {
                 t[(s.illegal - 1) as usize].illegal += 1;
             }
             if s.events & round_end != 0 {
-                for q in 0..4 {
-                    t[q].rounds += 1;
-                    t[q].calls += u64::from(called[q]);
-                    t[q].riichis += u64::from(riichi[q]);
+                for (q, tq) in t.iter_mut().enumerate() {
+                    tq.rounds += 1;
+                    tq.calls += u64::from(called[q]);
+                    tq.riichis += u64::from(riichi[q]);
                     if s.winners >> q & 1 == 1 {
-                        t[q].wins += 1;
-                        t[q].win_points += i64::from(s.rewards[q]) * 100;
+                        tq.wins += 1;
+                        tq.win_points += i64::from(s.rewards[q]) * 100;
                     }
                 }
                 if s.deal_in != 0 {
@@ -171,9 +180,9 @@ fn play(arena: &Arena, seed: u64, seating: &[Player; 4]) -> ([Tally; 4], u64) {
                 riichi = [false; 4];
             }
         }
-        for q in 0..4 {
-            t[q].rank = rank_of(&s.scores, first_dealer, q);
-            t[q].score = i64::from(s.scores[q]);
+        for (q, tq) in t.iter_mut().enumerate() {
+            tq.rank = rank_of(&s.scores, first_dealer, q);
+            tq.score = i64::from(s.scores[q]);
         }
         (t, decisions)
     })
@@ -189,7 +198,7 @@ pub fn run(arena: &Arena, progress: &(dyn Fn(u64) + Sync)) -> Report {
     };
     let done = std::sync::atomic::AtomicU64::new(0);
     // Per set: for each name, the (rank sum, count) of its seat-games, and the tallies.
-    let sets: Vec<(Vec<(f64, u64)>, Vec<Tally>, Vec<String>, u64)> = (0..arena.sets)
+    let sets: Vec<SetResult> = (0..arena.sets)
         .into_par_iter()
         .map(|set| {
             let seed = env_seed(arena.seed, set as u64, 0);
@@ -211,16 +220,21 @@ pub fn run(arena: &Arena, progress: &(dyn Fn(u64) + Sync)) -> Report {
                 }
                 progress(done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1);
             }
-            (by_name, tallies, who, decisions)
+            SetResult {
+                by_name,
+                tallies,
+                who,
+                decisions,
+            }
         })
         .collect();
     let mut report = Report {
         games: 4 * arena.sets as u64,
-        decisions: sets.iter().map(|s| s.3).sum(),
+        decisions: sets.iter().map(|s| s.decisions).sum(),
         standings: Vec::new(),
     };
     for (i, name) in names.iter().enumerate() {
-        let unit_means: Vec<f64> = sets.iter().map(|s| s.0[i].0 / s.0[i].1 as f64).collect();
+        let unit_means: Vec<f64> = sets.iter().map(|s| s.by_name[i].0 / s.by_name[i].1 as f64).collect();
         let n = unit_means.len() as f64;
         let mean = unit_means.iter().sum::<f64>() / n;
         let var = if n > 1.0 {
@@ -237,7 +251,7 @@ pub fn run(arena: &Arena, progress: &(dyn Fn(u64) + Sync)) -> Report {
         let (mut score, mut wins, mut deal_ins, mut calls, mut riichis, mut win_points) =
             (0i64, 0u64, 0u64, 0u64, 0u64, 0i64);
         for s in &sets {
-            for (t, who) in s.1.iter().zip(&s.2) {
+            for (t, who) in s.tallies.iter().zip(&s.who) {
                 if who == name {
                     st.games += 1;
                     st.ranks[t.rank as usize] += 1;

@@ -50,8 +50,8 @@ fn hero_mode_asks_only_the_callers_seat_and_pays_every_reward() {
             if done[i] {
                 continue;
             }
-            for p in 0..4 {
-                returns[i][p] += f64::from(step.rewards[i][p]);
+            for (r, x) in returns[i].iter_mut().zip(step.rewards[i]) {
+                *r += f64::from(x);
             }
             own_decisions += usize::from(caller_moved[i]);
             if step.terminated[i] {
@@ -71,12 +71,11 @@ fn hero_mode_asks_only_the_callers_seat_and_pays_every_reward() {
     let states = env.states_words().expect("states");
     for (i, w) in states.chunks(env.state_words()).enumerate() {
         let s: &kernel::GameState = bytemuck::from_bytes(bytemuck::cast_slice(w));
-        for p in 0..4 {
+        for (p, r) in returns[i].iter().enumerate() {
             let change = f64::from(s.scores[p] - 25_000) / 100.0;
             assert!(
-                (returns[i][p] - change).abs() < 1e-6,
-                "env {i} seat {p}: rewards {} but score change {change}",
-                returns[i][p]
+                (r - change).abs() < 1e-6,
+                "env {i} seat {p}: rewards {r} but score change {change}"
             );
         }
     }

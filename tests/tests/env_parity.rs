@@ -74,7 +74,7 @@ fn parity(variant: Variant) {
         assert_eq!(c.rewards, g.rewards, "{variant}: step {steps}: rewards");
         assert_eq!(c.terminated, g.terminated, "{variant}: step {steps}: terminated");
         assert_eq!(&c, g, "{variant}: step {steps}: the other fields");
-        if steps % 25 == 0 {
+        if steps.is_multiple_of(25) {
             let seating = [[Agent::Defensive, Agent::Greedy, Agent::Rule, Agent::Random]];
             assert_eq!(
                 cpu.agent_actions(&seating).expect("cpu agents"),
@@ -87,7 +87,7 @@ fn parity(variant: Variant) {
                 form == Form::Oracle || cpu.observation(form) == gpu.observation(form),
                 "{variant}: step {steps}: {form} observations of the current players"
             );
-            if steps % 25 == 0 {
+            if steps.is_multiple_of(25) {
                 for seat in 0..4 {
                     let on_cpu = cpu.observe(form, Observer::Seat(seat)).expect("cpu observe").to_vec();
                     let on_gpu = gpu.observe(form, Observer::Seat(seat)).expect("gpu observe");

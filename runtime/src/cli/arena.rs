@@ -48,7 +48,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
             )))
         }
     };
-    if args.games == 0 || args.games % 4 != 0 {
+    if args.games == 0 || !args.games.is_multiple_of(4) {
         return Err(CliError::input(format!(
             "--games {} is not a positive multiple of 4: each wall set is played once per rotation",
             args.games
