@@ -127,6 +127,17 @@ fn put_plane(out: &mut [u32; 544], row: u32, t: u32, v: u32) {
     put_byte(out, row * 34u32 + t, v);
 }
 
+// Adds to a cell that stays below 256 (counts, turn numbers): no carry into the next byte.
+fn add_plane(out: &mut [u32; 544], row: u32, t: u32, v: u32) {
+    let i: u32 = row * 34u32 + t;
+    out[(i / 4u32) as usize] += v << ((i % 4u32) * 8u32);
+}
+
+fn get_plane(out: &mut [u32; 544], row: u32, t: u32) -> u32 {
+    let i: u32 = row * 34u32 + t;
+    (out[(i / 4u32) as usize] >> ((i % 4u32) * 8u32)) & 255u32
+}
+
 fn put_scalar(sc: &mut [u32; 24], i: u32, v: i32) {
     sc[(i / 2u32) as usize] |= ((v as u32) & 65535u32) << ((i % 2u32) * 16u32);
 }
@@ -237,9 +248,10 @@ fn set_add(set: &mut [u32; 2], t: u32) {
     set[(t / 32u32) as usize] |= 1u32 << (t % 32u32);
 }
 
-// Tiles safe against each seat (genbutsu), by absolute seat: its own discards, anything
-// discarded since its last discard, and anything discarded after its riichi declaration.
-fn safe_sets(s: &mut GameState) -> [u32; 8] {
+// One pass over the round's log: the riichi tile and called-in rows of each seat, and the tiles
+// safe against each seat (genbutsu), by absolute seat: its own discards, anything discarded
+// since its last discard, and anything discarded after its riichi declaration.
+fn log_planes(s: &mut GameState, seat: u32, out: &mut [u32; 544]) -> [u32; 8] {
     let mut since: [u32; 8] = [0u32; 8];
     let mut after_riichi: [u32; 8] = [0u32; 8];
     let mut riichi: u32 = 0u32;
@@ -250,8 +262,14 @@ fn safe_sets(s: &mut GameState) -> [u32; 8] {
         if k == EV_RIICHI {
             riichi |= 1u32 << a;
         }
+        if k == EV_CHI || k == EV_PON || k == EV_OPEN_KAN {
+            put_plane(out, P_SEAT + rel(seat, a) * P_SEAT_ROWS + P_SEAT_CALLED_IN, value_type(log_tile(e)), 1u32);
+        }
         if k == EV_DISCARD {
             let t: u32 = value_type(log_tile(e));
+            if (log_flags(e) & LOG_RIICHI_TILE) != 0u32 {
+                put_plane(out, P_SEAT + rel(seat, a) * P_SEAT_ROWS + P_SEAT_RIICHI_TILE, t, 1u32);
+            }
             since[(a * 2u32) as usize] = 0u32;
             since[(a * 2u32 + 1u32) as usize] = 0u32;
             for q in 0u32..4u32 {
@@ -379,73 +397,62 @@ fn planes_of(s: &mut GameState, arg: u32) -> ObsPlanes {
 
 // Rows P_SEAT.. : each seat's river, melds and the tiles safe against it.
 fn view_seat_planes(s: &mut GameState, seat: u32, out: &mut [u32; 544]) {
-    let safe: [u32; 8] = safe_sets(s);
-    let mut riichi_tile: [u32; 4] = [NO_TILE_VALUE; 4];
-    for i in 0u32..log_count(s) {
-        let e: u32 = log_entry(s, i);
-        let k: u32 = log_kind(e);
-        let a: u32 = log_actor(e);
-        if k == EV_DISCARD && (log_flags(e) & LOG_RIICHI_TILE) != 0u32 {
-            riichi_tile[a as usize] = value_type(log_tile(e));
-        }
-        if k == EV_CHI || k == EV_PON || k == EV_OPEN_KAN {
-            let row: u32 = P_SEAT + rel(seat, a) * P_SEAT_ROWS + P_SEAT_CALLED_IN;
-            put_plane(out, row, value_type(log_tile(e)), 1u32);
-        }
-    }
+    let safe: [u32; 8] = log_planes(s, seat, out);
     for j in 0u32..4u32 {
         let q: u32 = (seat + j) % 4u32;
         let base: u32 = P_SEAT + j * P_SEAT_ROWS;
-        let mut discarded: [u32; 34] = [0u32; 34];
-        let mut tedashi: [u32; 34] = [0u32; 34];
-        let mut first: [u32; 34] = [0u32; 34];
-        let mut last: [u32; 34] = [0u32; 34];
-        let mut away: [u32; 34] = [0u32; 34];
+        // Straight into the (zeroed) rows: counts add up in their bytes (at most 4 or 24), the
+        // first turn is written once, the last turn on a backwards pass.
         let len: u32 = byte_of(s.river_lens, q);
         for i in 0u32..len {
             let e: u32 = river_entry(s, q, i);
             let t: u32 = value_type(e & 63u32);
-            discarded[t as usize] += 1u32;
+            add_plane(out, base + P_SEAT_DISCARDED, t, 1u32);
             if (e & 128u32) == 0u32 {
-                tedashi[t as usize] += 1u32;
+                add_plane(out, base + P_SEAT_TEDASHI, t, 1u32);
             }
-            if first[t as usize] == 0u32 {
-                first[t as usize] = i + 1u32;
+            if get_plane(out, base + P_SEAT_FIRST_TURN, t) == 0u32 {
+                add_plane(out, base + P_SEAT_FIRST_TURN, t, i + 1u32);
             }
-            last[t as usize] = i + 1u32;
             if (e & 64u32) != 0u32 {
-                away[t as usize] += 1u32;
-            }
-            if i + 1u32 == len {
-                put_plane(out, base + P_SEAT_LAST_DISCARD, t, 1u32);
+                add_plane(out, base + P_SEAT_CALLED_AWAY, t, 1u32);
             }
         }
-        let mut meld_tiles: [u32; 34] = [0u32; 34];
+        let mut i: u32 = len;
+        while i > 0u32 {
+            i -= 1u32;
+            let t: u32 = value_type(river_entry(s, q, i) & 63u32);
+            if i + 1u32 == len {
+                add_plane(out, base + P_SEAT_LAST_DISCARD, t, 1u32);
+            }
+            if get_plane(out, base + P_SEAT_LAST_TURN, t) == 0u32 {
+                add_plane(out, base + P_SEAT_LAST_TURN, t, i + 1u32);
+            }
+        }
         for i in 0u32..meld_count(s, q) {
             let m: u32 = s.melds[(q * 4u32 + i) as usize];
-            meld_types(m, &mut meld_tiles);
-            if meld_kind(m) == MELD_CLOSED_KAN {
-                put_plane(out, base + P_SEAT_CLOSED_KAN, meld_tile(m), 1u32);
+            let k: u32 = meld_kind(m);
+            let t: u32 = meld_tile(m);
+            if k == MELD_CHI {
+                add_plane(out, base + P_SEAT_MELD_TILES, t, 1u32);
+                add_plane(out, base + P_SEAT_MELD_TILES, t + 1u32, 1u32);
+                add_plane(out, base + P_SEAT_MELD_TILES, t + 2u32, 1u32);
+            } else if k == MELD_PON {
+                add_plane(out, base + P_SEAT_MELD_TILES, t, 3u32);
+            } else {
+                add_plane(out, base + P_SEAT_MELD_TILES, t, 4u32);
+            }
+            if k == MELD_CLOSED_KAN {
+                add_plane(out, base + P_SEAT_CLOSED_KAN, t, 1u32);
             }
         }
-        let sq: [u32; 2] = [safe[(q * 2u32) as usize], safe[(q * 2u32 + 1u32) as usize]];
-        for t in 0u32..34u32 {
-            if discarded[t as usize] != 0u32 {
-                put_plane(out, base + P_SEAT_DISCARDED, t, discarded[t as usize]);
-                put_plane(out, base + P_SEAT_TEDASHI, t, tedashi[t as usize]);
-                put_plane(out, base + P_SEAT_FIRST_TURN, t, first[t as usize]);
-                put_plane(out, base + P_SEAT_LAST_TURN, t, last[t as usize]);
-                put_plane(out, base + P_SEAT_CALLED_AWAY, t, away[t as usize]);
+        for w in 0u32..2u32 {
+            let mut x: u32 = safe[(q * 2u32 + w) as usize];
+            while x != 0u32 {
+                let b: u32 = x.trailing_zeros();
+                x &= x - 1u32;
+                add_plane(out, base + P_SEAT_SAFE, w * 32u32 + b, 1u32);
             }
-            if set_has(sq, t) {
-                put_plane(out, base + P_SEAT_SAFE, t, 1u32);
-            }
-            if meld_tiles[t as usize] != 0u32 {
-                put_plane(out, base + P_SEAT_MELD_TILES, t, meld_tiles[t as usize]);
-            }
-        }
-        if riichi_tile[q as usize] != NO_TILE_VALUE {
-            put_plane(out, base + P_SEAT_RIICHI_TILE, riichi_tile[q as usize], 1u32);
         }
     }
 }
