@@ -30,3 +30,14 @@ pub fn gpu_or_skip(test: &str) -> Option<rinshan::gpu::Gpu> {
         }
     }
 }
+
+/// Whether GPU tests whose pipelines take a software adapter very long to compile run here: always
+/// on a hardware adapter; on a software one (Mesa's lavapipe: the agents' pipelines take it more
+/// than ten minutes on 2 cores) only with `RINSHAN_SLOW_GPU_TESTS=1`. Says so on stderr when not.
+pub fn slow_gpu_tests_run(gpu: &rinshan::gpu::Gpu, test: &str) -> bool {
+    if !gpu.is_software() || std::env::var("RINSHAN_SLOW_GPU_TESTS").is_ok_and(|v| v == "1") {
+        return true;
+    }
+    eprintln!("{test}: skipped on the software adapter {} (set RINSHAN_SLOW_GPU_TESTS=1 to run it)", gpu.adapter());
+    false
+}
