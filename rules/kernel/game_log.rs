@@ -3,10 +3,12 @@
 // Draws are not entries of their own: the first event a seat logs after drawing carries
 // LOG_DREW, and the drawn tile is read back from the wall position when the observer is the
 // drawer (a live draw is the next live wall tile; the draw after a kan is the next replacement).
-// One entry is 16 bits: kind | actor << 4 | tile << 6 | flags << 12. A round logs at most 114
-// events (86 discards, 16 calls, 8 riichi events, 4 kan dora), so 128 entries always suffice.
+// One entry is 16 bits: kind | actor << 4 | tile << 6 | flags << 12. A round logs at most 118
+// events: 86 discards (70 draws in all, replacements included, and 16 chi or pon), 20 calls and
+// kans (16 melds, 4 of them possibly added kans), 8 riichi events, 4 kan dora; so 120 entries
+// always suffice, and keep the state within 1 KiB.
 
-pub const LOG_CAPACITY: u32 = 128;
+pub const LOG_CAPACITY: u32 = 120;
 // GameState.log_len: the entry count in the low byte; a draw not yet followed by an event.
 const LOG_LEN_MASK: u32 = 255;
 const LOG_PENDING_DRAW: u32 = 256;
@@ -60,7 +62,7 @@ pub fn log_count(s: &mut GameState) -> u32 {
 }
 
 fn log_clear(s: &mut GameState) {
-    s.log = [0u32; 64];
+    s.log = [0u32; 60];
     s.log_len = 0u32;
 }
 

@@ -57,7 +57,7 @@ fn empty_state() -> GameState {
         win_yaku: [0u32; 8],
         win_score: [0u32; 8],
         draw_kind: 0u32,
-        log: [0u32; 64],
+        log: [0u32; 60],
         log_len: 0u32,
     }
 }

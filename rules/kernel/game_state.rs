@@ -234,7 +234,7 @@ pub struct GameState {
     // DRAW_* of the last round that ended without a win, with its tenpai / nagashi seats.
     pub draw_kind: u32,
     // The round's public events (game_log.rs): 16 bits each, 2 per word; count and flags.
-    pub log: [u32; 64],
+    pub log: [u32; 60],
     pub log_len: u32,
 }
 

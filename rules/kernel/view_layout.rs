@@ -103,7 +103,7 @@ pub const T_DORA: u32 = 108;
 pub const T_SEEN: u32 = 116;
 pub const T_SCALARS: u32 = 152;
 pub const T_EVENTS: u32 = 248;
-// Events of the token form: draws are tokens of their own, so a round needs at most 114 + 70.
+// Events of the token form: draws are tokens of their own, so a round needs at most 118 + 70.
 pub const TOKEN_EVENTS: u32 = 192;
 
 #[derive(Clone, Copy)]

@@ -38,6 +38,9 @@ pub fn slow_gpu_tests_run(gpu: &rinshan::gpu::Gpu, test: &str) -> bool {
     if !gpu.is_software() || std::env::var("RINSHAN_SLOW_GPU_TESTS").is_ok_and(|v| v == "1") {
         return true;
     }
-    eprintln!("{test}: skipped on the software adapter {} (set RINSHAN_SLOW_GPU_TESTS=1 to run it)", gpu.adapter());
+    eprintln!(
+        "{test}: skipped on the software adapter {} (set RINSHAN_SLOW_GPU_TESTS=1 to run it)",
+        gpu.adapter()
+    );
     false
 }

@@ -133,6 +133,12 @@ fn check_state(s: &GameState, g: u32) {
     assert_eq!(held, drawn, "game {g}: tiles held differ from tiles drawn");
     let points = s.scores.iter().map(|&x| i64::from(x)).sum::<i64>() + i64::from(s.sticks) * 1000;
     assert_eq!(points, 100_000, "game {g}: points plus sticks on the table");
+    // The round's event log never fills (a full log would drop events).
+    let logged = k::log_count(&mut { *s });
+    assert!(
+        logged < k::LOG_CAPACITY,
+        "game {g}: {logged} events logged in one round"
+    );
 }
 
 /// (tiles held, tiles drawn from the wall) per type, read with the kernel's accessors.
