@@ -13,7 +13,8 @@ fn observe_entry(form: Form) -> &'static str {
     match form {
         Form::Planes => "observe_planes_main",
         Form::Tokens => "observe_tokens_main",
-        Form::Analysis => "observe_analysis_main",
+        // Computed by the CPU kernel from the states (see Env::observe_into).
+        Form::Analysis => unreachable!("the analysis tier is not computed on the device"),
         Form::Oracle => "observe_oracle_main",
     }
 }
