@@ -236,7 +236,6 @@ fn view_scalars(s: &mut GameState, v: Seen) -> [u32; 24] {
     put_scalar(&mut sc, S_OWN_DORA, dora as i32);
     put_scalar(&mut sc, S_OWN_RED, reds as i32);
     put_scalar(&mut sc, S_EVENTS, log_count(s) as i32);
-    put_scalar(&mut sc, S_ROUNDS_PLAYED, s.rounds as i32);
     sc
 }
 

@@ -70,7 +70,8 @@ pub const S_ROUNDS_LEFT: u32 = 43;
 pub const S_OWN_DORA: u32 = 44;
 pub const S_OWN_RED: u32 = 45;
 pub const S_EVENTS: u32 = 46;
-pub const S_ROUNDS_PLAYED: u32 = 47;
+// 47: reserved (0).
+pub const S_RESERVED: u32 = 47;
 
 // S_DECISION values.
 pub const DECISION_NONE: u32 = 0;

@@ -146,8 +146,6 @@ fn play(arena: &Arena, seed: u64, seating: &[Player; 4]) -> ([Tally; 4], u64) {
         let mut t = [Tally::default(); 4];
         let (mut called, mut riichi) = ([false; 4], [false; 4]);
         let mut decisions = 0u64;
-        let calls = [v::ACTION_CHI_LEFT, v::ACTION_CHI_LEFT_RED, v::ACTION_CHI_MIDDLE, v::ACTION_CHI_MIDDLE_RED,
-            v::ACTION_CHI_RIGHT, v::ACTION_CHI_RIGHT_RED, v::ACTION_PON, v::ACTION_PON_RED, v::ACTION_OPEN_KAN];
         let round_end = kernel::EVENT_RON | kernel::EVENT_TSUMO | kernel::EVENT_EXHAUSTIVE_DRAW | kernel::EVENT_ABORTIVE_DRAW;
         while s.terminated == 0 {
             let p = s.current as usize;
@@ -157,8 +155,19 @@ fn play(arena: &Arena, seed: u64, seating: &[Player; 4]) -> ([Tally; 4], u64) {
                 Player::Policy { policy, .. } => policy.act(bytemuck::bytes_of(&planes), &s.mask),
             };
             riichi[p] |= a == v::ACTION_RIICHI;
-            called[p] |= calls.contains(&a);
+            let melds_before = s.meld_counts;
             v::game_step(&mut s, a);
+            // A call counts once it is made (a chi or pon chosen at a prompt can lose to a pon or
+            // a ron): a new meld that is not a closed kan.
+            if s.meld_counts != melds_before {
+                for (q, c) in called.iter_mut().enumerate() {
+                    let n = kernel::meld_count(&mut s, q as u32);
+                    if n > kernel::byte_of(melds_before, q as u32) {
+                        let kind = kernel::meld_kind(s.melds[q * 4 + n as usize - 1]);
+                        *c |= kind != kernel::MELD_CLOSED_KAN;
+                    }
+                }
+            }
             decisions += 1;
             if s.illegal != 0 {
                 t[(s.illegal - 1) as usize].illegal += 1;

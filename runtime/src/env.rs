@@ -139,7 +139,7 @@ pub struct Config {
     pub observe: Vec<crate::observe::Form>,
     /// Hero mode: who plays each seat, per env (or one entry for every env); `None` = the caller.
     /// A step then plays the caller's action and the built-in agents' decisions until one of the
-    /// caller's seats must decide or the game ends, adding up the rewards. After a reset or a
+    /// caller's seats must decide or the game ends, adding up the rewards. After a reset, a deal or a
     /// finished game an agent may be the first to move: `current_player` then names its seat and
     /// the next step's action for that env is ignored (the agents play up to the caller's turn).
     /// Empty (the default): the caller plays every seat.

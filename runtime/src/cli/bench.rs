@@ -41,7 +41,7 @@ pub enum What {
         /// Batch sizes to measure (comma-separated)
         #[arg(long, value_delimiter = ',', default_values_t = [1usize, 4, 16, 64, 256, 1024, 4096, 16384])]
         batches: Vec<usize>,
-        /// Also write these observations (planes, tokens, analysis; comma-separated) of the
+        /// Also write these observations (planes, tokens, analysis, oracle; comma-separated) of the
         /// current players every step, measured beside the same batch without them
         #[arg(long, value_delimiter = ',')]
         observe: Vec<Form>,

@@ -30,9 +30,10 @@ pub struct Args {
     /// Print the summary as JSON
     #[arg(long)]
     json: bool,
-    /// Who plays the four seats: built-in agents (random, rule, greedy, defensive), rotated one
-    /// seat per env so each agent plays every seat; or `uniform` for a uniformly random legal
-    /// policy drawn on the host (most such games end in draws)
+    /// Who plays the four seats: built-in agents (random, rule, greedy, defensive); env i seats
+    /// agent (p + i) mod 4 of the list at seat p, so over a batch of 4k envs each agent plays every
+    /// seat equally; or `uniform` for a uniformly random legal policy drawn on the host (most such
+    /// games end in draws)
     #[arg(long, value_delimiter = ',', default_value = "defensive,greedy,rule,random")]
     agents: Vec<String>,
     /// Also write each counted game as DIR/game-<n>.json (n = 1..games), a tenhou.net/6 log that

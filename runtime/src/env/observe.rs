@@ -13,7 +13,7 @@ use crate::Variant;
 pub enum Observer<'a> {
     /// Each env's current player (the seat that decides next).
     Current,
-    /// The same seat (0..3) in every env.
+    /// The same seat (0..3, or 4 for each env's current player) in every env.
     Seat(u32),
     /// One seat per env (0..3, or 4 for that env's current player).
     Seats(&'a [u32]),
@@ -63,7 +63,7 @@ impl Env {
         let b = self.batch();
         match observer {
             Observer::Current => Ok(vec![kernel::OBSERVE_CURRENT; b]),
-            Observer::Seat(s) if s < 4 => Ok(vec![s; b]),
+            Observer::Seat(s) if s <= kernel::OBSERVE_CURRENT => Ok(vec![s; b]),
             Observer::Seat(s) => Err(EnvError::BadSeat { env: 0, seat: s }),
             Observer::Seats(seats) => {
                 self.check_len("seats", seats.len())?;

@@ -205,6 +205,7 @@ impl Env {
                 self.step.fill(views);
             }
         }
+        self.write_observations()?;
         Ok(&self.step)
     }
 

@@ -1,6 +1,6 @@
 //! What an agent sees: the observation forms written by the view kernel (`rules/kernel/view.rs`),
 //! and the one table that documents every field (name, dtype, shape, meaning, scale). The CLI's
-//! `observe --fields`, the README's field page and the Python package read this table.
+//! `observe --fields` and docs/observation.md are generated from it; bindings read it too.
 //!
 //! Every form is a fixed-size record of little-endian bytes; a field is a typed view at a byte
 //! offset. Seats are ego-centric: 0 = the observer, 1 = its right (next to play), 2 = across,
@@ -37,7 +37,7 @@ impl Form {
     /// The observation's forms (what an agent may see).
     pub const OBSERVATIONS: [Form; 3] = [Form::Planes, Form::Tokens, Form::Analysis];
 
-    /// The name users write: `planes` or `tokens`.
+    /// The name users write: `planes`, `tokens`, `analysis` or `oracle`.
     pub fn name(self) -> &'static str {
         match self {
             Form::Planes => "planes",
@@ -210,7 +210,7 @@ pub static TOKENS_FIELDS: [Field; 10] = [
         offset: u(k::T_TARGET),
         dtype: Dtype::I8,
         shape: &[],
-        doc: "the tile (0..36) of the discard or added kan the observer is asked to claim; -1 otherwise",
+        doc: "the tile (0..36) of the discard (or the kan, at a chankan prompt) the observer is asked to claim; -1 otherwise",
     },
     Field {
         name: "events_len",
@@ -406,7 +406,7 @@ pub static PLANE_ROWS: [Rows; 17] = [
         1,
         "target",
         1,
-        "the tile the observer is asked to claim (discard or added kan)",
+        "the tile the observer is asked to claim (a discard, or a kan's tile at a chankan prompt)",
     ),
     rows(
         k::P_WAITS,
@@ -464,7 +464,7 @@ pub static PLANE_ROWS: [Rows; 17] = [
         k::P_DORA,
         1,
         "dora",
-        5,
+        4,
         "dora per copy of the type (han each copy adds)",
     ),
     rows(
@@ -530,8 +530,8 @@ pub static SCALARS: [Scalar; 27] = [
     sc(k::S_DEALER, 1, "dealer", "the dealer's ego seat"),
     sc(k::S_HONBA, 1, "honba", "repeat counters"),
     sc(k::S_STICKS, 1, "sticks", "riichi sticks on the table"),
-    sc(k::S_TILES_LEFT, 1, "tiles_left", "live wall tiles left to draw (70 at the deal)"),
-    sc(k::S_KANS, 1, "kans", "kans made this round"),
+    sc(k::S_TILES_LEFT, 1, "tiles_left", "live wall tiles left to draw (69 at the dealer's first decision)"),
+    sc(k::S_KANS, 1, "kans", "kans made this round (a kan counts once it stands: not yet at its chankan prompt)"),
     sc(k::S_DORA_REVEALED, 1, "dora_revealed", "dora indicators revealed (1..5)"),
     sc(k::S_RIICHI, 4, "riichi", "per ego seat: 0 none, 1 declared (not yet accepted), 2 accepted, 3 double riichi"),
     sc(k::S_IPPATSU, 4, "ippatsu", "per ego seat: ippatsu still possible (0/1)"),
@@ -540,7 +540,7 @@ pub static SCALARS: [Scalar; 27] = [
     sc(k::S_MELDS, 4, "melds", "per ego seat: melds declared"),
     sc(k::S_SHANTEN, 1, "shanten", "the observer's exact shanten (-1 = complete hand)"),
     sc(k::S_FURITEN, 1, "furiten", "the observer is furiten (0/1)"),
-    sc(k::S_DECISION, 1, "decision", "what the observer is asked: 0 nothing, 1 its turn, 2 the discard after riichi, 3 a claim on a discard, 4 a claim on an added kan (chankan)"),
+    sc(k::S_DECISION, 1, "decision", "what the observer is asked: 0 nothing, 1 its turn, 2 the discard after riichi, 3 a claim on a discard, 4 a claim on a kan's tile (chankan: an added kan, or a closed kan for thirteen orphans)"),
     sc(k::S_CLAIM_FROM, 1, "claim_from", "ego seat whose tile is claimed (-1 when not a claim)"),
     sc(k::S_FIRST_GO_AROUND, 1, "first_go_around", "no call or kan yet this round (0/1)"),
     sc(k::S_MODE, 1, "mode", "0 single hand, 1 east, 2 half (east + south)"),
@@ -548,7 +548,7 @@ pub static SCALARS: [Scalar; 27] = [
     sc(k::S_OWN_DORA, 1, "own_dora", "dora and red fives in the observer's hand and melds (revealed indicators)"),
     sc(k::S_OWN_RED, 1, "own_red", "red fives in the observer's hand and melds"),
     sc(k::S_EVENTS, 1, "events", "public events logged this round (without draws)"),
-    sc(k::S_ROUNDS_PLAYED, 1, "rounds_played", "rounds finished in this game"),
+    sc(k::S_RESERVED, 1, "reserved", "always 0, kept for a later field"),
 ];
 
 /// The `kind` of a row of the tokens' `events`, with its flags.
@@ -559,7 +559,7 @@ pub static EVENT_KINDS: [(u32, &str, &str); 10] = [
     (k::EV_PON, "pon", "tile: the called tile; flags: 4 with a red five from the hand"),
     (k::EV_OPEN_KAN, "open_kan", "tile: the called tile; flags: 4 with a red five from the hand"),
     (k::EV_CLOSED_KAN, "closed_kan", "tile: its type; flags: 4 with a red five"),
-    (k::EV_ADDED_KAN, "added_kan", "tile: the tile added"),
+    (k::EV_ADDED_KAN, "added_kan", "tile: the tile added; flags: 4 when it is a red five"),
     (k::EV_RIICHI, "riichi", "declared (the next discard is its tile)"),
     (k::EV_RIICHI_ACCEPTED, "riichi_accepted", "the stick is paid"),
     (k::EV_DORA, "dora", "tile: the new indicator"),

@@ -14,7 +14,9 @@ pub fn field_values(form: Form, record: &[u8], name: &str) -> Vec<i32> {
     let Some(f) = form.field(name) else {
         return Vec::new();
     };
-    let bytes = &record[f.offset..f.offset + f.len()];
+    let Some(bytes) = record.get(f.offset..f.offset + f.len()) else {
+        return Vec::new();
+    };
     match f.dtype {
         Dtype::U8 => bytes.iter().map(|&b| i32::from(b)).collect(),
         Dtype::I8 => bytes.iter().map(|&b| i32::from(b as i8)).collect(),
@@ -50,6 +52,13 @@ fn scalars_text(out: &mut String, scalars: &[i32]) {
 /// A record of `form` as text: the nonzero plane rows (or the token fields) and the scalars.
 pub fn describe(form: Form, record: &[u8]) -> String {
     let mut out = String::new();
+    if record.len() != form.bytes() {
+        return format!(
+            "not a {form} record: {} bytes, a {form} record has {}\n",
+            record.len(),
+            form.bytes()
+        );
+    }
     match form {
         Form::Planes => {
             let planes = field_values(form, record, "planes");

@@ -4,7 +4,7 @@
 
 use super::log::{round_name, Game};
 use super::plan::plan;
-use crate::env::{Config, Deal, Env, Mode};
+use crate::env::{Config, Deal, Env};
 use crate::generated::kernel::GameState;
 use crate::generated::red as k;
 use crate::Variant;
@@ -36,7 +36,7 @@ pub fn round_positions(game: &Game, round: usize) -> Result<Vec<Position>, Strin
     let where_ = format!("{}: line {} ({})", game.path, r.line, round_name(r.kyoku, r.honba));
     let p = plan(r).map_err(|e| format!("{where_}: {e}"))?;
     let mut env = Env::new(Config {
-        mode: Mode::Half,
+        mode: super::replay::mode_of(std::slice::from_ref(game)),
         uma: Some([0; 4]),
         threads: Some(1),
         ..Config::new(Variant::Red, 1)

@@ -216,7 +216,7 @@ impl<'g> Run<'g> {
 
 /// The length of the games: East only when every log's rule says so (`東`, as in `鳳東喰赤`),
 /// else East and South. One replay plays one length: replay East and half games apart.
-fn mode_of(games: &[Game]) -> Mode {
+pub(crate) fn mode_of(games: &[Game]) -> Mode {
     if games.iter().all(|g| g.rule.contains('東')) {
         Mode::East
     } else {
