@@ -115,6 +115,21 @@ pub fn meld_tile(m: u32) -> u32 {
     (m >> MELD_TILE_SHIFT) & 63u32
 }
 
+// Adds the tiles of meld `m` to the counts by type (a kan counts four).
+pub fn meld_types(m: u32, c: &mut [u32; 34]) {
+    let k: u32 = meld_kind(m);
+    let t: u32 = meld_tile(m);
+    if k == MELD_CHI {
+        c[t as usize] += 1u32;
+        c[(t + 1u32) as usize] += 1u32;
+        c[(t + 2u32) as usize] += 1u32;
+    } else if k == MELD_PON {
+        c[t as usize] += 3u32;
+    } else {
+        c[t as usize] += 4u32;
+    }
+}
+
 pub fn meld_word(kind: u32, tile: u32) -> u32 {
     kind | (tile << MELD_TILE_SHIFT)
 }
@@ -162,14 +177,8 @@ fn input_is_valid(inp: ScoreInput) -> bool {
             if is_honor(t) || t % 9u32 > 6u32 {
                 return false;
             }
-            all[t as usize] += 1u32;
-            all[(t + 1u32) as usize] += 1u32;
-            all[(t + 2u32) as usize] += 1u32;
-        } else if kind == MELD_PON {
-            all[t as usize] += 3u32;
-        } else {
-            all[t as usize] += 4u32;
         }
+        meld_types(m, &mut all);
     }
     for t in 0u32..N_TYPES {
         if all[t as usize] > 4u32 {

@@ -51,20 +51,6 @@ fn decision_of(s: &mut GameState, seat: u32) -> u32 {
     DECISION_NONE
 }
 
-fn meld_types(m: u32, c: &mut [u32; 34]) {
-    let k: u32 = meld_kind(m);
-    let t: u32 = meld_tile(m);
-    if k == MELD_CHI {
-        c[t as usize] += 1u32;
-        c[(t + 1u32) as usize] += 1u32;
-        c[(t + 2u32) as usize] += 1u32;
-    } else if k == MELD_PON {
-        c[t as usize] += 3u32;
-    } else {
-        c[t as usize] += 4u32;
-    }
-}
-
 fn river_entry(s: &mut GameState, q: u32, i: u32) -> u32 {
     byte_of(s.rivers[(q * 6u32 + i / 4u32) as usize], i % 4u32)
 }

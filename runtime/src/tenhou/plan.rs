@@ -46,6 +46,20 @@ pub struct Plan {
     pub riichi_paid: [u32; 4],
 }
 
+impl Plan {
+    /// The deal that starts `round` (logged as this plan's round) from the plan's wall.
+    pub fn deal(&self, round: &Round) -> crate::env::Deal {
+        crate::env::Deal {
+            round: round.kyoku,
+            dealer: round.dealer() as u32,
+            honba: round.honba,
+            sticks: round.sticks,
+            scores: round.scores,
+            wall: self.wall,
+        }
+    }
+}
+
 /// Where the engine deals from (rules/kernel/game_state.rs: `WALL_*`).
 pub(super) const LIVE_START: usize = kernel::WALL_LIVE_START as usize;
 pub(super) const LIVE_END: usize = kernel::WALL_LIVE_END as usize;

@@ -4,7 +4,7 @@
 
 use super::log::{round_name, Game};
 use super::plan::plan;
-use crate::env::{Config, Deal, Env};
+use crate::env::{Config, Env};
 use crate::generated::kernel::GameState;
 use crate::generated::red as k;
 use crate::Variant;
@@ -43,15 +43,7 @@ pub fn round_positions(game: &Game, round: usize) -> Result<Vec<Position>, Strin
     })
     .map_err(|e| e.to_string())?;
     env.reset().map_err(|e| e.to_string())?;
-    let deal = Deal {
-        round: r.kyoku,
-        dealer: r.dealer() as u32,
-        honba: r.honba,
-        sticks: r.sticks,
-        scores: r.scores,
-        wall: p.wall,
-    };
-    env.deal(&[Some(deal)]).map_err(|e| e.to_string())?;
+    env.deal(&[Some(p.deal(r))]).map_err(|e| e.to_string())?;
     let mut out = Vec::new();
     let mut next = 0;
     loop {

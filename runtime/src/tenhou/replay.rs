@@ -137,14 +137,7 @@ impl<'g> Run<'g> {
             match plan(r) {
                 Ok(p) => {
                     report.actions += p.moves.len();
-                    let deal = Deal {
-                        round: r.kyoku,
-                        dealer: r.dealer() as u32,
-                        honba: r.honba,
-                        sticks: r.sticks,
-                        scores: r.scores,
-                        wall: p.wall,
-                    };
+                    let deal = p.deal(r);
                     self.plan = Some(p);
                     return Some(deal);
                 }
