@@ -142,6 +142,27 @@ fn hero_mode_observes_the_callers_seat() {
     assert_eq!(tokens, seat0);
 }
 
+/// `observe_all` gives each seat's own observation, env-major.
+#[test]
+fn observe_all_is_every_seat_of_every_env() {
+    let mut env = Env::new(hero_config(3, Vec::new())).expect("env");
+    env.reset().expect("reset");
+    for form in Form::ALL {
+        let all = env.observe_all(form).expect("all seats");
+        let n = form.bytes();
+        for seat in 0..4u32 {
+            let one = env.observe(form, Observer::Seat(seat)).expect("one seat").to_vec();
+            for i in 0..3 {
+                let at = (i * 4 + seat as usize) * n;
+                assert!(
+                    all[at..at + n] == one[i * n..(i + 1) * n],
+                    "{form}: env {i} seat {seat}"
+                );
+            }
+        }
+    }
+}
+
 struct FirstLegal;
 impl Policy for FirstLegal {
     fn act(&self, _planes: &[u8], mask: &[u32; 3]) -> u32 {

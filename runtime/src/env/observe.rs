@@ -120,6 +120,22 @@ impl Env {
         r.map(|()| self.observed.as_slice())
     }
 
+    /// Every seat's observation of every env in `form` (centralised critics): `batch * 4` records,
+    /// env-major (env 0 seats 0..3, then env 1 ...), each in its seat's own ego frame.
+    pub fn observe_all(&mut self, form: Form) -> Result<Vec<u8>, EnvError> {
+        let n = form.bytes();
+        let mut all = vec![0u8; self.batch() * 4 * n];
+        let mut one = vec![0u8; self.batch() * n];
+        for seat in 0..4 {
+            self.observe_into(form, Observer::Seat(seat), &mut one)?;
+            for (env, record) in one.chunks(n).enumerate() {
+                let at = (env * 4 + seat as usize) * n;
+                all[at..at + n].copy_from_slice(record);
+            }
+        }
+        Ok(all)
+    }
+
     /// The current player's observation of each env in `form`, written by the last reset or step
     /// when [`Config::observe`] asks for that form (`batch * form.bytes()` bytes).
     pub fn observation(&self, form: Form) -> Option<&[u8]> {
