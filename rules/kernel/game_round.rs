@@ -213,23 +213,29 @@ fn game_is_over(s: &mut GameState, dealer_continues: bool) -> bool {
     !WEST_EXTENSION || reached
 }
 
+// The seat's place by score, 0 = first; ties go to the seat nearer the first dealer of the game
+// (East 1's dealer is round 0's). Uma, observations and the arena all rank by it.
+pub fn seat_rank(s: &mut GameState, p: u32) -> u32 {
+    let first: u32 = (s.dealer + 64u32 - s.round) % 4u32;
+    let mut rank: u32 = 0u32;
+    for q in 0u32..4u32 {
+        let above: bool = s.scores[q as usize] > s.scores[p as usize];
+        let tie_before: bool =
+            s.scores[q as usize] == s.scores[p as usize] && (q + 4u32 - first) % 4u32 < (p + 4u32 - first) % 4u32;
+        if q != p && (above || tie_before) {
+            rank += 1u32;
+        }
+    }
+    rank
+}
+
 // Uma by rank and the leftover sticks to the top seat, paid in the game's final step.
 fn finish_game(s: &mut GameState) {
     let top: u32 = top_seat(s);
     collect_sticks(s, top);
-    let first: u32 = (s.dealer + 64u32 - s.round) % 4u32;
     let mut ranks: [u32; 4] = [0u32; 4];
     for p in 0u32..4u32 {
-        for q in 0u32..4u32 {
-            if q != p {
-                let above: bool = s.scores[q as usize] > s.scores[p as usize];
-                let tie_before: bool = s.scores[q as usize] == s.scores[p as usize]
-                    && (q + 4u32 - first) % 4u32 < (p + 4u32 - first) % 4u32;
-                if above || tie_before {
-                    ranks[p as usize] += 1u32;
-                }
-            }
-        }
+        ranks[p as usize] = seat_rank(s, p);
     }
     for p in 0u32..4u32 {
         let u: i32 = s.uma[ranks[p as usize] as usize];

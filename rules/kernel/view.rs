@@ -155,21 +155,11 @@ fn riichi_state(s: &mut GameState, q: u32) -> u32 {
 fn view_scalars(s: &mut GameState, v: Seen) -> [u32; 24] {
     let seat: u32 = v.seat;
     let mut sc: [u32; 24] = [0u32; 24];
-    let first: u32 = (s.dealer + 64u32 - s.round) % 4u32;
     for j in 0u32..4u32 {
         let p: u32 = (seat + j) % 4u32;
         let f: u32 = s.seat_flags[p as usize];
         put_scalar(&mut sc, S_SCORE + j, s.scores[p as usize] / 100i32);
-        let mut rank: u32 = 0u32;
-        for q in 0u32..4u32 {
-            let above: bool = s.scores[q as usize] > s.scores[p as usize];
-            let tie_before: bool =
-                s.scores[q as usize] == s.scores[p as usize] && (q + 4u32 - first) % 4u32 < (p + 4u32 - first) % 4u32;
-            if q != p && (above || tie_before) {
-                rank += 1u32;
-            }
-        }
-        put_scalar(&mut sc, S_RANK + j, rank as i32);
+        put_scalar(&mut sc, S_RANK + j, seat_rank(s, p) as i32);
         put_scalar(&mut sc, S_RIICHI + j, riichi_state(s, p) as i32);
         put_scalar(&mut sc, S_IPPATSU + j, ((f & SEAT_IPPATSU) != 0u32) as i32);
         put_scalar(&mut sc, S_CONCEALED + j, ((f & SEAT_CONCEALED) != 0u32) as i32);

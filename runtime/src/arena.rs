@@ -122,13 +122,6 @@ struct Tally {
     illegal: u64,
 }
 
-fn rank_of(scores: &[i32; 4], first_dealer: u32, p: usize) -> u32 {
-    let order = |q: usize| (q as u32 + 4 - first_dealer) % 4;
-    (0..4)
-        .filter(|&q| q != p && (scores[q] > scores[p] || (scores[q] == scores[p] && order(q) < order(p))))
-        .count() as u32
-}
-
 /// Plays one game with `seating[p]` in seat p; returns the tallies per seat and the decisions.
 fn play(arena: &Arena, seed: u64, seating: &[Player; 4]) -> ([Tally; 4], u64) {
     with_variant!(arena.variant, v => {
@@ -142,7 +135,6 @@ fn play(arena: &Arena, seed: u64, seating: &[Player; 4]) -> ([Tally; 4], u64) {
             penalty: v::host::ILLEGAL_ACTION_PENALTY,
             auto_reset: 0,
         });
-        let first_dealer = s.dealer;
         let mut t = [Tally::default(); 4];
         let (mut called, mut riichi) = ([false; 4], [false; 4]);
         let mut decisions = 0u64;
@@ -190,7 +182,7 @@ fn play(arena: &Arena, seed: u64, seating: &[Player; 4]) -> ([Tally; 4], u64) {
             }
         }
         for (q, tq) in t.iter_mut().enumerate() {
-            tq.rank = rank_of(&s.scores, first_dealer, q);
+            tq.rank = v::seat_rank(&mut s, q as u32);
             tq.score = i64::from(s.scores[q]);
         }
         (t, decisions)

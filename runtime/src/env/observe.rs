@@ -190,13 +190,7 @@ impl Env {
             Backing::Cpu(cpu) => {
                 let mut out = vec![0u32; b];
                 let sts: &[kernel::GameState] = bytemuck::cast_slice(&cpu.states);
-                with_variant!(variant, v => cpu.install(|| {
-                    if cpu.serial {
-                        out.iter_mut().zip(sts).zip(&args).for_each(|((o, s), a)| *o = v::game_agent_action(*s, *a));
-                    } else {
-                        out.par_iter_mut().zip(sts.par_iter()).zip(args.par_iter()).with_min_len(8).for_each(|((o, s), a)| *o = v::game_agent_action(*s, *a));
-                    }
-                }));
+                with_variant!(variant, v => cpu.install(|| each(&mut out, sts, &args, cpu.serial, v::game_agent_action)));
                 Ok(out)
             }
             Backing::Gpu(gpu) => Ok(gpu.agent_actions(&args)?.to_vec()),
