@@ -10,7 +10,7 @@ pub const MODE_HALF: u32 = 2;
 // What the current player is deciding.
 const PHASE_TURN: u32 = 0; // after a draw or a call: discard, tsumo, kan, riichi, kyuushu
 const PHASE_RIICHI_DISCARD: u32 = 1; // riichi declared: discard a tile that keeps tenpai
-const PHASE_CLAIM: u32 = 2; // a discard (or an added kan) waits for each claimant's decision
+pub const PHASE_CLAIM: u32 = 2; // a discard (or an added kan) waits for each claimant's decision
 const PHASE_OVER: u32 = 3; // the game has ended
 
 // Per-seat flags.
@@ -24,7 +24,7 @@ const SEAT_NAGASHI: u32 = 64; // every discard so far was a terminal or honor, n
 const SEAT_CONCEALED: u32 = 128; // no open meld
 const SEAT_DISCARDED: u32 = 256; // has discarded at least once this round
 
-const NO_TILE_VALUE: u32 = 255;
+pub const NO_TILE_VALUE: u32 = 255;
 const NO_CHOICE: u32 = 255;
 
 // Claim options of one seat on a discard (or an added kan).

@@ -81,7 +81,7 @@ struct OwnDraws {
 impl OwnDraws {
     fn update(&mut self, before: &GameState, after: &mut GameState, observer: u32) {
         let key = Some((after.games, after.rounds, after.round * 64 + after.honba));
-        let drew_now = after.drawn != 255 && after.current == observer;
+        let drew_now = after.drawn != kernel::NO_TILE_VALUE && after.current == observer;
         if key != self.round_key || after.next_draw < before.next_draw {
             self.round_key = key;
             self.positions.clear();
@@ -156,7 +156,7 @@ fn resample(s: &GameState, observer: u32, own_draws: &[u32], rng: &mut Rng) -> G
             }
             given.push(v);
         }
-        if s.current == q && s.drawn != 255 && !given.is_empty() {
+        if s.current == q && s.drawn != kernel::NO_TILE_VALUE && !given.is_empty() {
             r.drawn = given[rng.below(given.len() as u32) as usize];
         }
         // Waits, furiten and claim prompts of another seat follow from its hand.
@@ -320,7 +320,8 @@ fn event_tokens_replay_the_rivers_and_own_draws() {
                 round = (s.rounds, s.games);
                 own.iter_mut().for_each(Vec::clear);
             }
-            if s.drawn != 255 && own[s.current as usize].last() != Some(&(s.next_draw * 64 + s.kans)) {
+            if s.drawn != kernel::NO_TILE_VALUE && own[s.current as usize].last() != Some(&(s.next_draw * 64 + s.kans))
+            {
                 own[s.current as usize].push(s.next_draw * 64 + s.kans);
             }
             for seat in 0..4u32 {
@@ -340,7 +341,7 @@ fn event_tokens_replay_the_rivers_and_own_draws() {
                     }
                     if kind == kernel::EV_DRAW {
                         assert_eq!(
-                            tile == 255,
+                            tile == kernel::NO_TILE_BYTE,
                             actor != 0,
                             "game {game}: a draw's tile is shown to its drawer only"
                         );

@@ -102,7 +102,7 @@ fn observations_at_chosen_log_positions() {
         (
             "chankan_prompt",
             Box::new(|ps, i| {
-                (ps[i].state.phase == 2 && ps[i].state.claim_kan == 1)
+                (ps[i].state.phase == kernel::PHASE_CLAIM && ps[i].state.claim_kan == 1)
                     .then_some((ps[i].seat, "a chankan prompt: a claim on an added kan"))
             }),
         ),
