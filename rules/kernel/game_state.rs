@@ -46,6 +46,8 @@ pub const EVENT_EXHAUSTIVE_DRAW: u32 = 4;
 pub const EVENT_ABORTIVE_DRAW: u32 = 8;
 pub const EVENT_GAME_OVER: u32 = 16;
 pub const EVENT_NAGASHI: u32 = 32;
+// Bits per seat in StepView.ranks.
+pub const RANK_SHIFT: u32 = 8;
 
 // How a round ended without a win (GameState.draw_kind, low byte); the tenpai seats follow from
 // bit DRAW_TENPAI_SHIFT and, for nagashi, the nagashi seats from bit DRAW_NAGASHI_SHIFT (a bit
@@ -149,6 +151,9 @@ pub struct StepView {
     pub yaku: [u32; 2],
     // Rounds played in this game so far.
     pub rounds: u32,
+    // Where the game ended in this step: each seat's final place (0 = first), a byte per seat,
+    // read with RANK_SHIFT; 0 otherwise.
+    pub ranks: u32,
 }
 
 #[derive(Clone, Copy)]
@@ -225,6 +230,9 @@ pub struct GameState {
     pub deal_in: u32,
     pub yaku: [u32; 2],
     pub rounds: u32,
+    // Final places of the game that ended in this step (StepView.ranks); set before an
+    // auto-reset deals the next game, which is why the view cannot recompute them.
+    pub ranks: u32,
     pub steps: u32,
     // What the last settlement scored, per winning seat (valid for the seats in `winners`): the
     // yaku bits (2 words) and the two packed words of WIN_* fields. Written only when a hand

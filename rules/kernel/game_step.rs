@@ -97,6 +97,7 @@ fn clear_step_outputs(s: &mut GameState) {
     s.deal_in = 0u32;
     s.yaku = [0u32; 2];
     s.illegal = 0u32;
+    s.ranks = 0u32;
 }
 
 pub fn game_step(s: &mut GameState, action: u32) {
@@ -113,6 +114,7 @@ pub fn game_step(s: &mut GameState, action: u32) {
     let actor: u32 = s.current;
     if action >= NUM_ACTIONS || !mask_has(s.mask, action) {
         s.illegal = actor + 1u32;
+        record_ranks(s);
         s.phase = PHASE_OVER;
         s.terminated = 1u32;
         s.events |= EVENT_GAME_OVER;
@@ -176,5 +178,6 @@ pub fn game_view(s: GameState) -> StepView {
         deal_in: s.deal_in,
         yaku: s.yaku,
         rounds: s.rounds,
+        ranks: s.ranks,
     }
 }

@@ -13,6 +13,7 @@
 //! ```
 
 mod observe;
+mod snapshot;
 mod table;
 
 use rayon::prelude::*;
@@ -212,6 +213,13 @@ pub enum EnvError {
         /// The seat given.
         dealer: u32,
     },
+    /// A saved state given to [`Env::load_states`] failed its check.
+    BadState {
+        /// The env it was for.
+        env: usize,
+        /// What is wrong with it.
+        reason: String,
+    },
     /// The GPU backend could not start or failed.
     Gpu(GpuError),
 }
@@ -238,6 +246,7 @@ impl std::fmt::Display for EnvError {
                     "observer seat {seat} of env {env}: seats are 0..3 (4 = the current player)"
                 )
             }
+            EnvError::BadState { env, reason } => write!(f, "saved state of env {env}: {reason}"),
             EnvError::Gpu(e) => write!(f, "{e}"),
         }
     }
@@ -279,6 +288,10 @@ pub struct Step {
     pub yaku: Vec<[u32; 2]>,
     /// Rounds played in the (finished) game so far.
     pub rounds: Vec<u32>,
+    /// Where `terminated`: each seat's final place (0 = first; ties go to the seat nearer the
+    /// game's first dealer), as uma paid it. An illegal action ranks the seats where the scores
+    /// stood. Zeros elsewhere.
+    pub ranks: Vec<[u8; 4]>,
 }
 
 /// The `events` bits of a [`Step`]: the kernel's `EVENT_*`.
@@ -312,6 +325,7 @@ impl Step {
             deal_in: vec![0; b],
             yaku: vec![[0; 2]; b],
             rounds: vec![0; b],
+            ranks: vec![[0; 4]; b],
         }
     }
 
@@ -337,6 +351,7 @@ impl Step {
                 self.deal_in[i] = w.deal_in;
                 self.yaku[i] = w.yaku;
                 self.rounds[i] = w.rounds;
+                self.ranks[i] = std::array::from_fn(|p| (w.ranks >> (p as u32 * kernel::RANK_SHIFT)) as u8);
             }
         }
     }

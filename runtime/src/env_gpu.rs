@@ -159,18 +159,32 @@ impl GpuEnv {
 
     /// Runs `first` (a reset or a step) then the view pass, and reads the views back.
     fn run(&mut self, first: Stage) -> Result<&[u32], GpuError> {
-        self.ensure(first);
-        self.ensure(Stage::View);
-        let (Some(first), Some(view)) = (&self.passes[first as usize], &self.passes[Stage::View as usize]) else {
-            unreachable!("both passes are made above")
-        };
+        self.dispatch(&[first, Stage::View])
+    }
+
+    /// Replaces every env's state with `states` and reads their views back.
+    pub(crate) fn load(&mut self, states: &[u32]) -> Result<&[u32], GpuError> {
+        self.gpu
+            .queue()
+            .write_buffer(&self.states, 0, bytemuck::cast_slice(states));
+        self.dispatch(&[Stage::View])
+    }
+
+    /// Runs the passes of `stages` in order over the batch, and reads the views back.
+    fn dispatch(&mut self, stages: &[Stage]) -> Result<&[u32], GpuError> {
+        for &stage in stages {
+            self.ensure(stage);
+        }
         let mut encoder = self
             .gpu
             .device()
             .create_command_encoder(&wgpu::CommandEncoderDescriptor {
                 label: Some("rinshan env"),
             });
-        for p in [first, view] {
+        for &stage in stages {
+            let Some(p) = &self.passes[stage as usize] else {
+                unreachable!("every stage's pass is made above")
+            };
             let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
                 label: Some("rinshan env"),
                 timestamp_writes: None,

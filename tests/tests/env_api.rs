@@ -242,3 +242,96 @@ fn defaults_come_from_the_spec() {
     let env = Env::new(Config::new(Variant::NoRed, 1)).expect("env");
     assert_eq!(env.num_actions(), 79);
 }
+
+#[test]
+fn final_ranks_order_the_final_scores() {
+    for &v in Variant::ALL {
+        // Without auto-reset the finished game stays in the state, so its table is the oracle.
+        let mut env = Env::new(Config {
+            auto_reset: false,
+            ..config(v, 64, Some(1))
+        })
+        .expect("env");
+        let mut step = env.reset().expect("reset").clone();
+        let mut sums = vec![[0.0f64; 4]; 64];
+        let mut rng = Rng::new(9);
+        let mut ranks = vec![None; 64];
+        while ranks.iter().any(Option::is_none) {
+            let actions: Vec<u32> = (0..64).map(|i| rng.pick_legal(&step.legal_action_mask[i])).collect();
+            step = env.step(&actions).expect("step").clone();
+            for i in 0..64 {
+                if ranks[i].is_none() {
+                    for (s, r) in sums[i].iter_mut().zip(step.rewards[i]) {
+                        *s += f64::from(r);
+                    }
+                    if step.terminated[i] {
+                        ranks[i] = Some(step.ranks[i]);
+                    }
+                }
+            }
+        }
+        let start = f64::from(v.starting_points());
+        for (i, table) in env.tables().expect("tables").iter().enumerate() {
+            let r = ranks[i].expect("finished");
+            let mut places = r;
+            places.sort_unstable();
+            assert_eq!(places, [0, 1, 2, 3], "{v} env {i}: {r:?}");
+            for p in 0..4 {
+                // The rewards add up to the final score, uma included.
+                assert_eq!(start + sums[i][p] * 100.0, f64::from(table.scores[p]), "{v} env {i}");
+                for q in 0..4 {
+                    if table.scores[p] > table.scores[q] {
+                        assert!(r[p] < r[q], "{v} env {i}: {:?} ranked {r:?}", table.scores);
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn saved_states_replay_the_same_games_and_edits_are_refused() {
+    for &v in Variant::ALL {
+        let mut env = Env::new(config(v, 16, Some(1))).expect("env");
+        let mut step = env.reset().expect("reset").clone();
+        let mut rng = Rng::new(3);
+        for _ in 0..150 {
+            let actions: Vec<u32> = (0..16).map(|i| rng.pick_legal(&step.legal_action_mask[i])).collect();
+            step = env.step(&actions).expect("step").clone();
+        }
+        let saved = env.save_states().expect("save");
+        assert_eq!(saved.len(), 16 * env.saved_words());
+        let at_save = step.clone();
+        let mut after = Vec::new();
+        let mut played = Vec::new();
+        for _ in 0..200 {
+            let actions: Vec<u32> = (0..16).map(|i| rng.pick_legal(&step.legal_action_mask[i])).collect();
+            step = env.step(&actions).expect("step").clone();
+            after.push(step.clone());
+            played.push(actions);
+        }
+        // A fresh env takes the saved games and plays them on identically.
+        let mut other = Env::new(config(v, 16, None)).expect("env");
+        assert_eq!(*other.load_states(&saved).expect("load"), at_save, "{v}");
+        for (actions, expected) in played.iter().zip(&after) {
+            assert_eq!(other.step(actions).expect("step"), expected, "{v}");
+        }
+        // An edited word, a short input or another variant's state is refused, and the env keeps
+        // its games.
+        let before = other.states_words().expect("states");
+        let mut edited = saved.clone();
+        edited[40] ^= 1;
+        let e = other.load_states(&edited).expect_err("edited");
+        assert!(matches!(e, EnvError::BadState { env: 0, .. }), "{e}");
+        assert!(e.to_string().contains("check words do not match"), "{e}");
+        let e = other.load_states(&saved[1..]).expect_err("short");
+        assert!(matches!(e, EnvError::WrongLength { .. }), "{e}");
+        let w = Variant::ALL.iter().find(|&&o| o != v).copied().expect("two variants");
+        let e = Env::new(config(w, 16, None))
+            .expect("env")
+            .load_states(&saved)
+            .expect_err("other variant");
+        assert!(matches!(e, EnvError::BadState { env: 0, .. }), "{e}");
+        assert_eq!(other.states_words().expect("states"), before);
+    }
+}

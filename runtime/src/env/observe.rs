@@ -93,11 +93,15 @@ impl Env {
         let args = self.observer_args(observer)?;
         let variant = self.variant();
         match &mut self.backing {
-            Backing::Cpu(cpu) => {
-                let mut words = vec![0u32; self.config.batch * form.words()];
-                cpu.install(|| observe_cpu(variant, form, &cpu.states, &args, &mut words, cpu.serial));
-                out.copy_from_slice(bytemuck::cast_slice(&words));
-            }
+            Backing::Cpu(cpu) => match bytemuck::try_cast_slice_mut::<u8, u32>(out) {
+                // A word-aligned buffer (numpy's are) is written in place.
+                Ok(words) => cpu.install(|| observe_cpu(variant, form, &cpu.states, &args, words, cpu.serial)),
+                Err(_) => {
+                    let mut words = vec![0u32; self.config.batch * form.words()];
+                    cpu.install(|| observe_cpu(variant, form, &cpu.states, &args, &mut words, cpu.serial));
+                    out.copy_from_slice(bytemuck::cast_slice(&words));
+                }
+            },
             Backing::Gpu(gpu) if form == Form::Analysis => {
                 let mut words = vec![0u32; self.config.batch * form.words()];
                 observe_cpu(variant, form, &gpu.states()?, &args, &mut words, false);
