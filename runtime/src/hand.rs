@@ -59,6 +59,23 @@ pub fn shanten(counts: &[u8; 34]) -> Shanten {
     decode_shanten(&out)
 }
 
+/// The shanten of a concealed hand in notation (`123m456p789s1122z`, 0 = red five): 1 to 14
+/// tiles, 3k+1 or 3k+2 of them, at most 4 of a kind; otherwise what is wrong with it.
+pub fn shanten_of_notation(hand: &str) -> Result<Shanten, String> {
+    let tiles = crate::notation::parse_tiles(hand).map_err(|e| e.to_string())?;
+    let counts = tiles.counts();
+    if let Some((t, n)) = TileType::all().zip(counts).find(|&(_, n)| n > 4) {
+        return Err(format!("{n} copies of {t}: there are only 4"));
+    }
+    let n = tiles.tiles.len();
+    if n > 14 || n % 3 == 0 {
+        return Err(format!(
+            "{n} tiles: a hand to measure has 3k+1 or 3k+2 tiles (13 or 14 without melds)"
+        ));
+    }
+    Ok(shanten(&counts))
+}
+
 /// Runs the shanten kernel over `inputs` (SHANTEN_IN_WORDS each) into `outputs`, on the calling thread.
 pub fn shanten_batch(inputs: &[u32], outputs: &mut [u32]) {
     {

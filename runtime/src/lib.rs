@@ -38,6 +38,7 @@ pub mod observe;
 pub mod random;
 pub mod tenhou;
 pub mod tile;
+pub mod win_input;
 
 pub use generated::Variant;
 pub use tile::{Tile, TileType};

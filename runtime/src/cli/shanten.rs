@@ -1,6 +1,4 @@
 use rinshan::hand;
-use rinshan::notation::parse_tiles;
-use rinshan::TileType;
 
 use super::CliError;
 
@@ -14,18 +12,7 @@ pub struct Args {
 }
 
 pub fn run(args: Args) -> Result<(), CliError> {
-    let tiles = parse_tiles(&args.hand).map_err(CliError::input)?;
-    let counts = tiles.counts();
-    if let Some((t, n)) = TileType::all().zip(counts).find(|&(_, n)| n > 4) {
-        return Err(CliError::input(format!("{n} copies of {t}: there are only 4")));
-    }
-    let n = tiles.tiles.len();
-    if n > 14 || n % 3 == 0 {
-        return Err(CliError::input(format!(
-            "{n} tiles: a hand to measure has 3k+1 or 3k+2 tiles (13 or 14 without melds)"
-        )));
-    }
-    let s = hand::shanten(&counts);
+    let s = hand::shanten_of_notation(&args.hand).map_err(CliError::input)?;
     if args.json {
         let v = serde_json::json!({
             "shanten": s.shanten,
