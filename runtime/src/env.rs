@@ -26,6 +26,7 @@ use crate::Variant;
 
 pub(crate) use observe::observe_cpu;
 pub use observe::Observer;
+pub use snapshot::CHECK_WORDS;
 pub use table::{Deal, DrawKind, DrawRecord, Table, WinRecord};
 
 /// How long one game lasts (the kernel's `MODE_*`).
@@ -360,6 +361,28 @@ impl Step {
 /// The yaku names of `variant`, indexed by yaku id (the bits of [`Step::yaku`]).
 pub fn yaku_names(variant: Variant) -> &'static [&'static str] {
     with_variant!(variant, v => &v::host::YAKU_NAMES)
+}
+
+/// The action ids of `variant` by name, from its `[actions]` layout: `discard_<tile>` (a red five
+/// is `discard_0m`), `self_kan_<tile type>`, then one id per other kind (`tsumogiri`, `riichi`,
+/// `pon_red`, `pass` ...).
+pub fn action_names(variant: Variant) -> Vec<String> {
+    let blocks: &[(&str, u32, u32)] = with_variant!(variant, v => &v::host::ACTION_BLOCKS);
+    let mut names = Vec::new();
+    for &(kind, _, count) in blocks {
+        if count == 1 {
+            names.push(kind.to_string());
+            continue;
+        }
+        for i in 0..count {
+            let tile = u8::try_from(i).ok().and_then(Tile::from_value);
+            names.push(match tile {
+                Some(t) => format!("{kind}_{t}"),
+                None => format!("{kind}_{i}"),
+            });
+        }
+    }
+    names
 }
 
 /// Sizes of the kernel records, in 32-bit words: (ResetInput, GameState, StepView).

@@ -335,3 +335,24 @@ fn saved_states_replay_the_same_games_and_edits_are_refused() {
         assert_eq!(other.states_words().expect("states"), before);
     }
 }
+
+#[test]
+fn action_names_follow_the_layout() {
+    for &v in Variant::ALL {
+        let names = rinshan::env::action_names(v);
+        let env = Env::new(Config::new(v, 1)).expect("env");
+        assert_eq!(names.len(), env.num_actions() as usize, "{v}");
+        let mut unique = names.clone();
+        unique.sort();
+        unique.dedup();
+        assert_eq!(unique.len(), names.len(), "{v}: {names:?}");
+        // MahJax's ids: discards by tile type first, then self kans.
+        assert_eq!(names[0], "discard_1m");
+        assert_eq!(names[33], "discard_7z");
+    }
+    let red = rinshan::env::action_names(Variant::Red);
+    assert_eq!(&red[34..37], ["discard_0m", "discard_0p", "discard_0s"]);
+    assert_eq!(red[37], "self_kan_1m");
+    assert_eq!(&red[71..75], ["tsumogiri", "riichi", "tsumo", "ron"]);
+    assert_eq!(red[84], "pass");
+}

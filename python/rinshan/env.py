@@ -1,0 +1,315 @@
+"""The batched environment: `make`, `Env`, `TimeStep` and `Spec`.
+
+Outputs are numpy arrays allocated once per env and rewritten in place by every `reset` and
+`step` (Rust fills them with the GIL released). The TimeStep returned is the same object each
+time: copy what you keep past the next call (`ts.copy()`), e.g. before handing arrays to JAX
+through dlpack, whose buffers must not change underneath it.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from typing import Any, Optional, Sequence, Union
+
+import numpy as np
+
+from . import _core
+
+FORMS, AGENTS, VARIANTS, MODES = _core.names()
+OBSERVATION_FORMS = ("planes", "tokens")
+
+
+@dataclasses.dataclass(frozen=True)
+class Field:
+    """One array of an observation record."""
+
+    name: str
+    offset: int
+    dtype: np.dtype
+    shape: tuple
+    doc: str
+
+
+def fields(form: str) -> tuple[int, list[Field]]:
+    """Bytes of one record of `form` and its fields (see docs/observation.md)."""
+    size, rows = _core.fields(form)
+    return size, [Field(n, o, np.dtype(d), tuple(s), doc) for n, o, d, s, doc in rows]
+
+
+def split_record(raw: np.ndarray, form: str) -> dict[str, np.ndarray]:
+    """Views of `raw` (N, bytes) uint8 records as the form's named arrays (no copy)."""
+    size, fs = fields(form)
+    if raw.ndim != 2 or raw.shape[1] != size or raw.dtype != np.uint8:
+        raise ValueError(f"{form} records are (N, {size}) uint8, not {raw.shape} {raw.dtype}")
+    n = raw.shape[0]
+    out = {}
+    for f in fs:
+        nbytes = int(np.prod(f.shape)) * f.dtype.itemsize
+        out[f.name] = raw[:, f.offset : f.offset + nbytes].view(f.dtype).reshape((n, *f.shape))
+    return out
+
+
+@dataclasses.dataclass(frozen=True)
+class Spec:
+    """What an env's arrays hold: sizes, names, dtypes and field docs."""
+
+    variant: str
+    mode: str
+    num_envs: int
+    num_actions: int
+    action_names: tuple
+    yaku_names: tuple
+    starting_points: int
+    observation: tuple
+    fields: dict
+
+    def describe(self) -> str:
+        lines = [f"rinshan {self.variant} ({self.mode}), {self.num_envs} envs, "
+                 f"{self.num_actions} actions"]
+        for form, fs in self.fields.items():
+            lines.append(f"{form}:")
+            for f in fs:
+                lines.append(f"  {f.name:14} {str(f.dtype):6} {str(f.shape):12} {f.doc}")
+        return "\n".join(lines)
+
+
+@dataclasses.dataclass
+class TimeStep:
+    """One reset's or step's outcome for the whole batch (index 0 = env).
+
+    `rewards`, `terminated` and `info["final_*"]` belong to the game that ended in this step; with
+    auto-reset, `observation`, `legal_action_mask` and `current_player` are already the next
+    game's (Pgx's same-step auto-reset).
+    """
+
+    observation: dict
+    legal_action_mask: np.ndarray
+    current_player: np.ndarray
+    rewards: np.ndarray
+    terminated: np.ndarray
+    truncated: np.ndarray
+    info: dict
+
+    def copy(self) -> TimeStep:
+        """A copy that later steps do not overwrite."""
+        return TimeStep(
+            observation={k: v.copy() for k, v in self.observation.items()},
+            legal_action_mask=self.legal_action_mask.copy(),
+            current_player=self.current_player.copy(),
+            rewards=self.rewards.copy(),
+            terminated=self.terminated.copy(),
+            truncated=self.truncated.copy(),
+            info={k: v.copy() for k, v in self.info.items()},
+        )
+
+
+def _forms(observation: Union[str, Sequence[str], None], analysis: bool) -> list[str]:
+    if observation is None:
+        observation = ()
+    if isinstance(observation, str):
+        observation = (observation,)
+    forms = list(observation)
+    for f in forms:
+        if f not in OBSERVATION_FORMS:
+            raise ValueError(
+                f"unknown observation form {f!r}: choose from {OBSERVATION_FORMS} "
+                "(analysis=True adds the analysis tier; the oracle comes from env.oracle())"
+            )
+    if len(set(forms)) != len(forms):
+        raise ValueError(f"observation {tuple(forms)} names a form twice")
+    if analysis:
+        forms.append("analysis")
+    return forms
+
+
+class Env:
+    """A batch of `num_envs` games stepped together; see `rinshan.make`."""
+
+    def __init__(
+        self,
+        variant: str = "red",
+        mode: str = "half",
+        num_envs: int = 4096,
+        backend: str = "cpu",
+        num_threads: Optional[int] = None,
+        seed: int = 0,
+        observation: Union[str, Sequence[str], None] = ("planes",),
+        analysis: bool = False,
+        oracle: bool = False,
+        auto_reset: bool = True,
+        opponents: Optional[str] = None,
+        hero_seats: Union[int, Sequence[int], np.ndarray, None] = None,
+        penalty: Optional[float] = None,
+    ):
+        if not isinstance(num_envs, (int, np.integer)) or isinstance(num_envs, bool):
+            raise TypeError(f"num_envs must be an int, not {type(num_envs).__name__}")
+        if num_envs < 1:
+            raise ValueError(f"num_envs must be at least 1, not {num_envs}")
+        if num_threads is not None and num_threads < 1:
+            raise ValueError(f"num_threads must be at least 1 (None = all cores), not {num_threads}")
+        if not 0 <= seed < 2**64:
+            raise ValueError(f"seed must be in 0..2**64, not {seed}")
+        forms = _forms(observation, analysis)
+        seats = None
+        if hero_seats is not None:
+            seats = np.atleast_1d(np.asarray(hero_seats))
+            if seats.dtype.kind not in "iu" or seats.ndim != 1:
+                raise TypeError("hero_seats must be an int or a 1-D array of ints")
+            if ((seats < 0) | (seats > 3)).any():
+                raise ValueError("hero seats are 0..3")
+            seats = [int(s) for s in seats]
+        self._core = _core.Env(
+            variant, mode, int(num_envs), backend, num_threads, int(seed), forms, bool(auto_reset),
+            opponents, seats, penalty,
+        )
+        self.num_envs = int(num_envs)
+        self.oracle_enabled = oracle
+        names, yaku, start = _core.variant_info(variant)
+        self.spec = Spec(
+            variant=variant,
+            mode=mode,
+            num_envs=self.num_envs,
+            num_actions=len(names),
+            action_names=tuple(names),
+            yaku_names=tuple(yaku),
+            starting_points=start,
+            observation=tuple(forms),
+            fields={f: fields(f)[1] for f in [*forms, *(["oracle"] if oracle else [])]},
+        )
+        buf = self._core.buffers()
+        for a in buf.values():
+            a.flags.writeable = False
+        obs = {}
+        for form in forms:
+            for name, view in split_record(buf[f"raw_{form}"], form).items():
+                # The scalars appear in both forms: one key, from the first form asked.
+                obs.setdefault(name, view)
+        info = {k: buf[k] for k in (
+            "illegal", "hero", "episode_id", "events", "winners", "deal_in", "yaku", "rounds",
+            "final_scores", "final_rank",
+        )}
+        env_id = np.arange(self.num_envs, dtype=np.int32)
+        env_id.flags.writeable = False
+        info["env_id"] = env_id
+        self._ts = TimeStep(
+            observation=obs,
+            legal_action_mask=buf["legal_action_mask"],
+            current_player=buf["current_player"],
+            rewards=buf["rewards"],
+            terminated=buf["terminated"],
+            truncated=buf["truncated"],
+            info=info,
+        )
+
+    # -- stepping --------------------------------------------------------------------------
+
+    def reset(self, seed: Optional[int] = None, seeds: Optional[Sequence[int]] = None) -> TimeStep:
+        """New games. Without arguments each reset deals new games from `make`'s seed; `seed`
+        gives the same games every time; `seeds` gives each env's 64-bit seed (the same seed deals
+        the same game, e.g. for duplicate play)."""
+        if seeds is not None:
+            s = np.asarray(seeds)
+            if s.dtype.kind not in "iu" or s.shape != (self.num_envs,):
+                raise ValueError(f"seeds must be {self.num_envs} integers")
+            if (s < 0).any():
+                raise ValueError("seeds must be non-negative")
+            self._core.reset(None, [int(x) for x in s])
+        else:
+            if seed is not None and not 0 <= seed < 2**64:
+                raise ValueError(f"seed must be in 0..2**64, not {seed}")
+            self._core.reset(seed, None)
+        return self._ts
+
+    def step(self, actions: Any) -> TimeStep:
+        """One decision per env (`actions`: (num_envs,) integers). An id outside 0..A-1 raises;
+        an illegal id in range ends that env's game with the penalty (`info["illegal"]`)."""
+        a = np.asarray(actions)
+        if a.dtype.kind not in "iu":
+            raise TypeError(f"actions must be integers, not {a.dtype}")
+        if a.shape != (self.num_envs,):
+            raise ValueError(f"actions has shape {a.shape}; this env needs ({self.num_envs},)")
+        if a.dtype == np.uint64 and (a > np.iinfo(np.int64).max).any():
+            raise ValueError("an action id is out of range")
+        self._core.step(np.ascontiguousarray(a, dtype=np.int64))
+        return self._ts
+
+    @property
+    def timestep(self) -> TimeStep:
+        """The last reset's or step's outcome (the object they return)."""
+        return self._ts
+
+    # -- looking -----------------------------------------------------------------------------
+
+    def observe(self, players: Any = None, form: str = "planes") -> dict:
+        """`form` observations of any seat: `players` an int seat for every env, a (num_envs,)
+        array of seats, or None for each env's current player. New arrays (not overwritten)."""
+        if form not in OBSERVATION_FORMS + ("analysis",):
+            raise ValueError(f"unknown observation form {form!r}")
+        return split_record(self._core.observe(form, self._seats(players)), form)
+
+    def observe_all(self, form: str = "planes") -> dict:
+        """Every seat's observation: arrays of shape (num_envs, 4, ...) (critics)."""
+        per_seat = [self.observe(s, form) for s in range(4)]
+        return {k: np.stack([p[k] for p in per_seat], axis=1) for k in per_seat[0]}
+
+    def oracle(self, players: Any = None) -> dict:
+        """What `players` cannot see (other hands, the wall, ura dora...): for critics and
+        analysis, never for acting. Needs `make(..., oracle=True)`."""
+        if not self.oracle_enabled:
+            raise RuntimeError("make the env with oracle=True to read the oracle")
+        return split_record(self._core.observe("oracle", self._seats(players)), "oracle")
+
+    def agent_actions(self, agent: str) -> np.ndarray:
+        """What the built-in `agent` would play for each env's current player."""
+        return self._core.agent_actions(agent)
+
+    def _seats(self, players: Any) -> list:
+        if players is None:
+            return [4] * self.num_envs
+        p = np.asarray(players)
+        if p.dtype.kind not in "iu":
+            raise TypeError(f"players must be seats (ints), not {p.dtype}")
+        if p.ndim == 0:
+            p = np.full(self.num_envs, int(p))
+        if p.shape != (self.num_envs,):
+            raise ValueError(f"players must be one seat or {self.num_envs} seats, not {p.shape}")
+        if ((p < 0) | (p > 3)).any():
+            raise ValueError("seats are 0..3")
+        return [int(x) for x in p]
+
+    # -- saving ------------------------------------------------------------------------------
+
+    def get_state(self) -> np.ndarray:
+        """Every game as (num_envs, W) uint32 words (pickle-able), for `set_state`."""
+        return self._core.get_state()
+
+    def set_state(self, state: np.ndarray) -> TimeStep:
+        """Restores games from `get_state` of an env of this variant and size; an edited state is
+        refused. Returns the TimeStep as of the save."""
+        s = np.asarray(state)
+        if s.dtype != np.uint32:
+            raise TypeError(f"a state is uint32 words, not {s.dtype}")
+        self._core.set_state(np.ascontiguousarray(s))
+        return self._ts
+
+    def close(self) -> None:
+        """Frees the games; later calls raise."""
+        self._core.close()
+
+    @property
+    def closed(self) -> bool:
+        return self._core.closed
+
+    def __enter__(self) -> Env:
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
+
+    def __repr__(self) -> str:
+        return f"rinshan.Env({self.spec.variant!r}, mode={self.spec.mode!r}, num_envs={self.num_envs})"
+
+
+def make(variant: str = "red", **kwargs) -> Env:
+    """A batch of games (see `Env` for the arguments): `rinshan.make("red", num_envs=4096)`."""
+    return Env(variant, **kwargs)

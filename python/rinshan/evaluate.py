@@ -1,0 +1,89 @@
+"""Duplicate evaluation of a policy against three built-in agents."""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from typing import Callable, Sequence, Union
+
+import numpy as np
+
+from .env import Env, TimeStep
+
+Policy = Union[str, Callable[[TimeStep], np.ndarray]]
+
+
+@dataclasses.dataclass
+class Evaluation:
+    """A policy's results over duplicate games (each wall set played from all four seats)."""
+
+    games: int
+    average_rank: float
+    """Mean final place, 1 (first) to 4."""
+    ci95: float
+    """Half-width of the 95% interval of `average_rank`, over wall sets."""
+    rank_counts: list
+    """Games finished first, second, third and fourth."""
+    average_score: float
+    illegal: int
+    """Games the policy ended with an illegal action."""
+
+    def __str__(self) -> str:
+        return (f"average rank {self.average_rank:.3f} ± {self.ci95:.3f} over {self.games} games "
+                f"(places {self.rank_counts}, average score {self.average_score:.0f}, "
+                f"illegal {self.illegal})")
+
+
+def evaluate(
+    policy: Policy,
+    opponents: str = "rule",
+    games: int = 1000,
+    seed: int = 0,
+    variant: str = "red",
+    mode: str = "half",
+    observation: Sequence[str] = ("planes",),
+    num_threads=None,
+) -> Evaluation:
+    """Plays `policy` against three `opponents` agents over `games` games (rounded up to a
+    multiple of 4): each set of walls is played four times with the policy in each seat.
+
+    `policy` is a built-in agent's name or a function from the TimeStep (observation of each env's
+    current player and its legal mask) to one action per env; only the rows of envs where the
+    policy is to act are used.
+    """
+    if games < 1:
+        raise ValueError("games must be at least 1")
+    sets = math.ceil(games / 4)
+    n = sets * 4
+    env = Env(variant, mode=mode, num_envs=n, observation=observation, auto_reset=False,
+              opponents=opponents, hero_seats=np.tile(np.arange(4), sets), seed=seed,
+              num_threads=num_threads)
+    set_seeds = np.random.SeedSequence(seed).generate_state(sets, np.uint64)
+    ts = env.reset(seeds=np.repeat(set_seeds, 4))
+    hero = np.tile(np.arange(4), sets)
+    rank = np.full(n, -1)
+    score = np.zeros(n)
+    illegal = np.zeros(n, dtype=bool)
+    while (rank < 0).any():
+        if isinstance(policy, str):
+            actions = env.agent_actions(policy)
+        else:
+            actions = np.asarray(policy(ts))
+        ts = env.step(actions)
+        ended = ts.terminated & (rank < 0)
+        idx = np.nonzero(ended)[0]
+        rank[idx] = ts.info["final_rank"][idx, hero[idx]]
+        score[idx] = ts.info["final_scores"][idx, hero[idx]]
+        illegal[idx] = ts.info["illegal"][idx]
+    env.close()
+    places = rank + 1
+    per_set = places.reshape(sets, 4).mean(axis=1)
+    ci = 1.96 * per_set.std(ddof=1) / math.sqrt(sets) if sets > 1 else float("inf")
+    return Evaluation(
+        games=n,
+        average_rank=float(places.mean()),
+        ci95=float(ci),
+        rank_counts=[int((places == k).sum()) for k in range(1, 5)],
+        average_score=float(score.mean()),
+        illegal=int(illegal.sum()),
+    )

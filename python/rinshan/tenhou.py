@@ -1,0 +1,37 @@
+"""Tenhou logs (tenhou.net/6 JSON) as records for supervised learning, and replay checks."""
+
+from __future__ import annotations
+
+from typing import Sequence, Union
+
+from . import _core
+from .env import split_record
+
+
+def read(path: str, observation: Union[str, Sequence[str]] = ("planes",)) -> dict:
+    """Every decision of every round of the log at `path`, replayed through the red variant.
+
+    Returns `{"path", "rule", "red_fives", "names", "rounds"}`; each round has `kyoku`, `honba`,
+    `sticks`, `scores`, and per decision (claim prompts included) `seat`, `action` (the id the
+    player chose), `what` (the log's move), `legal_action_mask` and `observation` (the deciding
+    seat's view, one dict of arrays per decision axis). A round that cannot be replayed has
+    `error` instead of the decisions.
+    """
+    forms = [observation] if isinstance(observation, str) else list(observation)
+    game = _core.tenhou_read(str(path), forms)
+    for r in game["rounds"]:
+        if "observation" in r:
+            merged = {}
+            for form, raw in r["observation"].items():
+                for k, v in split_record(raw, form).items():
+                    merged.setdefault(k, v)
+            r["observation"] = merged
+    return game
+
+
+def replay(paths: Union[str, Sequence[str]], backend: str = "cpu") -> dict:
+    """Replays logs (files or folders) and compares every round with the log: counts of what
+    agrees (`all_agree`) and every mismatch as text."""
+    if isinstance(paths, str):
+        paths = [paths]
+    return _core.replay([str(p) for p in paths], backend)

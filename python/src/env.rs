@@ -1,0 +1,520 @@
+//! `rinshan._core.Env`: a batch of games whose outputs are numpy arrays allocated once and
+//! rewritten in place by every reset and step, with the GIL released while Rust works.
+
+use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArrayMethods};
+use pyo3::exceptions::{PyRuntimeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use rinshan::agents::Agent;
+use rinshan::env::{env_seed, Backend, Config, Env, EnvError, Mode, Observer, Step};
+use rinshan::observe::Form;
+use rinshan::Variant;
+
+pub(crate) fn env_error(e: EnvError) -> PyErr {
+    match e {
+        EnvError::Gpu(g) => PyRuntimeError::new_err(g.to_string()),
+        other => PyValueError::new_err(other.to_string()),
+    }
+}
+
+pub(crate) fn parse<T: std::str::FromStr>(what: &str, name: &str) -> PyResult<T>
+where
+    T::Err: std::fmt::Display,
+{
+    name.parse::<T>()
+        .map_err(|e| PyValueError::new_err(format!("{what}: {e}")))
+}
+
+/// Bools of each byte value, low bit first: a mask byte expands with one copy.
+static BITS: [[bool; 8]; 256] = {
+    let mut t = [[false; 8]; 256];
+    let mut v = 0;
+    while v < 256 {
+        let mut b = 0;
+        while b < 8 {
+            t[v][b] = (v >> b) & 1 == 1;
+            b += 1;
+        }
+        v += 1;
+    }
+    t
+};
+
+/// Writes the first `out.len()` bits of `words` as bools.
+fn expand_bits(words: &[u32], out: &mut [bool]) {
+    for (chunk, byte) in out.chunks_mut(8).zip(words.iter().flat_map(|w| w.to_le_bytes())) {
+        chunk.copy_from_slice(&BITS[usize::from(byte)][..chunk.len()]);
+    }
+}
+
+/// The arrays every reset and step rewrites (one row per env).
+struct Outputs {
+    mask: Py<PyArray2<bool>>,
+    current_player: Py<PyArray1<i32>>,
+    rewards: Py<PyArray2<f32>>,
+    terminated: Py<PyArray1<bool>>,
+    truncated: Py<PyArray1<bool>>,
+    illegal: Py<PyArray1<bool>>,
+    hero: Py<PyArray1<bool>>,
+    episode_id: Py<PyArray1<i64>>,
+    events: Py<PyArray1<u32>>,
+    winners: Py<PyArray2<bool>>,
+    deal_in: Py<PyArray1<i8>>,
+    yaku: Py<PyArray2<bool>>,
+    rounds: Py<PyArray1<i32>>,
+    final_scores: Py<PyArray2<i32>>,
+    final_rank: Py<PyArray2<i8>>,
+    /// One raw byte record per env for each observation form written every step.
+    observations: Vec<(Form, Py<PyArray2<u8>>)>,
+}
+
+/// Mutable views of [`Outputs`] for one fill, taken with the GIL held and written without it.
+struct Slices<'a> {
+    mask: &'a mut [bool],
+    current_player: &'a mut [i32],
+    rewards: &'a mut [f32],
+    terminated: &'a mut [bool],
+    truncated: &'a mut [bool],
+    illegal: &'a mut [bool],
+    hero: &'a mut [bool],
+    episode_id: &'a mut [i64],
+    events: &'a mut [u32],
+    winners: &'a mut [bool],
+    deal_in: &'a mut [i8],
+    yaku: &'a mut [bool],
+    rounds: &'a mut [i32],
+    final_scores: &'a mut [i32],
+    final_rank: &'a mut [i8],
+    observations: Vec<(Form, &'a mut [u8])>,
+}
+
+/// Per-env bookkeeping the kernel does not keep: the running score change of each game (its final
+/// scores, since the kernel deals the next game in the step that ends one) and episode ids.
+struct Games {
+    points: Vec<[f64; 4]>,
+    episode: Vec<i64>,
+    /// A finished game without auto-reset: its final rows stay as they were.
+    finished: Vec<bool>,
+    start: f64,
+}
+
+/// A batch of games (see `rinshan.make`).
+#[pyclass(module = "rinshan._core", name = "Env")]
+pub struct PyEnv {
+    env: Option<Env>,
+    outputs: Outputs,
+    games: Games,
+    actions: Vec<u32>,
+    /// Per env: which seats the caller plays (hero mode), a bit per seat.
+    caller_seats: Vec<u8>,
+    num_actions: usize,
+    num_yaku: usize,
+}
+
+fn slice<'a, T: numpy::Element, D: numpy::ndarray::Dimension>(
+    a: &'a Bound<'_, numpy::PyArray<T, D>>,
+) -> PyResult<&'a mut [T]> {
+    // SAFETY: the arrays are made by this module, C-contiguous and never resized; Python sees
+    // them read-only, so only this fill writes them, and it holds the env's `&mut self`.
+    unsafe { a.as_slice_mut() }.map_err(|e| PyRuntimeError::new_err(format!("output array: {e}")))
+}
+
+impl PyEnv {
+    fn env(&mut self) -> PyResult<&mut Env> {
+        self.env
+            .as_mut()
+            .ok_or_else(|| PyRuntimeError::new_err("this env is closed: make a new one with rinshan.make"))
+    }
+
+    /// Runs `job` (a reset or a step of the env) without the GIL, then writes its outcome into
+    /// the output arrays.
+    fn run<'py>(
+        &mut self,
+        py: Python<'py>,
+        begin: Begin,
+        job: impl FnOnce(&mut Env, &[u32]) -> Result<(), EnvError> + Send,
+    ) -> PyResult<()> {
+        let o = &self.outputs;
+        let (mask, current_player, rewards) = (o.mask.bind(py), o.current_player.bind(py), o.rewards.bind(py));
+        let (terminated, truncated, illegal) = (o.terminated.bind(py), o.truncated.bind(py), o.illegal.bind(py));
+        let (hero, episode_id, events) = (o.hero.bind(py), o.episode_id.bind(py), o.events.bind(py));
+        let (winners, deal_in, yaku, rounds) = (
+            o.winners.bind(py),
+            o.deal_in.bind(py),
+            o.yaku.bind(py),
+            o.rounds.bind(py),
+        );
+        let (final_scores, final_rank) = (o.final_scores.bind(py), o.final_rank.bind(py));
+        let obs: Vec<(Form, Bound<'py, PyArray2<u8>>)> =
+            o.observations.iter().map(|(f, a)| (*f, a.bind(py).clone())).collect();
+        let mut out = Slices {
+            mask: slice(mask)?,
+            current_player: slice(current_player)?,
+            rewards: slice(rewards)?,
+            terminated: slice(terminated)?,
+            truncated: slice(truncated)?,
+            illegal: slice(illegal)?,
+            hero: slice(hero)?,
+            episode_id: slice(episode_id)?,
+            events: slice(events)?,
+            winners: slice(winners)?,
+            deal_in: slice(deal_in)?,
+            yaku: slice(yaku)?,
+            rounds: slice(rounds)?,
+            final_scores: slice(final_scores)?,
+            final_rank: slice(final_rank)?,
+            observations: obs.iter().map(|(f, a)| Ok((*f, slice(a)?))).collect::<PyResult<_>>()?,
+        };
+        let (na, ny) = (self.num_actions, self.num_yaku);
+        let Some(env) = self.env.as_mut() else {
+            return Err(PyRuntimeError::new_err(
+                "this env is closed: make a new one with rinshan.make",
+            ));
+        };
+        let games = &mut self.games;
+        let actions = &self.actions;
+        let callers = &self.caller_seats;
+        py.detach(move || -> Result<(), EnvError> {
+            job(env, actions)?;
+            match begin {
+                Begin::Step => {}
+                Begin::New => games.points.iter_mut().for_each(|p| *p = [0.0; 4]),
+                Begin::Restored => {
+                    // A restored game's points so far are its score changes (rewards add up
+                    // to them, step by step).
+                    for (p, t) in games.points.iter_mut().zip(env.tables()?) {
+                        *p = t.scores.map(|s| (f64::from(s) - games.start) / 100.0);
+                    }
+                }
+            }
+            if !matches!(begin, Begin::Step) {
+                games.finished.iter_mut().for_each(|f| *f = false);
+            }
+            let auto_reset = env.config().auto_reset;
+            fill(env.last(), &mut out, games, callers, (na, ny), auto_reset);
+            for (form, raw) in out.observations.iter_mut() {
+                env.observe_into(*form, Observer::Current, raw)?;
+            }
+            Ok(())
+        })
+        .map_err(env_error)
+    }
+}
+
+/// What a run starts from: new games, restored games, or the games as they were.
+#[derive(Clone, Copy)]
+enum Begin {
+    New,
+    Restored,
+    Step,
+}
+
+/// Writes one step's outcome into the arrays and keeps the per-game bookkeeping (`sizes`: the
+/// number of actions and of yaku).
+fn fill(step: &Step, out: &mut Slices, games: &mut Games, callers: &[u8], sizes: (usize, usize), auto_reset: bool) {
+    let (na, ny) = sizes;
+    let b = step.current_player.len();
+    for i in 0..b {
+        expand_bits(&step.legal_action_mask[i], &mut out.mask[i * na..(i + 1) * na]);
+        let seat = step.current_player[i];
+        out.current_player[i] = seat as i32;
+        out.rewards[i * 4..i * 4 + 4].copy_from_slice(&step.rewards[i]);
+        out.terminated[i] = step.terminated[i];
+        out.truncated[i] = step.truncated[i];
+        out.illegal[i] = step.illegal[i];
+        out.hero[i] = callers.get(i).is_none_or(|c| c >> seat & 1 == 1);
+        out.events[i] = step.events[i];
+        for p in 0..4 {
+            out.winners[i * 4 + p] = step.winners[i] >> p & 1 == 1;
+        }
+        out.deal_in[i] = step.deal_in[i] as i8 - 1;
+        expand_bits(&step.yaku[i], &mut out.yaku[i * ny..(i + 1) * ny]);
+        out.rounds[i] = step.rounds[i] as i32;
+        out.episode_id[i] = games.episode[i];
+        if games.finished[i] {
+            continue;
+        }
+        if !step.illegal[i] {
+            for p in 0..4 {
+                games.points[i][p] += f64::from(step.rewards[i][p]);
+            }
+        }
+        let (scores, ranks) = (
+            &mut out.final_scores[i * 4..i * 4 + 4],
+            &mut out.final_rank[i * 4..i * 4 + 4],
+        );
+        if step.terminated[i] {
+            for p in 0..4 {
+                scores[p] = (games.start + games.points[i][p] * 100.0).round() as i32;
+                ranks[p] = step.ranks[i][p] as i8;
+            }
+            games.points[i] = [0.0; 4];
+            // The next game of this env gets the next id of its residue class: ids stay unique.
+            games.episode[i] += b as i64;
+            games.finished[i] = !auto_reset;
+        } else {
+            scores.fill(0);
+            ranks.fill(-1);
+        }
+    }
+}
+
+fn form_of(name: &str) -> PyResult<Form> {
+    Form::ALL.into_iter().find(|f| f.name() == name).ok_or_else(|| {
+        PyValueError::new_err(format!(
+            "unknown observation form `{name}` (known: {})",
+            Form::ALL.map(Form::name).join(", ")
+        ))
+    })
+}
+
+#[pymethods]
+impl PyEnv {
+    #[new]
+    #[pyo3(signature = (variant, mode, num_envs, backend, num_threads, seed, forms, auto_reset, opponents, hero_seats, penalty))]
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        py: Python<'_>,
+        variant: &str,
+        mode: &str,
+        num_envs: usize,
+        backend: &str,
+        num_threads: Option<usize>,
+        seed: u64,
+        forms: Vec<String>,
+        auto_reset: bool,
+        opponents: Option<&str>,
+        hero_seats: Option<Vec<u32>>,
+        penalty: Option<f32>,
+    ) -> PyResult<PyEnv> {
+        let variant: Variant = parse("variant", variant)?;
+        let mode: Mode = parse("mode", mode)?;
+        let backend: Backend = parse("backend", backend)?;
+        let forms = forms.iter().map(|f| form_of(f)).collect::<PyResult<Vec<Form>>>()?;
+        if forms.contains(&Form::Oracle) {
+            return Err(PyValueError::new_err(
+                "the oracle is not an observation: ask for it with env.oracle()",
+            ));
+        }
+        let agents = match (opponents, hero_seats) {
+            (None, None) => Vec::new(),
+            (None, Some(_)) => {
+                return Err(PyValueError::new_err(
+                    "hero_seats needs opponents (random, rule, greedy or defensive)",
+                ))
+            }
+            (Some(name), seats) => {
+                let agent: Agent = parse("opponents", name)?;
+                let seats = seats.unwrap_or_else(|| vec![0]);
+                if seats.len() != 1 && seats.len() != num_envs {
+                    return Err(PyValueError::new_err(format!(
+                        "hero_seats has {} entries: give one seat, or one per env ({num_envs})",
+                        seats.len()
+                    )));
+                }
+                if let Some(s) = seats.iter().find(|&&s| s > 3) {
+                    return Err(PyValueError::new_err(format!("hero seat {s}: seats are 0..3")));
+                }
+                seats
+                    .iter()
+                    .map(|&h| std::array::from_fn(|p| (p as u32 != h).then_some(agent)))
+                    .collect()
+            }
+        };
+        let caller_seats: Vec<u8> = (0..if agents.is_empty() { 0 } else { num_envs })
+            .map(|i| {
+                let seats: &[Option<Agent>; 4] = &agents[if agents.len() == 1 { 0 } else { i }];
+                (0..4).filter(|&p| seats[p].is_none()).map(|p| 1u8 << p).sum()
+            })
+            .collect();
+        let config = Config {
+            mode,
+            backend,
+            seed,
+            auto_reset,
+            threads: num_threads,
+            penalty,
+            agents,
+            ..Config::new(variant, num_envs)
+        };
+        let env = py.detach(|| Env::new(config)).map_err(env_error)?;
+        let b = num_envs;
+        let na = env.num_actions() as usize;
+        let ny = rinshan::env::yaku_names(variant).len();
+        let outputs = Outputs {
+            mask: PyArray2::zeros(py, [b, na], false).unbind(),
+            current_player: PyArray1::zeros(py, b, false).unbind(),
+            rewards: PyArray2::zeros(py, [b, 4], false).unbind(),
+            terminated: PyArray1::zeros(py, b, false).unbind(),
+            truncated: PyArray1::zeros(py, b, false).unbind(),
+            illegal: PyArray1::zeros(py, b, false).unbind(),
+            hero: PyArray1::zeros(py, b, false).unbind(),
+            episode_id: PyArray1::zeros(py, b, false).unbind(),
+            events: PyArray1::zeros(py, b, false).unbind(),
+            winners: PyArray2::zeros(py, [b, 4], false).unbind(),
+            deal_in: PyArray1::zeros(py, b, false).unbind(),
+            yaku: PyArray2::zeros(py, [b, ny], false).unbind(),
+            rounds: PyArray1::zeros(py, b, false).unbind(),
+            final_scores: PyArray2::zeros(py, [b, 4], false).unbind(),
+            final_rank: PyArray2::zeros(py, [b, 4], false).unbind(),
+            observations: forms
+                .iter()
+                .map(|&f| (f, PyArray2::zeros(py, [b, f.bytes()], false).unbind()))
+                .collect(),
+        };
+        Ok(PyEnv {
+            env: Some(env),
+            outputs,
+            games: Games {
+                points: vec![[0.0; 4]; b],
+                episode: (0..b as i64).collect(),
+                finished: vec![false; b],
+                start: f64::from(variant.starting_points()),
+            },
+            actions: vec![0; b],
+            caller_seats,
+            num_actions: na,
+            num_yaku: ny,
+        })
+    }
+
+    /// The output arrays by name (the same objects after every reset and step).
+    fn buffers<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        let o = &self.outputs;
+        d.set_item("legal_action_mask", o.mask.bind(py))?;
+        d.set_item("current_player", o.current_player.bind(py))?;
+        d.set_item("rewards", o.rewards.bind(py))?;
+        d.set_item("terminated", o.terminated.bind(py))?;
+        d.set_item("truncated", o.truncated.bind(py))?;
+        d.set_item("illegal", o.illegal.bind(py))?;
+        d.set_item("hero", o.hero.bind(py))?;
+        d.set_item("episode_id", o.episode_id.bind(py))?;
+        d.set_item("events", o.events.bind(py))?;
+        d.set_item("winners", o.winners.bind(py))?;
+        d.set_item("deal_in", o.deal_in.bind(py))?;
+        d.set_item("yaku", o.yaku.bind(py))?;
+        d.set_item("rounds", o.rounds.bind(py))?;
+        d.set_item("final_scores", o.final_scores.bind(py))?;
+        d.set_item("final_rank", o.final_rank.bind(py))?;
+        for (form, a) in &o.observations {
+            d.set_item(format!("raw_{}", form.name()), a.bind(py))?;
+        }
+        Ok(d)
+    }
+
+    /// New games: from `make`'s seed and a count of resets when `seed` is None, else env i from
+    /// `env_seed(seed, i, 0)`; `seeds` gives each env's 64-bit seed directly.
+    #[pyo3(signature = (seed=None, seeds=None))]
+    fn reset(&mut self, py: Python<'_>, seed: Option<u64>, seeds: Option<Vec<u64>>) -> PyResult<()> {
+        let b = self.env()?.batch();
+        let seeds = match (seed, seeds) {
+            (Some(_), Some(_)) => return Err(PyValueError::new_err("give seed or seeds, not both")),
+            (Some(s), None) => Some((0..b as u64).map(|i| env_seed(s, i, 0)).collect::<Vec<u64>>()),
+            (None, seeds) => seeds,
+        };
+        for (i, e) in self.games.episode.iter_mut().enumerate() {
+            *e = i as i64;
+        }
+        self.run(py, Begin::New, move |env, _| match &seeds {
+            Some(s) => env.reset_with_seeds(s).map(|_| ()),
+            None => env.reset().map(|_| ()),
+        })
+    }
+
+    /// One decision per env: `actions[i]` is env i's action id (int64). Out-of-range ids raise;
+    /// an illegal id in range ends that game with the penalty.
+    fn step(&mut self, py: Python<'_>, actions: PyReadonlyArray1<'_, i64>) -> PyResult<()> {
+        let b = self.env()?.batch();
+        let a = actions
+            .as_slice()
+            .map_err(|e| PyValueError::new_err(format!("actions: {e}")))?;
+        if a.len() != b {
+            return Err(PyValueError::new_err(format!(
+                "actions has {} entries for {b} envs: give exactly one per env",
+                a.len()
+            )));
+        }
+        let na = self.num_actions as i64;
+        if let Some(i) = a.iter().position(|&x| !(0..na).contains(&x)) {
+            return Err(PyValueError::new_err(format!(
+                "action {} of env {i} is out of range: action ids are 0..{}",
+                a[i],
+                na - 1
+            )));
+        }
+        for (dst, &src) in self.actions.iter_mut().zip(a) {
+            *dst = src as u32;
+        }
+        self.run(py, Begin::Step, |env, actions| env.step(actions).map(|_| ()))
+    }
+
+    /// One `form` record per env for the seats in `seats` (0..3 each; 4 = the current player):
+    /// a new (B, bytes) uint8 array.
+    fn observe<'py>(&mut self, py: Python<'py>, form: &str, seats: Vec<u32>) -> PyResult<Bound<'py, PyArray2<u8>>> {
+        let form = form_of(form)?;
+        let env = self.env()?;
+        let b = env.batch();
+        let out = PyArray2::<u8>::zeros(py, [b, form.bytes()], false);
+        let raw = slice(&out)?;
+        py.detach(|| env.observe_into(form, Observer::Seats(&seats), raw))
+            .map_err(env_error)?;
+        Ok(out)
+    }
+
+    /// The action the built-in `agent` would choose for each env's current player.
+    fn agent_actions<'py>(&mut self, py: Python<'py>, agent: &str) -> PyResult<Bound<'py, PyArray1<i64>>> {
+        let agent: Agent = parse("agent", agent)?;
+        let env = self.env()?;
+        let actions = py.detach(|| env.agent_actions(&[[agent; 4]])).map_err(env_error)?;
+        Ok(PyArray1::from_vec(py, actions.into_iter().map(i64::from).collect()))
+    }
+
+    /// Every env's game as uint32 words (B, W): the kernel state and a check pair.
+    fn get_state<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<u32>>> {
+        let env = self.env()?;
+        let (b, w) = (env.batch(), env.saved_words());
+        let words = py.detach(|| env.save_states()).map_err(env_error)?;
+        PyArray1::from_vec(py, words).reshape([b, w])
+    }
+
+    /// Restores games from `get_state` (this variant and batch size).
+    fn set_state(&mut self, py: Python<'_>, state: PyReadonlyArray2<'_, u32>) -> PyResult<()> {
+        let env = self.env()?;
+        let (b, w) = (env.batch(), env.saved_words());
+        if state.shape() != [b, w] {
+            return Err(PyValueError::new_err(format!(
+                "state has shape {:?}; this env's is ({b}, {w})",
+                state.shape()
+            )));
+        }
+        let words = state
+            .as_slice()
+            .map_err(|e| PyValueError::new_err(format!("state: {e}")))?
+            .to_vec();
+        self.run(py, Begin::Restored, move |env, _| env.load_states(&words).map(|_| ()))
+    }
+
+    /// Releases the env; later calls raise.
+    fn close(&mut self) {
+        self.env = None;
+    }
+
+    /// Whether `close` was called.
+    #[getter]
+    fn closed(&self) -> bool {
+        self.env.is_none()
+    }
+
+    /// Words of one env in `get_state`.
+    #[getter]
+    fn state_words(&mut self) -> PyResult<usize> {
+        Ok(self.env()?.saved_words())
+    }
+
+    /// The GPU adapter's name, or None on the CPU.
+    #[getter]
+    fn adapter(&mut self) -> PyResult<Option<String>> {
+        Ok(self.env()?.adapter())
+    }
+}

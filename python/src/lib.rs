@@ -1,0 +1,12 @@
+//! `rinshan._core`: the Rust side of the `rinshan` Python package (python/rinshan wraps it).
+
+use pyo3::prelude::*;
+
+mod env;
+mod tools;
+
+#[pymodule]
+fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<env::PyEnv>()?;
+    tools::register(m)
+}
