@@ -1,0 +1,211 @@
+"""The batched env's API: shapes and dtypes, determinism, buffers, state round trips, hero mode."""
+
+import pickle
+
+import numpy as np
+import pytest
+
+import rinshan
+
+
+def random_actions(ts, rng):
+    m = ts.legal_action_mask
+    return np.argmax(m * rng.random(m.shape), axis=1)
+
+
+def play(env, steps, seed=0):
+    rng = np.random.default_rng(seed)
+    ts = env.reset()
+    out = [ts.copy()]
+    for _ in range(steps):
+        ts = env.step(random_actions(ts, rng))
+        out.append(ts.copy())
+    return out
+
+
+@pytest.mark.parametrize("variant,actions", [("red", 87), ("no-red", 79)])
+def test_shapes_and_dtypes(variant, actions):
+    env = rinshan.make(variant, num_envs=5, observation=("planes", "tokens"), analysis=True,
+                       num_threads=1)
+    ts = env.reset()
+    assert ts.legal_action_mask.shape == (5, actions) and ts.legal_action_mask.dtype == bool
+    assert ts.current_player.shape == (5,) and ts.current_player.dtype == np.int32
+    assert ts.rewards.shape == (5, 4) and ts.rewards.dtype == np.float32
+    assert ts.terminated.dtype == bool and ts.truncated.dtype == bool
+    assert ts.observation["planes"].shape == (5, 64, 34)
+    assert ts.observation["planes"].dtype == np.uint8
+    assert ts.observation["scalars"].shape == (5, 48)
+    assert ts.observation["events"].shape == (5, 192, 4)
+    assert ts.observation["discard_shanten"].shape[0] == 5
+    assert env.spec.num_actions == actions == len(env.spec.action_names)
+    assert ts.info["final_rank"].shape == (5, 4) and ts.info["yaku"].shape[1] == len(
+        env.spec.yaku_names)
+    assert (ts.info["env_id"] == np.arange(5)).all()
+    # Every env has a legal action and the seat to act is a seat.
+    assert ts.legal_action_mask.any(axis=1).all()
+    assert set(ts.current_player) <= {0, 1, 2, 3}
+    for f in env.spec.fields["planes"]:
+        assert ts.observation[f.name].dtype == f.dtype and ts.observation[f.name].shape[1:] == f.shape
+
+
+def test_outputs_are_reused_read_only_views():
+    env = rinshan.make(num_envs=3, num_threads=1)
+    ts = env.reset()
+    ts2 = env.step(random_actions(ts, np.random.default_rng(1)))
+    assert ts is ts2
+    assert not ts.legal_action_mask.flags.writeable
+    with pytest.raises(ValueError):
+        ts.rewards[0, 0] = 1.0
+
+
+def test_same_seed_same_games_and_thread_counts_agree():
+    a = play(rinshan.make(num_envs=64, seed=3, num_threads=1), 300)
+    b = play(rinshan.make(num_envs=64, seed=3, num_threads=2), 300)
+    c = play(rinshan.make(num_envs=64, seed=4, num_threads=2), 300)
+    for x, y in zip(a, b):
+        assert (x.observation["planes"] == y.observation["planes"]).all()
+        assert (x.rewards == y.rewards).all() and (x.legal_action_mask == y.legal_action_mask).all()
+    assert any((x.observation["planes"] != z.observation["planes"]).any() for x, z in zip(a, c))
+
+
+def test_reset_with_a_seed_repeats_and_without_deals_new_games():
+    env = rinshan.make(num_envs=8, num_threads=1)
+    first = env.reset(seed=5).copy()
+    again = env.reset(seed=5).copy()
+    fresh = env.reset().copy()
+    assert (first.observation["planes"] == again.observation["planes"]).all()
+    assert (first.observation["planes"] != fresh.observation["planes"]).any()
+
+
+def test_observe_matches_the_step_observation_and_seats_differ():
+    env = rinshan.make(num_envs=6, observation=("planes", "tokens"), num_threads=1)
+    ts = env.reset(seed=2)
+    for _ in range(40):
+        ts = env.step(random_actions(ts, np.random.default_rng(0)))
+    now = env.observe()
+    for k in ("planes", "scalars"):
+        assert (now[k] == ts.observation[k]).all()
+    seats = ts.current_player
+    assert (env.observe(seats)["planes"] == ts.observation["planes"]).all()
+    tok = env.observe(seats, form="tokens")
+    assert (tok["hand"] == ts.observation["hand"]).all()
+    other = env.observe((seats + 1) % 4)
+    assert (other["planes"] != ts.observation["planes"]).any()
+    allseats = env.observe_all()
+    assert allseats["planes"].shape == (6, 4, 64, 34)
+    assert (allseats["planes"][np.arange(6), seats] == ts.observation["planes"]).all()
+
+
+def test_oracle_shows_hidden_hands_only_when_asked():
+    env = rinshan.make(num_envs=2, num_threads=1)
+    env.reset()
+    with pytest.raises(RuntimeError, match="oracle=True"):
+        env.oracle()
+    env = rinshan.make(num_envs=2, oracle=True, num_threads=1)
+    env.reset(seed=1)
+    o = env.oracle()
+    hands = o["others_hand"].reshape(2, 3, 34).sum(axis=-1)
+    # At the deal the three others hold 13 tiles each, or 14 for a dealer about to discard.
+    assert set(hands.ravel()) <= {13, 14} and (hands.sum(axis=1) >= 39).all()
+
+
+def test_get_state_pickles_and_restores_the_same_future():
+    env = rinshan.make(num_envs=16, seed=9, num_threads=1)
+    ts = env.reset()
+    rng = np.random.default_rng(4)
+    for _ in range(100):
+        ts = env.step(random_actions(ts, rng))
+    saved = pickle.loads(pickle.dumps(env.get_state()))
+    actions = []
+    future = []
+    for _ in range(200):
+        a = random_actions(ts, rng)
+        actions.append(a)
+        ts = env.step(a)
+        future.append(ts.copy())
+    other = rinshan.make(num_envs=16, seed=0, num_threads=2)
+    other.set_state(saved)
+    for a, want in zip(actions, future):
+        got = other.step(a)
+        assert (got.observation["planes"] == want.observation["planes"]).all()
+        assert (got.rewards == want.rewards).all()
+        assert (got.info["final_scores"] == want.info["final_scores"]).all()
+    edited = saved.copy()
+    edited[3, 10] ^= 1
+    with pytest.raises(ValueError, match="env 3: its check words do not match"):
+        other.set_state(edited)
+    with pytest.raises(ValueError, match="shape"):
+        other.set_state(saved[:5])
+
+
+def test_final_scores_and_ranks_where_games_end():
+    env = rinshan.make(num_envs=32, seed=1, num_threads=1)
+    ts = env.reset()
+    rng = np.random.default_rng(0)
+    sums = np.zeros((32, 4))
+    ended = 0
+    while ended < 40:
+        ts = env.step(random_actions(ts, rng))
+        sums += ts.rewards * ~ts.info["illegal"][:, None]
+        for i in np.nonzero(ts.terminated)[0]:
+            scores, rank = ts.info["final_scores"][i], ts.info["final_rank"][i]
+            assert sorted(rank) == [0, 1, 2, 3]
+            assert (scores == 25000 + np.round(sums[i] * 100)).all()
+            order = np.argsort(rank)
+            assert (np.diff(scores[order]) <= 0).all()
+            sums[i] = 0
+            ended += 1
+        live = ~ts.terminated
+        assert (ts.info["final_rank"][live] == -1).all()
+
+
+def test_episode_ids_are_unique_per_game():
+    env = rinshan.make(num_envs=4, num_threads=1)
+    ts = env.reset()
+    rng = np.random.default_rng(2)
+    seen = {}
+    for _ in range(4000):
+        ids = ts.info["episode_id"].copy()
+        ts = env.step(random_actions(ts, rng))
+        for i in range(4):
+            seen.setdefault(int(ids[i]), i)
+            assert seen[int(ids[i])] == i
+    assert len(seen) > 4
+
+
+def test_hero_mode_asks_only_the_hero():
+    env = rinshan.make(num_envs=16, opponents="greedy", hero_seats=np.arange(16) % 4,
+                       num_threads=1)
+    ts = env.reset(seed=1)
+    rng = np.random.default_rng(3)
+    steps = 0
+    for _ in range(2000):
+        hero = ts.info["hero"]
+        assert (ts.current_player[hero] == (np.arange(16) % 4)[hero]).all()
+        ts = env.step(random_actions(ts, rng))
+        steps += 1
+    assert ts.info["hero"].mean() > 0.5
+
+
+def test_evaluate_duplicate_rates_rule_over_random():
+    r = rinshan.evaluate("rule", opponents="random", games=40, seed=1, num_threads=1)
+    assert r.games == 40 and sum(r.rank_counts) == 40
+    assert r.average_rank < 1.5 and r.illegal == 0
+
+    def first_legal(ts):
+        return np.argmax(ts.legal_action_mask, axis=1)
+
+    r = rinshan.evaluate(first_legal, opponents="rule", games=20, seed=1, num_threads=1)
+    assert r.average_rank > 2.5 and r.ci95 > 0
+
+
+def test_hand_calculator_mirrors_the_cli():
+    assert rinshan.shanten("123m456p789s1122z")["shanten"] == 0
+    s = rinshan.score("234567m234p4566s", "6s", tsumo=True, riichi=True)
+    assert s["han"] == 4 and s["fu"] == 20 and s["points"]["total"] == 5200
+    with pytest.raises(ValueError, match="ippatsu needs riichi"):
+        rinshan.score("234567m234p4566s", "6s", ippatsu=True)
+    with pytest.raises(ValueError, match="5 copies"):
+        rinshan.shanten("11111m")
+    with pytest.raises(TypeError, match="unknown flag"):
+        rinshan.score("234567m234p4566s", "6s", tsumoo=True)
