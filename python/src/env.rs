@@ -111,6 +111,8 @@ pub struct PyEnv {
     num_yaku: usize,
 }
 
+// One array, one writer: the slice's exclusivity comes from the protocol below, not the borrow.
+#[allow(clippy::mut_from_ref)]
 fn slice<'a, T: numpy::Element, D: numpy::ndarray::Dimension>(
     a: &'a Bound<'_, numpy::PyArray<T, D>>,
 ) -> PyResult<&'a mut [T]> {

@@ -179,9 +179,12 @@ fn replay<'py>(py: Python<'py>, paths: Vec<String>, backend: &str) -> PyResult<B
     Ok(d)
 }
 
-/// `[(name, byte offset, dtype, shape, doc)]` of an observation form's record.
+/// One field as Python sees it: name, byte offset, dtype name, shape, doc.
+type FieldRow = (String, usize, String, Vec<usize>, String);
+
+/// The record size and the fields of an observation form.
 #[pyfunction]
-fn fields(form: &str) -> PyResult<(usize, Vec<(String, usize, String, Vec<usize>, String)>)> {
+fn fields(form: &str) -> PyResult<(usize, Vec<FieldRow>)> {
     let form = Form::ALL
         .into_iter()
         .find(|f| f.name() == form)
