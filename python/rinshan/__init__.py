@@ -14,6 +14,20 @@ from .hands import score, shanten
 from .tenhou import replay
 
 __all__ = [
-    "AGENTS", "FORMS", "MODES", "VARIANTS", "Env", "Evaluation", "Field", "Spec", "TimeStep",
-    "evaluate", "fields", "make", "replay", "score", "shanten", "tenhou",
+    "AGENTS",
+    "FORMS",
+    "MODES",
+    "VARIANTS",
+    "Env",
+    "Evaluation",
+    "Field",
+    "Spec",
+    "TimeStep",
+    "evaluate",
+    "fields",
+    "make",
+    "replay",
+    "score",
+    "shanten",
+    "tenhou",
 ]

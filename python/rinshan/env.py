@@ -9,7 +9,8 @@ through dlpack, whose buffers must not change underneath it.
 from __future__ import annotations
 
 import dataclasses
-from typing import Any, Optional, Sequence, Union
+from collections.abc import Sequence
+from typing import Any, Optional, Union
 
 import numpy as np
 
@@ -64,8 +65,10 @@ class Spec:
     fields: dict
 
     def describe(self) -> str:
-        lines = [f"rinshan {self.variant} ({self.mode}), {self.num_envs} envs, "
-                 f"{self.num_actions} actions"]
+        lines = [
+            f"rinshan {self.variant} ({self.mode}), {self.num_envs} envs, "
+            f"{self.num_actions} actions"
+        ]
         for form, fs in self.fields.items():
             lines.append(f"{form}:")
             for f in fs:
@@ -146,7 +149,9 @@ class Env:
         if num_envs < 1:
             raise ValueError(f"num_envs must be at least 1, not {num_envs}")
         if num_threads is not None and num_threads < 1:
-            raise ValueError(f"num_threads must be at least 1 (None = all cores), not {num_threads}")
+            raise ValueError(
+                f"num_threads must be at least 1 (None = all cores), not {num_threads}"
+            )
         if not 0 <= seed < 2**64:
             raise ValueError(f"seed must be in 0..2**64, not {seed}")
         forms = _forms(observation, analysis)
@@ -159,8 +164,17 @@ class Env:
                 raise ValueError("hero seats are 0..3")
             seats = [int(s) for s in seats]
         self._core = _core.Env(
-            variant, mode, int(num_envs), backend, num_threads, int(seed), forms, bool(auto_reset),
-            opponents, seats, penalty,
+            variant,
+            mode,
+            int(num_envs),
+            backend,
+            num_threads,
+            int(seed),
+            forms,
+            bool(auto_reset),
+            opponents,
+            seats,
+            penalty,
         )
         self.num_envs = int(num_envs)
         self.oracle_enabled = oracle
@@ -184,10 +198,21 @@ class Env:
             for name, view in split_record(buf[f"raw_{form}"], form).items():
                 # The scalars appear in both forms: one key, from the first form asked.
                 obs.setdefault(name, view)
-        info = {k: buf[k] for k in (
-            "illegal", "hero", "episode_id", "events", "winners", "deal_in", "yaku", "rounds",
-            "final_scores", "final_rank",
-        )}
+        info = {
+            k: buf[k]
+            for k in (
+                "illegal",
+                "hero",
+                "episode_id",
+                "events",
+                "winners",
+                "deal_in",
+                "yaku",
+                "rounds",
+                "final_scores",
+                "final_rank",
+            )
+        }
         env_id = np.arange(self.num_envs, dtype=np.int32)
         env_id.flags.writeable = False
         info["env_id"] = env_id
@@ -307,7 +332,9 @@ class Env:
         self.close()
 
     def __repr__(self) -> str:
-        return f"rinshan.Env({self.spec.variant!r}, mode={self.spec.mode!r}, num_envs={self.num_envs})"
+        return (
+            f"rinshan.Env({self.spec.variant!r}, mode={self.spec.mode!r}, num_envs={self.num_envs})"
+        )
 
 
 def make(variant: str = "red", **kwargs) -> Env:

@@ -4,7 +4,8 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from typing import Callable, Sequence, Union
+from collections.abc import Sequence
+from typing import Callable, Union
 
 import numpy as np
 
@@ -29,9 +30,11 @@ class Evaluation:
     """Games the policy ended with an illegal action."""
 
     def __str__(self) -> str:
-        return (f"average rank {self.average_rank:.3f} ± {self.ci95:.3f} over {self.games} games "
-                f"(places {self.rank_counts}, average score {self.average_score:.0f}, "
-                f"illegal {self.illegal})")
+        return (
+            f"average rank {self.average_rank:.3f} ± {self.ci95:.3f} over {self.games} games "
+            f"(places {self.rank_counts}, average score {self.average_score:.0f}, "
+            f"illegal {self.illegal})"
+        )
 
 
 def evaluate(
@@ -55,9 +58,17 @@ def evaluate(
         raise ValueError("games must be at least 1")
     sets = math.ceil(games / 4)
     n = sets * 4
-    env = Env(variant, mode=mode, num_envs=n, observation=observation, auto_reset=False,
-              opponents=opponents, hero_seats=np.tile(np.arange(4), sets), seed=seed,
-              num_threads=num_threads)
+    env = Env(
+        variant,
+        mode=mode,
+        num_envs=n,
+        observation=observation,
+        auto_reset=False,
+        opponents=opponents,
+        hero_seats=np.tile(np.arange(4), sets),
+        seed=seed,
+        num_threads=num_threads,
+    )
     set_seeds = np.random.SeedSequence(seed).generate_state(sets, np.uint64)
     ts = env.reset(seeds=np.repeat(set_seeds, 4))
     hero = np.tile(np.arange(4), sets)

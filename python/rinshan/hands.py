@@ -3,12 +3,24 @@
 from __future__ import annotations
 
 import json
-from typing import Optional, Sequence
+from collections.abc import Sequence
+from typing import Optional
 
 from . import _core
 
-FLAGS = ("tsumo", "riichi", "double_riichi", "ippatsu", "haitei", "houtei", "rinshan", "chankan",
-         "tenhou", "chiihou", "dealer")
+FLAGS = (
+    "tsumo",
+    "riichi",
+    "double_riichi",
+    "ippatsu",
+    "haitei",
+    "houtei",
+    "rinshan",
+    "chankan",
+    "tenhou",
+    "chiihou",
+    "dealer",
+)
 
 
 def shanten(hand: str) -> dict:
@@ -39,5 +51,8 @@ def score(
     if unknown:
         raise TypeError(f"unknown flag(s) {unknown}: choose from {FLAGS}")
     on = [f for f, v in flags.items() if v]
-    return json.loads(_core.score(variant, hand, win, on, round_wind, seat_wind, dora, ura,
-                                  list(melds), honba, sticks))
+    return json.loads(
+        _core.score(
+            variant, hand, win, on, round_wind, seat_wind, dora, ura, list(melds), honba, sticks
+        )
+    )

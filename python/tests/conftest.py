@@ -11,8 +11,12 @@ LOGS = REPO / "tests" / "data" / "tenhou"
 @pytest.fixture(scope="session")
 def cli():
     """The `rinshan` command built by cargo: the Rust side the package is checked against."""
-    for p in (os.environ.get("RINSHAN_CLI"), REPO / "target" / "release" / "rinshan",
-              REPO / "target" / "debug" / "rinshan", shutil.which("rinshan")):
+    for p in (
+        os.environ.get("RINSHAN_CLI"),
+        REPO / "target" / "release" / "rinshan",
+        REPO / "target" / "debug" / "rinshan",
+        shutil.which("rinshan"),
+    ):
         if p and pathlib.Path(p).is_file():
             return str(p)
     pytest.fail("build the CLI first (cargo build) or set RINSHAN_CLI")

@@ -25,8 +25,9 @@ def play(env, steps, seed=0):
 
 @pytest.mark.parametrize("variant,actions", [("red", 87), ("no-red", 79)])
 def test_shapes_and_dtypes(variant, actions):
-    env = rinshan.make(variant, num_envs=5, observation=("planes", "tokens"), analysis=True,
-                       num_threads=1)
+    env = rinshan.make(
+        variant, num_envs=5, observation=("planes", "tokens"), analysis=True, num_threads=1
+    )
     ts = env.reset()
     assert ts.legal_action_mask.shape == (5, actions) and ts.legal_action_mask.dtype == bool
     assert ts.current_player.shape == (5,) and ts.current_player.dtype == np.int32
@@ -39,13 +40,16 @@ def test_shapes_and_dtypes(variant, actions):
     assert ts.observation["discard_shanten"].shape[0] == 5
     assert env.spec.num_actions == actions == len(env.spec.action_names)
     assert ts.info["final_rank"].shape == (5, 4) and ts.info["yaku"].shape[1] == len(
-        env.spec.yaku_names)
+        env.spec.yaku_names
+    )
     assert (ts.info["env_id"] == np.arange(5)).all()
     # Every env has a legal action and the seat to act is a seat.
     assert ts.legal_action_mask.any(axis=1).all()
     assert set(ts.current_player) <= {0, 1, 2, 3}
     for f in env.spec.fields["planes"]:
-        assert ts.observation[f.name].dtype == f.dtype and ts.observation[f.name].shape[1:] == f.shape
+        assert (
+            ts.observation[f.name].dtype == f.dtype and ts.observation[f.name].shape[1:] == f.shape
+        )
 
 
 def test_outputs_are_reused_read_only_views():
@@ -174,8 +178,7 @@ def test_episode_ids_are_unique_per_game():
 
 
 def test_hero_mode_asks_only_the_hero():
-    env = rinshan.make(num_envs=16, opponents="greedy", hero_seats=np.arange(16) % 4,
-                       num_threads=1)
+    env = rinshan.make(num_envs=16, opponents="greedy", hero_seats=np.arange(16) % 4, num_threads=1)
     ts = env.reset(seed=1)
     rng = np.random.default_rng(3)
     steps = 0

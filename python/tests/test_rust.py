@@ -11,9 +11,26 @@ import rinshan
 
 def test_same_seed_same_games_as_the_cli(cli, tmp_path):
     # The CLI's self-play with four rule agents, exported as Tenhou logs ...
-    subprocess.run([cli, "selfplay", "--agents", "rule,rule,rule,rule", "--batch", "4", "--games",
-                    "4", "--seed", "7", "--threads", "1", "--export", str(tmp_path)],
-                   check=True, capture_output=True)
+    subprocess.run(
+        [
+            cli,
+            "selfplay",
+            "--agents",
+            "rule,rule,rule,rule",
+            "--batch",
+            "4",
+            "--games",
+            "4",
+            "--seed",
+            "7",
+            "--threads",
+            "1",
+            "--export",
+            str(tmp_path),
+        ],
+        check=True,
+        capture_output=True,
+    )
     # ... and the package's env with the same seed, stepped with the same agent's actions.
     env = rinshan.make("red", num_envs=4, seed=7, num_threads=1, auto_reset=False)
     ts = env.reset()
@@ -43,9 +60,23 @@ def test_log_records_match_the_cli_observation(cli, log_path):
     for r_index, step in [(0, 0), (0, 7), (1, 12), (2, 3)]:
         r = game["rounds"][r_index]
         for form in ("planes", "tokens"):
-            out = subprocess.run([cli, "observe", log_path, "--round", str(r_index), "--step",
-                                  str(step), "--form", form, "--json"], check=True,
-                                 capture_output=True, text=True).stdout
+            out = subprocess.run(
+                [
+                    cli,
+                    "observe",
+                    log_path,
+                    "--round",
+                    str(r_index),
+                    "--step",
+                    str(step),
+                    "--form",
+                    form,
+                    "--json",
+                ],
+                check=True,
+                capture_output=True,
+                text=True,
+            ).stdout
             cli_obs = json.loads(out)
             assert cli_obs["deciding_seat"] == r["seat"][step]
             for name, f in cli_obs["fields"].items():

@@ -40,8 +40,15 @@ class RinshanEnv(gymnasium.Env):
     metadata = {"render_modes": []}
 
     def __init__(self, variant: str = "red", mode: str = "half", penalty: Optional[float] = None):
-        self._env = Env(variant, mode=mode, num_envs=1, observation=("planes",), auto_reset=False,
-                        num_threads=1, penalty=penalty)
+        self._env = Env(
+            variant,
+            mode=mode,
+            num_envs=1,
+            observation=("planes",),
+            auto_reset=False,
+            num_threads=1,
+            penalty=penalty,
+        )
         n = self._env.spec.num_actions
         self.observation_space = planes_space(spaces, n)
         self.action_space = spaces.Discrete(n)
@@ -59,8 +66,13 @@ class RinshanEnv(gymnasium.Env):
         actor = self._actor
         ts = self._env.step(np.array([int(action)]))
         self._actor = int(ts.current_player[0])
-        return (_obs(ts, 0), float(ts.rewards[0, actor]), bool(ts.terminated[0]),
-                bool(ts.truncated[0]), _info(ts, 0))
+        return (
+            _obs(ts, 0),
+            float(ts.rewards[0, actor]),
+            bool(ts.terminated[0]),
+            bool(ts.truncated[0]),
+            _info(ts, 0),
+        )
 
     def close(self):
         self._env.close()
@@ -81,7 +93,8 @@ class RinshanVectorEnv(gymnasium.vector.VectorEnv):
         self.single_observation_space = planes_space(spaces, n)
         self.single_action_space = spaces.Discrete(n)
         self.observation_space = gymnasium.vector.utils.batch_space(
-            self.single_observation_space, num_envs)
+            self.single_observation_space, num_envs
+        )
         self.action_space = gymnasium.vector.utils.batch_space(self.single_action_space, num_envs)
         self._actors = np.zeros(num_envs, dtype=np.int64)
 

@@ -19,8 +19,9 @@ class RinshanAECEnv(AECEnv):
 
     def __init__(self, variant: str = "red", mode: str = "half"):
         super().__init__()
-        self._env = Env(variant, mode=mode, num_envs=1, observation=("planes",), auto_reset=False,
-                        num_threads=1)
+        self._env = Env(
+            variant, mode=mode, num_envs=1, observation=("planes",), auto_reset=False, num_threads=1
+        )
         n = self._env.spec.num_actions
         self.possible_agents = [f"player_{i}" for i in range(4)]
         self.agents = []
@@ -71,8 +72,10 @@ class RinshanAECEnv(AECEnv):
             for a in self.agents:
                 self.terminations[a] = bool(ts.terminated[0])
                 self.truncations[a] = bool(ts.truncated[0])
-                self.infos[a] = {"final_score": int(ts.info["final_scores"][0, self.possible_agents.index(a)]),
-                                 "final_rank": int(ts.info["final_rank"][0, self.possible_agents.index(a)])}
+                self.infos[a] = {
+                    "final_score": int(ts.info["final_scores"][0, self.possible_agents.index(a)]),
+                    "final_rank": int(ts.info["final_rank"][0, self.possible_agents.index(a)]),
+                }
         else:
             self.agent_selection = self.possible_agents[int(ts.current_player[0])]
         self._accumulate_rewards()
