@@ -158,19 +158,24 @@ fn replay<'py>(py: Python<'py>, paths: Vec<String>, backend: &str) -> PyResult<B
         .detach(|| tenhou::replay::replay(&games, backend))
         .map_err(env_error)?;
     let d = PyDict::new(py);
-    d.set_item("games", r.games)?;
-    d.set_item("games_ended_right", r.games_ended_right)?;
-    d.set_item("rounds", r.rounds)?;
-    d.set_item("rounds_replayed", r.rounds_replayed)?;
-    d.set_item("actions", r.actions)?;
-    d.set_item("actions_accepted", r.actions_accepted)?;
-    d.set_item("score_changes_matching", r.score_changes_matching)?;
-    d.set_item("tables", r.tables)?;
-    d.set_item("tables_matching", r.tables_matching)?;
-    d.set_item("wins", r.wins)?;
-    d.set_item("wins_matching", r.wins_matching)?;
-    d.set_item("draws", r.draws)?;
-    d.set_item("draws_matching", r.draws_matching)?;
+    let counts = [
+        ("games", r.games),
+        ("games_ended_right", r.games_ended_right),
+        ("rounds", r.rounds),
+        ("rounds_replayed", r.rounds_replayed),
+        ("actions", r.actions),
+        ("actions_accepted", r.actions_accepted),
+        ("score_changes_matching", r.score_changes_matching),
+        ("tables", r.tables),
+        ("tables_matching", r.tables_matching),
+        ("wins", r.wins),
+        ("wins_matching", r.wins_matching),
+        ("draws", r.draws),
+        ("draws_matching", r.draws_matching),
+    ];
+    for (name, n) in counts {
+        d.set_item(name, n)?;
+    }
     d.set_item("all_agree", r.all_agree())?;
     d.set_item(
         "mismatches",
