@@ -15,11 +15,19 @@ import pathlib
 import re
 import shutil
 import subprocess
+import sys
 import time
 
 import numpy as np
 
-import rinshan
+# Run as a script, this folder comes first on sys.path and its rinshan/ (the sources, without the
+# compiled extension) would shadow the installed package.
+sys.path[:] = [
+    p
+    for p in sys.path
+    if pathlib.Path(p or ".").resolve() != pathlib.Path(__file__).parent.resolve()
+]
+import rinshan  # noqa: E402
 
 REPO = pathlib.Path(__file__).resolve().parents[1]
 
