@@ -43,11 +43,12 @@ def main():
     games = 0
     with torch.no_grad():
         for _ in range(200):
-            # from_numpy shares memory with the env's buffers: fine within one step.
+            # The env's arrays are read-only and rewritten by the next step: the tensors copy
+            # them (as a move to a GPU would in any case).
             logits = policy(
-                torch.from_numpy(ts.observation["planes"]),
-                torch.from_numpy(ts.observation["scalars"]),
-                torch.from_numpy(ts.legal_action_mask),
+                torch.tensor(ts.observation["planes"]),
+                torch.tensor(ts.observation["scalars"]),
+                torch.tensor(ts.legal_action_mask),
             )
             actions = torch.distributions.Categorical(logits=logits).sample().numpy()
             ts = env.step(actions)

@@ -42,8 +42,15 @@ static BITS: [[bool; 8]; 256] = {
 
 /// Writes the first `out.len()` bits of `words` as bools.
 fn expand_bits(words: &[u32], out: &mut [bool]) {
-    for (chunk, byte) in out.chunks_mut(8).zip(words.iter().flat_map(|w| w.to_le_bytes())) {
-        chunk.copy_from_slice(&BITS[usize::from(byte)][..chunk.len()]);
+    let mut bytes = words.iter().flat_map(|w| w.to_le_bytes());
+    // Whole bytes as fixed 8-byte copies (a single move each), then the partial last one.
+    let mut whole = out.chunks_exact_mut(8);
+    for (chunk, byte) in (&mut whole).zip(&mut bytes) {
+        chunk.copy_from_slice(&BITS[usize::from(byte)]);
+    }
+    let rest = whole.into_remainder();
+    if let (false, Some(byte)) = (rest.is_empty(), bytes.next()) {
+        rest.copy_from_slice(&BITS[usize::from(byte)][..rest.len()]);
     }
 }
 
@@ -93,6 +100,9 @@ struct Slices<'a> {
 struct Games {
     points: Vec<[f64; 4]>,
     episode: Vec<i64>,
+    /// The id the next game to start gets: ids count games in the order they start, over the
+    /// env's life, so no two games share one.
+    next_episode: i64,
     /// A finished game without auto-reset: its final rows stay as they were.
     finished: Vec<bool>,
     start: f64,
@@ -251,9 +261,11 @@ fn fill(step: &Step, out: &mut Slices, games: &mut Games, callers: &[u8], sizes:
                 ranks[p] = step.ranks[i][p] as i8;
             }
             games.points[i] = [0.0; 4];
-            // The next game of this env gets the next id of its residue class: ids stay unique.
-            games.episode[i] += b as i64;
             games.finished[i] = !auto_reset;
+            if auto_reset {
+                games.episode[i] = games.next_episode;
+                games.next_episode += 1;
+            }
         } else {
             scores.fill(0);
             ranks.fill(-1);
@@ -369,7 +381,8 @@ impl PyEnv {
             outputs,
             games: Games {
                 points: vec![[0.0; 4]; b],
-                episode: (0..b as i64).collect(),
+                episode: vec![0; b],
+                next_episode: 0,
                 finished: vec![false; b],
                 start: f64::from(variant.starting_points()),
             },
@@ -415,9 +428,11 @@ impl PyEnv {
             (Some(s), None) => Some((0..b as u64).map(|i| env_seed(s, i, 0)).collect::<Vec<u64>>()),
             (None, seeds) => seeds,
         };
+        let first = self.games.next_episode;
         for (i, e) in self.games.episode.iter_mut().enumerate() {
-            *e = i as i64;
+            *e = first + i as i64;
         }
+        self.games.next_episode = first + b as i64;
         self.run(py, Begin::New, move |env, _| match &seeds {
             Some(s) => env.reset_with_seeds(s).map(|_| ()),
             None => env.reset().map(|_| ()),

@@ -165,16 +165,17 @@ def test_final_scores_and_ranks_where_games_end():
 
 def test_episode_ids_are_unique_per_game():
     env = rinshan.make(num_envs=4, num_threads=1)
-    ts = env.reset()
     rng = np.random.default_rng(2)
     seen = {}
-    for _ in range(4000):
-        ids = ts.info["episode_id"].copy()
-        ts = env.step(random_actions(ts, rng))
-        for i in range(4):
-            seen.setdefault(int(ids[i]), i)
-            assert seen[int(ids[i])] == i
-    assert len(seen) > 4
+    for _ in range(2):
+        # Ids stay unique across resets too.
+        ts = env.reset()
+        for _ in range(3000):
+            ids = ts.info["episode_id"].copy()
+            ts = env.step(random_actions(ts, rng))
+            for i in range(4):
+                assert seen.setdefault(int(ids[i]), i) == i
+    assert len(seen) > 8
 
 
 def test_hero_mode_asks_only_the_hero():

@@ -11,38 +11,28 @@ import rinshan
 
 def test_same_seed_same_games_as_the_cli(cli, tmp_path):
     # The CLI's self-play with four rule agents, exported as Tenhou logs ...
-    subprocess.run(
-        [
-            cli,
-            "selfplay",
-            "--agents",
-            "rule,rule,rule,rule",
-            "--batch",
-            "4",
-            "--games",
-            "4",
-            "--seed",
-            "7",
-            "--threads",
-            "1",
-            "--export",
-            str(tmp_path),
-        ],
-        check=True,
-        capture_output=True,
-    )
+    args = "selfplay --agents rule,rule,rule,rule --batch 4 --games 4 --seed 7 --threads 1 --json"
+    out = subprocess.run(
+        [cli, *args.split(), "--export", str(tmp_path)], check=True, capture_output=True, text=True
+    ).stdout
+    summary = json.loads(out)
     # ... and the package's env with the same seed, stepped with the same agent's actions.
     env = rinshan.make("red", num_envs=4, seed=7, num_threads=1, auto_reset=False)
     ts = env.reset()
     ack = env.spec.action_names.index("dummy")
     played = [[] for _ in range(4)]
     done = np.zeros(4, dtype=bool)
+    final_scores = np.zeros((4, 4))
+    rounds = np.zeros(4)
     while not done.all():
         a = env.agent_actions("rule")
         for i in np.nonzero(~done)[0]:
             if a[i] != ack:
                 played[i].append(int(a[i]))
         ts = env.step(a)
+        for i in np.nonzero(ts.terminated & ~done)[0]:
+            final_scores[i] = ts.info["final_scores"][i]
+            rounds[i] = ts.info["rounds"][i]
         done |= ts.terminated
     logged = []
     for path in sorted(tmp_path.glob("game-*.json")):
@@ -51,6 +41,10 @@ def test_same_seed_same_games_as_the_cli(cli, tmp_path):
     # The logs are numbered in the order games finished: match them to envs by content.
     assert sorted(map(tuple, logged)) == sorted(map(tuple, played))
     assert min(len(p) for p in played) > 100
+    # The same rewards: the CLI's average final score by seat, and the same number of rounds.
+    assert final_scores.mean(axis=0).tolist() == summary["avg_final_score"]
+    assert rounds.mean() == summary["avg_rounds_per_game"]
+    assert sum(map(len, played)) == summary["steps"]
 
 
 def test_log_records_match_the_cli_observation(cli, log_path):
