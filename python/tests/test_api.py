@@ -1,6 +1,8 @@
 """The batched env's API: shapes and dtypes, determinism, buffers, state round trips, hero mode."""
 
 import pickle
+import threading
+import time
 
 import numpy as np
 import pytest
@@ -213,3 +215,34 @@ def test_hand_calculator_mirrors_the_cli():
         rinshan.shanten("11111m")
     with pytest.raises(TypeError, match="unknown flag"):
         rinshan.score("234567m234p4566s", "6s", tsumoo=True)
+
+
+def test_step_releases_the_gil():
+    # A Python thread can only run while the main thread is inside `step` if `step` released the
+    # GIL: count its ticks that fall strictly within step calls.
+    env = rinshan.make(num_envs=4096, num_threads=1)
+    ts = env.reset()
+    ticks, stop = [], threading.Event()
+
+    def spin():
+        while not stop.is_set():
+            ticks.append(time.perf_counter())
+
+    thread = threading.Thread(target=spin)
+    thread.start()
+    inside = []
+    try:
+        rng = np.random.default_rng(0)
+        for _ in range(30):
+            a = random_actions(ts, rng)
+            t0 = time.perf_counter()
+            ts = env.step(a)
+            inside.append((t0, time.perf_counter()))
+    finally:
+        stop.set()
+        thread.join()
+    ticks = np.array(ticks)
+    during = sum(
+        int(np.searchsorted(ticks, t1) - np.searchsorted(ticks, t0, "right")) for t0, t1 in inside
+    )
+    assert during > 0
