@@ -27,7 +27,7 @@ class Evaluation:
     """Games finished first, second, third and fourth."""
     average_score: float
     illegal: int
-    """Games the policy ended with an illegal action."""
+    """Games the policy ended with an illegal action (each counted as a last place)."""
 
     def __str__(self) -> str:
         return (
@@ -75,19 +75,21 @@ def evaluate(
     rank = np.full(n, -1)
     score = np.zeros(n)
     illegal = np.zeros(n, dtype=bool)
-    while (rank < 0).any():
+    finished = np.zeros(n, dtype=bool)
+    while not finished.all():
         if isinstance(policy, str):
             actions = env.agent_actions(policy)
         else:
             actions = np.asarray(policy(ts))
         ts = env.step(actions)
-        ended = ts.terminated & (rank < 0)
-        idx = np.nonzero(ended)[0]
+        idx = np.nonzero(ts.terminated & ~finished)[0]
+        finished[idx] = True
         rank[idx] = ts.info["final_rank"][idx, hero[idx]]
         score[idx] = ts.info["final_scores"][idx, hero[idx]]
         illegal[idx] = ts.info["illegal"][idx]
     env.close()
-    places = rank + 1
+    # A game the policy ended with an illegal action counts as a last place.
+    places = np.where(illegal, 4, rank + 1)
     per_set = places.reshape(sets, 4).mean(axis=1)
     ci = 1.96 * per_set.std(ddof=1) / math.sqrt(sets) if sets > 1 else float("inf")
     return Evaluation(

@@ -258,7 +258,8 @@ fn fill(step: &Step, out: &mut Slices, games: &mut Games, callers: &[u8], sizes:
         if step.terminated[i] {
             for p in 0..4 {
                 scores[p] = (games.start + games.points[i][p] * 100.0).round() as i32;
-                ranks[p] = step.ranks[i][p] as i8;
+                // A game ended by an illegal action has no final standings.
+                ranks[p] = if step.illegal[i] { -1 } else { step.ranks[i][p] as i8 };
             }
             games.points[i] = [0.0; 4];
             games.finished[i] = !auto_reset;

@@ -204,6 +204,12 @@ def test_evaluate_duplicate_rates_rule_over_random():
     r = rinshan.evaluate(first_legal, opponents="rule", games=20, seed=1, num_threads=1)
     assert r.average_rank > 2.5 and r.ci95 > 0
 
+    def first_illegal(ts):
+        return np.argmin(ts.legal_action_mask, axis=1)
+
+    r = rinshan.evaluate(first_illegal, opponents="rule", games=8, seed=1, num_threads=1)
+    assert r.illegal == 8 and r.average_rank == 4.0 and r.rank_counts == [0, 0, 0, 8]
+
 
 def test_hand_calculator_mirrors_the_cli():
     assert rinshan.shanten("123m456p789s1122z")["shanten"] == 0

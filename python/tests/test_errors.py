@@ -39,6 +39,9 @@ def test_an_illegal_action_in_range_ends_only_that_game(env):
     ts = env.step(a)
     assert ts.info["illegal"].tolist() == [False, True, False, False]
     assert ts.terminated[1] and ts.rewards[1, actor] == -1.0
+    # No standings for a game that did not end by the rules; its scores are where they stood.
+    assert (ts.info["final_rank"][1] == -1).all()
+    assert (ts.info["final_scores"][1] == 25000).all()
 
 
 def test_bad_configuration():

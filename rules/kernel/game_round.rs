@@ -230,16 +230,6 @@ pub fn seat_rank(s: &mut GameState, p: u32) -> u32 {
     rank
 }
 
-// The game's final places, reported in the step that ends it (an illegal action ends it where
-// the scores stand).
-pub fn record_ranks(s: &mut GameState) {
-    let mut packed: u32 = 0u32;
-    for p in 0u32..4u32 {
-        packed |= seat_rank(s, p) << (p * RANK_SHIFT);
-    }
-    s.ranks = packed;
-}
-
 // Uma by rank and the leftover sticks to the top seat, paid in the game's final step.
 fn finish_game(s: &mut GameState) {
     let top: u32 = top_seat(s);
@@ -247,8 +237,8 @@ fn finish_game(s: &mut GameState) {
     let mut ranks: [u32; 4] = [0u32; 4];
     for p in 0u32..4u32 {
         ranks[p as usize] = seat_rank(s, p);
+        s.ranks |= ranks[p as usize] << (p * RANK_SHIFT);
     }
-    record_ranks(s);
     for p in 0u32..4u32 {
         let u: i32 = s.uma[ranks[p as usize] as usize];
         s.scores[p as usize] += u;

@@ -151,8 +151,8 @@ pub struct StepView {
     pub yaku: [u32; 2],
     // Rounds played in this game so far.
     pub rounds: u32,
-    // Where the game ended in this step: each seat's final place (0 = first), a byte per seat,
-    // read with RANK_SHIFT; 0 otherwise.
+    // Where the game ended by the rules in this step: each seat's final place (0 = first), a byte
+    // per seat, read with RANK_SHIFT; 0 otherwise (an illegal action ends a game unranked).
     pub ranks: u32,
 }
 

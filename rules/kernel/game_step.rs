@@ -114,7 +114,6 @@ pub fn game_step(s: &mut GameState, action: u32) {
     let actor: u32 = s.current;
     if action >= NUM_ACTIONS || !mask_has(s.mask, action) {
         s.illegal = actor + 1u32;
-        record_ranks(s);
         s.phase = PHASE_OVER;
         s.terminated = 1u32;
         s.events |= EVENT_GAME_OVER;

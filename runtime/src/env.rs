@@ -289,9 +289,9 @@ pub struct Step {
     pub yaku: Vec<[u32; 2]>,
     /// Rounds played in the (finished) game so far.
     pub rounds: Vec<u32>,
-    /// Where `terminated`: each seat's final place (0 = first; ties go to the seat nearer the
-    /// game's first dealer), as uma paid it. An illegal action ranks the seats where the scores
-    /// stood. Zeros elsewhere.
+    /// Where `terminated` by the rules: each seat's final place (0 = first; ties go to the seat
+    /// nearer the game's first dealer), as uma paid it. Zeros elsewhere, and for a game ended by
+    /// an illegal action (it has no final standings).
     pub ranks: Vec<[u8; 4]>,
 }
 

@@ -222,6 +222,7 @@ fn an_illegal_action_ends_only_that_game_with_the_penalty() {
         expected[actor] = -3.5;
         assert_eq!(step.rewards[1], expected, "{v}");
         assert_eq!(step.legal_action_mask[1], [0; 3]);
+        assert_eq!(step.ranks[1], [0; 4], "an illegal action ends a game unranked");
         // Out-of-range ids are illegal too, and a finished game stays finished without reward.
         actions = (0..4).map(|i| rng.pick_legal(&step.legal_action_mask[i])).collect();
         actions[3] = 1_000;

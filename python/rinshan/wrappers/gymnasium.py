@@ -28,7 +28,9 @@ def _obs(ts, i: Optional[int] = None) -> dict:
 
 def _info(ts, i: Optional[int] = None) -> dict:
     sel = slice(None) if i is None else i
-    info = {k: v[sel].copy() for k, v in ts.info.items()}
+    # Episode ids name games over the env's life, so a reseeded game gets a new one; Gymnasium
+    # wants the info of a seed's game to repeat, and counts episodes itself.
+    info = {k: v[sel].copy() for k, v in ts.info.items() if k != "episode_id"}
     info["rewards"] = ts.rewards[sel].copy()
     info["current_player"] = ts.current_player[sel].copy()
     return info
