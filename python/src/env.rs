@@ -258,8 +258,13 @@ fn fill(step: &Step, out: &mut Slices, games: &mut Games, callers: &[u8], sizes:
         if step.terminated[i] {
             for p in 0..4 {
                 scores[p] = (games.start + games.points[i][p] * 100.0).round() as i32;
-                // A game ended by an illegal action has no final standings.
-                ranks[p] = if step.illegal[i] { -1 } else { step.ranks[i][p] as i8 };
+                // Places are a permutation of 0..3: all zeros means none were reported (a game
+                // ended by an illegal action, or a finished game restored by set_state).
+                ranks[p] = if step.ranks[i] == [0; 4] {
+                    -1
+                } else {
+                    step.ranks[i][p] as i8
+                };
             }
             games.points[i] = [0.0; 4];
             games.finished[i] = !auto_reset;

@@ -289,9 +289,10 @@ pub struct Step {
     pub yaku: Vec<[u32; 2]>,
     /// Rounds played in the (finished) game so far.
     pub rounds: Vec<u32>,
-    /// Where `terminated` by the rules: each seat's final place (0 = first; ties go to the seat
-    /// nearer the game's first dealer), as uma paid it. Zeros elsewhere, and for a game ended by
-    /// an illegal action (it has no final standings).
+    /// In the step that ends a game by the rules: each seat's final place (0 = first; ties go to
+    /// the seat nearer the game's first dealer), as uma paid it. Zeros elsewhere: other steps,
+    /// later steps of a finished game, and a game ended by an illegal action (it has no final
+    /// standings).
     pub ranks: Vec<[u8; 4]>,
 }
 
