@@ -105,6 +105,8 @@ struct Games {
     next_episode: i64,
     /// A finished game without auto-reset: its final rows stay as they were.
     finished: Vec<bool>,
+    /// The final rows hold a finished game's (to clear at the next step).
+    shown: Vec<bool>,
     start: f64,
 }
 
@@ -201,6 +203,7 @@ impl PyEnv {
             }
             if !matches!(begin, Begin::Step) {
                 games.finished.iter_mut().for_each(|f| *f = false);
+                games.shown.iter_mut().for_each(|f| *f = true);
             }
             let auto_reset = env.config().auto_reset;
             fill(env.last(), &mut out, games, callers, (na, ny), auto_reset);
@@ -222,27 +225,43 @@ enum Begin {
 }
 
 /// Writes one step's outcome into the arrays and keeps the per-game bookkeeping (`sizes`: the
-/// number of actions and of yaku).
+/// number of actions and of yaku). Each array is written in its own pass: streaming loops that
+/// the compiler vectorises and the prefetcher follows, where one pass over envs touching twenty
+/// arrays at once ran at 0.65x the Rust step at batch 16384 (python/bench.py).
 fn fill(step: &Step, out: &mut Slices, games: &mut Games, callers: &[u8], sizes: (usize, usize), auto_reset: bool) {
     let (na, ny) = sizes;
-    let b = step.current_player.len();
-    for i in 0..b {
-        expand_bits(&step.legal_action_mask[i], &mut out.mask[i * na..(i + 1) * na]);
-        let seat = step.current_player[i];
-        out.current_player[i] = seat as i32;
-        out.rewards[i * 4..i * 4 + 4].copy_from_slice(&step.rewards[i]);
-        out.terminated[i] = step.terminated[i];
-        out.truncated[i] = step.truncated[i];
-        out.illegal[i] = step.illegal[i];
-        out.hero[i] = callers.get(i).is_none_or(|c| c >> seat & 1 == 1);
-        out.events[i] = step.events[i];
-        for p in 0..4 {
-            out.winners[i * 4 + p] = step.winners[i] >> p & 1 == 1;
+    for (row, m) in out.mask.chunks_exact_mut(na).zip(&step.legal_action_mask) {
+        expand_bits(m, row);
+    }
+    for (o, &c) in out.current_player.iter_mut().zip(&step.current_player) {
+        *o = c as i32;
+    }
+    out.rewards.copy_from_slice(step.rewards.as_flattened());
+    out.terminated.copy_from_slice(&step.terminated);
+    out.truncated.copy_from_slice(&step.truncated);
+    out.illegal.copy_from_slice(&step.illegal);
+    out.events.copy_from_slice(&step.events);
+    for (row, &w) in out.winners.chunks_exact_mut(4).zip(&step.winners) {
+        row.copy_from_slice(&BITS[(w & 15) as usize][..4]);
+    }
+    for (o, &d) in out.deal_in.iter_mut().zip(&step.deal_in) {
+        *o = d as i8 - 1;
+    }
+    for (row, y) in out.yaku.chunks_exact_mut(ny).zip(&step.yaku) {
+        expand_bits(y, row);
+    }
+    for (o, &r) in out.rounds.iter_mut().zip(&step.rounds) {
+        *o = r as i32;
+    }
+    if callers.is_empty() {
+        out.hero.fill(true);
+    } else {
+        for ((o, &c), &seat) in out.hero.iter_mut().zip(callers).zip(&step.current_player) {
+            *o = c >> seat & 1 == 1;
         }
-        out.deal_in[i] = step.deal_in[i] as i8 - 1;
-        expand_bits(&step.yaku[i], &mut out.yaku[i * ny..(i + 1) * ny]);
-        out.rounds[i] = step.rounds[i] as i32;
-        out.episode_id[i] = games.episode[i];
+    }
+    out.episode_id.copy_from_slice(&games.episode);
+    for i in 0..step.terminated.len() {
         if games.finished[i] {
             continue;
         }
@@ -268,13 +287,16 @@ fn fill(step: &Step, out: &mut Slices, games: &mut Games, callers: &[u8], sizes:
             }
             games.points[i] = [0.0; 4];
             games.finished[i] = !auto_reset;
+            games.shown[i] = true;
             if auto_reset {
                 games.episode[i] = games.next_episode;
                 games.next_episode += 1;
             }
-        } else {
+        } else if games.shown[i] {
+            // Only the rows of the game that ended in the last step need clearing.
             scores.fill(0);
             ranks.fill(-1);
+            games.shown[i] = false;
         }
     }
 }
@@ -390,6 +412,7 @@ impl PyEnv {
                 episode: vec![0; b],
                 next_episode: 0,
                 finished: vec![false; b],
+                shown: vec![true; b],
                 start: f64::from(variant.starting_points()),
             },
             actions: vec![0; b],
