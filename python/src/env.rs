@@ -225,9 +225,9 @@ enum Begin {
 }
 
 /// Writes one step's outcome into the arrays and keeps the per-game bookkeeping (`sizes`: the
-/// number of actions and of yaku). Each array is written in its own pass: streaming loops that
-/// the compiler vectorises and the prefetcher follows, where one pass over envs touching twenty
-/// arrays at once ran at 0.65x the Rust step at batch 16384 (python/bench.py).
+/// number of actions and of yaku). Each array is written in its own pass, a streaming loop,
+/// rather than one pass over envs touching twenty arrays at once; the fill costs about 20 ns per
+/// env against the step's 160 (measured inside `run`, batch 4096).
 fn fill(step: &Step, out: &mut Slices, games: &mut Games, callers: &[u8], sizes: (usize, usize), auto_reset: bool) {
     let (na, ny) = sizes;
     for (row, m) in out.mask.chunks_exact_mut(na).zip(&step.legal_action_mask) {
