@@ -148,6 +148,13 @@ class Env:
             raise TypeError(f"num_envs must be an int, not {type(num_envs).__name__}")
         if num_envs < 1:
             raise ValueError(f"num_envs must be at least 1, not {num_envs}")
+        for name, value in (("seed", seed), ("num_threads", num_threads)):
+            if value is not None and (
+                not isinstance(value, (int, np.integer)) or isinstance(value, bool)
+            ):
+                raise TypeError(f"{name} must be an int, not {type(value).__name__}")
+        if seed is None:
+            raise TypeError("seed must be an int, not NoneType")
         if num_threads is not None and num_threads < 1:
             raise ValueError(
                 f"num_threads must be at least 1 (None = all cores), not {num_threads}"

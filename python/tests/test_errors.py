@@ -53,6 +53,12 @@ def test_bad_configuration():
         rinshan.make(num_envs=0)
     with pytest.raises(TypeError):
         rinshan.make(num_envs=2.5)
+    with pytest.raises(TypeError, match="seed must be an int"):
+        rinshan.make(num_envs=2, seed="1")
+    with pytest.raises(TypeError, match="num_threads must be an int"):
+        rinshan.make(num_envs=2, num_threads=1.5)
+    with pytest.raises(ValueError, match="seed must be in"):
+        rinshan.make(num_envs=2, seed=-1)
     with pytest.raises(ValueError, match="unknown observation form"):
         rinshan.make(observation=("pixels",))
     with pytest.raises(ValueError, match="opponents"):
