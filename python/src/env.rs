@@ -301,6 +301,11 @@ fn fill(step: &Step, out: &mut Slices, games: &mut Games, callers: &[u8], sizes:
     }
 }
 
+/// Bytes an env holds besides its observations: the game state, its view and step outputs.
+const ENV_BYTES: usize = 1536;
+/// The most memory `make` lets a batch take.
+const MAX_BYTES: usize = 16 << 30;
+
 fn form_of(name: &str) -> PyResult<Form> {
     Form::ALL.into_iter().find(|f| f.name() == name).ok_or_else(|| {
         PyValueError::new_err(format!(
@@ -333,6 +338,16 @@ impl PyEnv {
         let mode: Mode = parse("mode", mode)?;
         let backend: Backend = parse("backend", backend)?;
         let forms = forms.iter().map(|f| form_of(f)).collect::<PyResult<Vec<Form>>>()?;
+        let per_env = ENV_BYTES + forms.iter().map(|f| f.bytes()).sum::<usize>();
+        if num_envs.saturating_mul(per_env) > MAX_BYTES {
+            // Rust aborts the process when an allocation fails: refuse sizes that cannot fit.
+            return Err(PyValueError::new_err(format!(
+                "num_envs {num_envs} needs about {} GiB ({per_env} bytes per env with these \
+                 observations); the limit is {} GiB",
+                num_envs.saturating_mul(per_env) >> 30,
+                MAX_BYTES >> 30
+            )));
+        }
         if forms.contains(&Form::Oracle) {
             return Err(PyValueError::new_err(
                 "the oracle is not an observation: ask for it with env.oracle()",

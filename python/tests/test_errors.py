@@ -51,6 +51,8 @@ def test_bad_configuration():
         rinshan.make(mode="forever")
     with pytest.raises(ValueError, match="at least 1"):
         rinshan.make(num_envs=0)
+    with pytest.raises(ValueError, match="num_envs 1099511627776 needs about"):
+        rinshan.make(num_envs=2**40)
     with pytest.raises(TypeError):
         rinshan.make(num_envs=2.5)
     with pytest.raises(TypeError, match="seed must be an int"):
