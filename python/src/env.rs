@@ -41,7 +41,7 @@ static BITS: [[bool; 8]; 256] = {
 };
 
 /// Writes the first `out.len()` bits of `words` as bools.
-fn expand_bits(words: &[u32], out: &mut [bool]) {
+pub(crate) fn expand_bits(words: &[u32], out: &mut [bool]) {
     let mut bytes = words.iter().flat_map(|w| w.to_le_bytes());
     // Whole bytes as fixed 8-byte copies (a single move each), then the partial last one.
     let mut whole = out.chunks_exact_mut(8);
@@ -306,13 +306,8 @@ const ENV_BYTES: usize = 1536;
 /// The most memory `make` lets a batch take.
 const MAX_BYTES: usize = 16 << 30;
 
-fn form_of(name: &str) -> PyResult<Form> {
-    Form::ALL.into_iter().find(|f| f.name() == name).ok_or_else(|| {
-        PyValueError::new_err(format!(
-            "unknown observation form `{name}` (known: {})",
-            Form::ALL.map(Form::name).join(", ")
-        ))
-    })
+pub(crate) fn form_of(name: &str) -> PyResult<Form> {
+    name.parse::<Form>().map_err(|e| PyValueError::new_err(e.to_string()))
 }
 
 #[pymethods]

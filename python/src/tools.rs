@@ -11,7 +11,7 @@ use rinshan::tenhou;
 use rinshan::win_input::{score_json, WinInput};
 use rinshan::Variant;
 
-use crate::env::{env_error, parse};
+use crate::env::{env_error, expand_bits, form_of, parse};
 
 /// `{"shanten", "normal", "chiitoitsu", "kokushi"}` of a concealed hand in notation.
 #[pyfunction]
@@ -86,15 +86,12 @@ fn read_game(path: &str) -> PyResult<tenhou::log::Game> {
 #[pyfunction]
 fn tenhou_read<'py>(py: Python<'py>, path: &str, forms: Vec<String>) -> PyResult<Bound<'py, PyDict>> {
     let game = read_game(path)?;
-    let forms = forms
-        .iter()
-        .map(|f| {
-            Form::OBSERVATIONS
-                .into_iter()
-                .find(|x| x.name() == f)
-                .ok_or_else(|| PyValueError::new_err(format!("unknown observation form `{f}`")))
-        })
-        .collect::<PyResult<Vec<Form>>>()?;
+    let forms = forms.iter().map(|f| form_of(f)).collect::<PyResult<Vec<Form>>>()?;
+    if forms.contains(&Form::Oracle) {
+        return Err(PyValueError::new_err(
+            "a log record holds what the deciding seat sees: the oracle is not one of its forms",
+        ));
+    }
     let variant = Variant::Red;
     let na = rinshan::env::action_names(variant).len();
     let rounds = PyList::empty(py);
@@ -113,9 +110,7 @@ fn tenhou_read<'py>(py: Python<'py>, path: &str, forms: Vec<String>) -> PyResult
                 let what: Vec<&str> = positions.iter().map(|p| p.what.as_str()).collect();
                 let mut mask = vec![false; n * na];
                 for (p, row) in positions.iter().zip(mask.chunks_mut(na)) {
-                    for (a, m) in row.iter_mut().enumerate() {
-                        *m = p.state.mask[a / 32] >> (a % 32) & 1 == 1;
-                    }
+                    expand_bits(&p.state.mask, row);
                 }
                 d.set_item("seat", PyArray1::from_vec(py, seat))?;
                 d.set_item("action", PyArray1::from_vec(py, action))?;
@@ -190,10 +185,7 @@ type FieldRow = (String, usize, String, Vec<usize>, String);
 /// The record size and the fields of an observation form.
 #[pyfunction]
 fn fields(form: &str) -> PyResult<(usize, Vec<FieldRow>)> {
-    let form = Form::ALL
-        .into_iter()
-        .find(|f| f.name() == form)
-        .ok_or_else(|| PyValueError::new_err(format!("unknown observation form `{form}`")))?;
+    let form = form_of(form)?;
     let fields = form
         .fields()
         .iter()

@@ -3,11 +3,12 @@
 from __future__ import annotations
 
 import numpy as np
+from gymnasium import spaces
 
 from ..env import fields
 
 
-def planes_space(spaces, num_actions: int):
+def planes_space(num_actions: int):
     """A Dict space of the planes form's fields and the legal mask (`action_mask`, int8)."""
     parts = {}
     for f in fields("planes")[1]:

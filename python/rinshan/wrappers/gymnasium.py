@@ -52,7 +52,7 @@ class RinshanEnv(gymnasium.Env):
             penalty=penalty,
         )
         n = self._env.spec.num_actions
-        self.observation_space = planes_space(spaces, n)
+        self.observation_space = planes_space(n)
         self.action_space = spaces.Discrete(n)
         self._actor = 0
 
@@ -92,7 +92,7 @@ class RinshanVectorEnv(gymnasium.vector.VectorEnv):
         self._env = Env(variant, num_envs=num_envs, auto_reset=True, **kwargs)
         n = self._env.spec.num_actions
         self.num_envs = num_envs
-        self.single_observation_space = planes_space(spaces, n)
+        self.single_observation_space = planes_space(n)
         self.single_action_space = spaces.Discrete(n)
         self.observation_space = gymnasium.vector.utils.batch_space(
             self.single_observation_space, num_envs

@@ -25,7 +25,7 @@ class RinshanAECEnv(AECEnv):
         n = self._env.spec.num_actions
         self.possible_agents = [f"player_{i}" for i in range(4)]
         self.agents = []
-        self._obs_space = planes_space(spaces, n)
+        self._obs_space = planes_space(n)
         self._act_space = spaces.Discrete(n)
         self._seed = None
 
