@@ -11,7 +11,7 @@ pub const MODE_HALF: u32 = 2;
 const PHASE_TURN: u32 = 0; // after a draw or a call: discard, tsumo, kan, riichi, kyuushu
 const PHASE_RIICHI_DISCARD: u32 = 1; // riichi declared: discard a tile that keeps tenpai
 pub const PHASE_CLAIM: u32 = 2; // a discard (or an added kan) waits for each claimant's decision
-const PHASE_OVER: u32 = 3; // the game has ended
+pub const PHASE_OVER: u32 = 3; // the game has ended
 
 // Per-seat flags.
 const SEAT_RIICHI: u32 = 1; // riichi accepted (stick paid)

@@ -13,6 +13,8 @@
 //! * [`arena`]    — rating agents by duplicate play
 //! * [`observe`]  — what an agent sees: the observation forms and the table documenting their fields
 //! * [`tenhou`]   — tenhou.net/6 logs: reading them and replaying them through the red variant
+//! * [`render`]   — pictures: the table as SVG or PNG, a whole game as an HTML replay page
+//! * [`serve`]    — the web page: play against the agents, spectate, replay (axum)
 //! * [`random`]   — deterministic random hands and legal actions for tests, benchmarks and self-play
 
 #![warn(missing_docs)]
@@ -36,6 +38,8 @@ pub mod hand;
 pub mod notation;
 pub mod observe;
 pub mod random;
+pub mod render;
+pub mod serve;
 pub mod tenhou;
 pub mod tile;
 pub mod win_input;

@@ -4,9 +4,11 @@ mod arena;
 mod args;
 mod bench;
 mod observe;
+mod render;
 mod replay;
 mod score;
 mod selfplay;
+mod serve;
 mod shanten;
 
 use clap::{Parser, Subcommand};
@@ -56,6 +58,10 @@ enum Command {
     Replay(replay::Args),
     /// A seat's observation at a position of a tenhou.net/6 log, e.g. `rinshan observe game.json --round 2 --step 10`
     Observe(observe::Args),
+    /// Draw a table as SVG or PNG, or a whole logged game as an HTML replay, e.g. `rinshan render game.json --round 1 --step 20 --png -o board.png`
+    Render(render::Args),
+    /// A web page to play against the agents, watch them or replay a log, e.g. `rinshan serve --port 8000`
+    Serve(serve::Args),
     /// Rate built-in agents by duplicate play, e.g. `rinshan arena --agents greedy,rule,rule,rule --games 4000`
     Arena(arena::Args),
     /// Benchmarks: `bench hands` (shanten, scoring), `bench env` (environment steps by batch size)
@@ -73,6 +79,8 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
         Command::Replay(a) => replay::run(a),
         Command::Arena(a) => arena::run(a),
         Command::Observe(a) => observe::run(a),
+        Command::Render(a) => render::run(a),
+        Command::Serve(a) => serve::run(a),
         Command::Bench { what } => bench::run(what),
     }
 }

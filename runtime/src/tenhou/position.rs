@@ -24,8 +24,23 @@ pub struct Position {
     pub state: GameState,
 }
 
+/// How a replayed round ended: the step that ended it and the table after it.
+#[derive(Clone)]
+pub struct RoundEnd {
+    /// What the last decision's step reported (events, winners, rewards, ranks).
+    pub step: crate::env::Step,
+    /// The table after it (the win records, the draw, the scores).
+    pub table: crate::env::Table,
+}
+
 /// The decisions of round `round` (0-based index into the game's rounds) in order of play.
 pub fn round_positions(game: &Game, round: usize) -> Result<Vec<Position>, String> {
+    round_replay(game, round).map(|(positions, _)| positions)
+}
+
+/// The decisions of round `round` and how the round ended (`None` if the log stops before the
+/// engine ends it).
+pub fn round_replay(game: &Game, round: usize) -> Result<(Vec<Position>, Option<RoundEnd>), String> {
     let Some(r) = game.rounds.get(round) else {
         return Err(format!(
             "{}: no round {round} (the log has {})",
@@ -75,14 +90,15 @@ pub fn round_positions(game: &Game, round: usize) -> Result<Vec<Position>, Strin
             what,
             state,
         });
-        let after = env.step(&[action]).map_err(|e| e.to_string())?;
+        let after = env.step(&[action]).map_err(|e| e.to_string())?.clone();
         use crate::env::events as e;
         if after.events[0] & (e::RON | e::TSUMO | e::EXHAUSTIVE_DRAW | e::ABORTIVE_DRAW) != 0
             || after.terminated[0]
             || after.illegal[0]
         {
-            break;
+            let table = env.tables().map_err(|e| e.to_string())?.remove(0);
+            return Ok((out, Some(RoundEnd { step: after, table })));
         }
     }
-    Ok(out)
+    Ok((out, None))
 }

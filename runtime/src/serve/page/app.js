@@ -1,0 +1,250 @@
+"use strict";
+// The page's whole logic: create a game, follow its event stream, draw the view the server sends,
+// and send the person's clicks as moves naming the decision they were made at.
+
+const $ = (id) => document.getElementById(id);
+const PAGE = document.body.dataset.page;
+let tiles = localStorage.getItem("rinshan-tiles") || "en";
+let game = null;   // the id
+let view = null;   // the last view
+let stream = null;
+let busy = false, again = false;
+
+async function api(method, url, body) {
+  const init = { method, headers: {} };
+  if (body !== undefined) {
+    init.headers["Content-Type"] = "application/json";
+    init.body = JSON.stringify(body);
+  }
+  const r = await fetch(url, init);
+  const text = await r.text();
+  let data;
+  try { data = JSON.parse(text); } catch (_) { data = { error: text }; }
+  if (!r.ok) throw new Error(data.error || ("HTTP " + r.status));
+  return data;
+}
+
+function showError(e) {
+  const box = $("error");
+  if (!box) return;
+  box.textContent = e ? String(e.message || e) : "";
+  box.hidden = !e;
+}
+
+async function loadSprite() {
+  const r = await fetch("/api/sprite/" + tiles);
+  $("sprite").innerHTML = await r.text();
+  document.body.dataset.tiles = tiles;
+}
+
+function fillAgents(names) {
+  const defaults = ["rule", "greedy", "defensive", "rule"];
+  document.querySelectorAll("select.agent").forEach((sel, i) => {
+    names.forEach((n) => {
+      const o = document.createElement("option");
+      o.value = n; o.textContent = n;
+      sel.appendChild(o);
+    });
+    sel.value = defaults[i % defaults.length];
+  });
+}
+
+async function start(ev) {
+  ev.preventDefault();
+  showError(null);
+  const f = new FormData($("setup"));
+  const body = {
+    variant: f.get("variant"),
+    mode: f.get("mode"),
+    agents: f.getAll("agent"),
+    delay_ms: Number(f.get("delay")),
+  };
+  if (PAGE === "play") body.seat = Number(f.get("seat"));
+  if (f.get("seed")) body.seed = Number(f.get("seed"));
+  try {
+    const v = await api("POST", "/api/games", body);
+    game = v.id;
+    $("setup").hidden = true;
+    $("game").hidden = false;
+    if (stream) stream.close();
+    stream = new EventSource("/api/games/" + game + "/events");
+    stream.addEventListener("change", refresh);
+    await refresh();
+  } catch (e) { showError(e); }
+}
+
+async function refresh() {
+  if (!game) return;
+  if (busy) { again = true; return; }
+  busy = true;
+  try {
+    do {
+      again = false;
+      view = await api("GET", "/api/games/" + game + "?tiles=" + tiles);
+      draw();
+    } while (again);
+  } catch (e) { showError(e); }
+  busy = false;
+}
+
+const WINDS = ["E", "S", "W", "N"];
+
+function draw() {
+  const v = view;
+  $("board").innerHTML = v.svg;
+  document.body.dataset.phase = v.phase;
+  document.body.dataset.step = String(v.step);
+  const who = v.names[v.current];
+  const turn = { human: "Your turn", agent: who + " to move", result: "Round over", over: "Game over" }[v.phase];
+  $("status").innerHTML = "";
+  const h = document.createElement("h3");
+  h.textContent = v.round + (v.honba ? " · " + v.honba + " honba" : "") + " — " + turn;
+  $("status").appendChild(h);
+  const scores = document.createElement("p");
+  scores.className = "scores";
+  scores.textContent = v.names.map((n, p) => n + " " + v.scores[p]).join(" · ");
+  $("status").appendChild(scores);
+  if ($("actions")) drawActions(v);
+  drawResult(v);
+  const ev = $("events");
+  ev.innerHTML = "";
+  v.events.slice().reverse().forEach((t) => { const li = document.createElement("li"); li.textContent = t; ev.appendChild(li); });
+  const dl = $("download");
+  dl.hidden = !v.log;
+  if (v.log) dl.href = "/api/games/" + game + "/log";
+}
+
+function drawActions(v) {
+  const box = $("actions");
+  box.innerHTML = "";
+  if (v.phase !== "human") {
+    box.textContent = v.phase === "agent" ? "Waiting for " + v.names[v.current] + "…" : "";
+    return;
+  }
+  const discards = v.legal.filter((c) => c.tile);
+  const tsumogiri = v.legal.find((c) => c.name === "tsumogiri");
+  // Discards are made by clicking a tile of the hand.
+  document.querySelectorAll('#board .tile[data-seat="' + v.seat + '"]').forEach((g) => {
+    const zone = g.dataset.zone;
+    if (zone !== "hand" && zone !== "drawn") return;
+    const choice = zone === "drawn" && tsumogiri ? tsumogiri : discards.find((c) => c.tile === g.dataset.tile);
+    if (!choice) return;
+    g.classList.add("playable");
+    g.setAttribute("role", "button");
+    g.addEventListener("click", () => act(choice.id));
+  });
+  if (discards.length || tsumogiri) {
+    const hint = document.createElement("p");
+    hint.className = "hint";
+    hint.textContent = "Click a tile of your hand to discard it.";
+    box.appendChild(hint);
+  }
+  v.legal.filter((c) => !c.tile && c.name !== "tsumogiri").forEach((c) => {
+    const b = document.createElement("button");
+    b.type = "button";
+    b.className = "action " + c.name;
+    b.dataset.action = c.name;
+    b.textContent = c.label;
+    b.addEventListener("click", () => act(c.id));
+    box.appendChild(b);
+  });
+}
+
+function drawResult(v) {
+  const box = $("result");
+  if (!v.result) { box.hidden = true; box.innerHTML = ""; return; }
+  box.hidden = false;
+  box.innerHTML = "";
+  const h = document.createElement("h3");
+  const r = v.result;
+  h.textContent = r.wins.length
+    ? r.wins.map((w) => v.names[w.seat] + (w.from === null ? " tsumo" : " ron from " + v.names[w.from])).join("; ")
+    : (r.draw || "Draw");
+  box.appendChild(h);
+  r.wins.forEach((w) => {
+    const p = document.createElement("p");
+    p.textContent = w.yaku.join(", ") + " — " + (w.yakuman ? "yakuman ×" + w.yakuman : w.han + " han " + w.fu + " fu");
+    box.appendChild(p);
+  });
+  const t = document.createElement("table");
+  t.className = "deltas";
+  v.names.forEach((n, p) => {
+    const tr = document.createElement("tr");
+    tr.innerHTML = "<td></td><td class='num'></td>";
+    tr.children[0].textContent = n;
+    tr.children[1].textContent = (r.deltas[p] > 0 ? "+" : "") + r.deltas[p];
+    t.appendChild(tr);
+  });
+  box.appendChild(t);
+  if (r.ranks) {
+    const order = [0, 1, 2, 3].sort((a, b) => r.ranks[a] - r.ranks[b]);
+    const ol = document.createElement("ol");
+    ol.className = "ranking";
+    order.forEach((p) => { const li = document.createElement("li"); li.textContent = v.names[p] + " — " + r.final_scores[p]; ol.appendChild(li); });
+    box.appendChild(ol);
+  }
+  if (v.phase === "result" && PAGE === "play") {
+    const b = document.createElement("button");
+    b.type = "button";
+    b.id = "next";
+    b.className = "action next";
+    b.textContent = "Next round";
+    b.addEventListener("click", async () => {
+      try { await api("POST", "/api/games/" + game + "/next"); } catch (e) { showError(e); }
+      refresh();
+    });
+    box.appendChild(b);
+  }
+}
+
+async function act(id) {
+  showError(null);
+  try {
+    await api("POST", "/api/games/" + game + "/actions", { action: id, step: view.step });
+  } catch (e) { showError(e); }
+  refresh();
+}
+
+async function openReplay(ev) {
+  ev.preventDefault();
+  showError(null);
+  const file = $("file").files[0];
+  if (!file) { showError("choose a log file first"); return; }
+  try {
+    const r = await fetch("/api/replay", { method: "POST", body: await file.text() });
+    const text = await r.text();
+    if (!r.ok) { let m = text; try { m = JSON.parse(text).error; } catch (_) {} throw new Error(m); }
+    const frame = $("viewer");
+    frame.srcdoc = text;
+    frame.hidden = false;
+  } catch (e) { showError(e); }
+}
+
+async function init() {
+  document.querySelectorAll("[data-nav]").forEach((a) => a.classList.toggle("here", a.dataset.nav === PAGE));
+  $("tiles").value = tiles;
+  $("tiles").addEventListener("change", async (e) => {
+    tiles = e.target.value;
+    localStorage.setItem("rinshan-tiles", tiles);
+    await loadSprite();
+    refresh();
+  });
+  await loadSprite();
+  if (PAGE === "replay") {
+    $("upload").addEventListener("submit", openReplay);
+    return;
+  }
+  const info = await api("GET", "/api/agents");
+  fillAgents(info.agents);
+  $("setup").addEventListener("submit", start);
+  $("leave").addEventListener("click", () => {
+    if (stream) stream.close();
+    if (game) fetch("/api/games/" + game, { method: "DELETE" });
+    game = null;
+    $("game").hidden = true;
+    $("setup").hidden = false;
+  });
+  document.body.dataset.ready = "1";
+}
+
+init().catch(showError);

@@ -1,0 +1,372 @@
+//! One game on the web page: an env of one game, who plays each seat, the counter that makes a
+//! repeated click stale, and the picture of a round's end held until the player moves on. Pure
+//! and synchronous: the HTTP layer locks it, the driver task calls [`Session::agent_move`].
+
+use std::time::{Duration, Instant};
+
+use serde::Serialize;
+
+use crate::agents::Agent;
+use crate::env::{events as ev, Config, Env, Mode};
+use crate::generated::kernel::GameState;
+use crate::render::{self, Board, Options, TileMode};
+use crate::tenhou::write::Recorder;
+use crate::{Tile, Variant};
+
+/// What a new game is: who sits where, and how fast the agents move.
+#[derive(Debug, Clone)]
+pub struct Setup {
+    /// The rules.
+    pub variant: Variant,
+    /// The game's length.
+    pub mode: Mode,
+    /// Each seat's agent; `None` = the person (at most one seat; none = spectating).
+    pub seats: [Option<Agent>; 4],
+    /// Seeds the walls.
+    pub seed: u64,
+    /// Pause before each agent move (and before a spectated game moves past a round's end).
+    pub delay: Duration,
+}
+
+/// Where a game stands, as the page shows it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Phase {
+    /// The person decides.
+    Human,
+    /// An agent decides (it moves after the delay).
+    Agent,
+    /// A round has ended: its result is shown until `next`.
+    Result,
+    /// The game has ended.
+    Over,
+}
+
+/// Why a request cannot change a game.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Refusal {
+    /// The game moved on since the page last saw it, or it is not the person's turn (409).
+    Stale(String),
+    /// The action is not legal here (422).
+    Illegal(String),
+}
+
+/// A legal action as a button or a clickable tile.
+#[derive(Debug, Clone, Serialize)]
+pub struct Choice {
+    /// The action id.
+    pub id: u32,
+    /// Its name in the variant's layout (`discard_5m`, `riichi`, `pass`).
+    pub name: String,
+    /// What a button says.
+    pub label: String,
+    /// For a discard: the tile (`5m`, `0m` for a red five), matching the board's `data-tile`.
+    pub tile: Option<String>,
+}
+
+/// One game in play.
+pub struct Session {
+    setup: Setup,
+    env: Env,
+    names: [String; 4],
+    /// Decisions played so far: a move must name the current count.
+    pub step: u64,
+    /// The board of the round that just ended, shown until the next round starts.
+    ended: Option<Board>,
+    recorder: Option<Recorder>,
+    log: Option<String>,
+    events: Vec<String>,
+    /// When a request or a move last touched the game.
+    pub touched: Instant,
+}
+
+fn err(e: impl std::fmt::Display) -> String {
+    e.to_string()
+}
+
+impl Session {
+    /// A new game, dealt.
+    pub fn new(setup: Setup) -> Result<Session, String> {
+        if setup.seats.iter().filter(|s| s.is_none()).count() > 1 {
+            return Err("at most one seat can be played by a person".into());
+        }
+        let mut env = Env::new(Config {
+            mode: setup.mode,
+            seed: setup.seed,
+            threads: Some(1),
+            ..Config::new(setup.variant, 1)
+        })
+        .map_err(err)?;
+        env.reset().map_err(err)?;
+        // Tenhou logs exist for red-rule east and half games only.
+        let logged = setup.variant == Variant::Red && setup.mode != Mode::Single;
+        let recorder = logged.then(|| Recorder::new(&env)).transpose().map_err(err)?;
+        let names: [String; 4] =
+            std::array::from_fn(|p| setup.seats[p].map_or_else(|| "You".to_string(), |a| format!("{a} {p}")));
+        let mut s = Session {
+            setup,
+            env,
+            names,
+            step: 0,
+            ended: None,
+            recorder,
+            log: None,
+            events: Vec::new(),
+            touched: Instant::now(),
+        };
+        if let Some(r) = &mut s.recorder {
+            r.set_names(s.names.clone());
+        }
+        s.events.push(format!("{} begins", render::round_name(0)));
+        Ok(s)
+    }
+
+    /// The game's setup.
+    pub fn setup(&self) -> &Setup {
+        &self.setup
+    }
+
+    /// The seat the person plays.
+    pub fn human(&self) -> Option<u32> {
+        self.setup.seats.iter().position(Option::is_none).map(|p| p as u32)
+    }
+
+    fn current(&self) -> u32 {
+        self.env.last().current_player[0]
+    }
+
+    /// Where the game stands.
+    pub fn phase(&self) -> Phase {
+        if self.ended.as_ref().is_some_and(|b| !b.over) {
+            Phase::Result
+        } else if self.env.last().terminated[0] || self.ended.is_some() {
+            Phase::Over
+        } else if Some(self.current()) == self.human() {
+            Phase::Human
+        } else {
+            Phase::Agent
+        }
+    }
+
+    fn state(&self) -> Result<GameState, String> {
+        let words = self.env.states_words().map_err(err)?;
+        bytemuck::try_pod_read_unaligned(bytemuck::cast_slice(&words)).map_err(err)
+    }
+
+    /// The board as the person may see it (a spectator sees every hand).
+    pub fn board(&self) -> Result<Board, String> {
+        let mut board = match &self.ended {
+            Some(b) => b.clone(),
+            None => Board::from_state(&self.state()?),
+        };
+        board.names = self.names.clone();
+        Ok(board)
+    }
+
+    /// The board drawn for the page (faces from the page's sprite).
+    pub fn svg(&self, tiles: TileMode) -> Result<String, String> {
+        let opts = Options {
+            tiles,
+            pov: self.human().unwrap_or(0),
+            reveal: self.human().is_none() || self.phase() == Phase::Over,
+            defs: false,
+        };
+        Ok(render::svg(&self.board()?, &opts))
+    }
+
+    /// The person's legal actions (none when it is not their turn).
+    pub fn choices(&self) -> Vec<Choice> {
+        if self.phase() != Phase::Human {
+            return Vec::new();
+        }
+        let names = crate::env::action_names(self.setup.variant);
+        let claim = self.board().ok().and_then(|b| b.claim);
+        self.env
+            .last()
+            .legal_actions(0)
+            .map(|id| {
+                let name = names
+                    .get(id as usize)
+                    .cloned()
+                    .unwrap_or_else(|| format!("action {id}"));
+                let tile = name.strip_prefix("discard_").map(str::to_string);
+                Choice {
+                    id,
+                    label: label(&name, claim),
+                    name,
+                    tile,
+                }
+            })
+            .collect()
+    }
+
+    /// The last lines of the game's story.
+    pub fn events(&self) -> &[String] {
+        let n = self.events.len();
+        &self.events[n.saturating_sub(12)..]
+    }
+
+    /// Names by seat.
+    pub fn names(&self) -> &[String; 4] {
+        &self.names
+    }
+
+    /// The game's Tenhou log, once it is over (red rules only).
+    pub fn log(&self) -> Result<&str, String> {
+        if self.recorder.is_none() {
+            return Err("Tenhou logs are written for red-rule east and half games only".into());
+        }
+        self.log
+            .as_deref()
+            .ok_or_else(|| "the log is ready when the game is over".to_string())
+    }
+
+    /// The person plays `action`, named at decision `step` of the game.
+    pub fn play(&mut self, action: u32, step: u64) -> Result<(), Refusal> {
+        if step != self.step {
+            return Err(Refusal::Stale(format!(
+                "the move was made at decision {step}, the game is at decision {}",
+                self.step
+            )));
+        }
+        if self.phase() != Phase::Human {
+            return Err(Refusal::Stale(
+                format!("it is not your turn ({:?})", self.phase()).to_lowercase(),
+            ));
+        }
+        if !self.env.last().legal_actions(0).any(|a| a == action) {
+            let names = crate::env::action_names(self.setup.variant);
+            let what = names.get(action as usize).map_or_else(
+                || format!("action {action} does not exist"),
+                |n| format!("{n} ({action}) is not legal now"),
+            );
+            let legal: Vec<String> = self.choices().iter().map(|c| c.name.clone()).collect();
+            return Err(Refusal::Illegal(format!("{what}; legal: {}", legal.join(", "))));
+        }
+        self.apply(action).map_err(Refusal::Illegal)
+    }
+
+    /// The agent to move plays, if one is to move; `true` if it did.
+    pub fn agent_move(&mut self) -> Result<bool, String> {
+        if self.phase() != Phase::Agent {
+            return Ok(false);
+        }
+        let current = self.current() as usize;
+        let Some(agent) = self.setup.seats[current] else {
+            return Ok(false);
+        };
+        // Every seat gets the deciding seat's agent; only the current player's entry is read.
+        let action = self.env.agent_actions(&[[agent; 4]]).map_err(err)?;
+        self.apply(action[0])?;
+        Ok(true)
+    }
+
+    /// Leaves a round's result for the next round.
+    pub fn next_round(&mut self) -> Result<(), Refusal> {
+        if self.phase() != Phase::Result {
+            return Err(Refusal::Stale("no round result is waiting".into()));
+        }
+        self.ended = None;
+        self.step += 1;
+        let b = self.board().map_err(Refusal::Illegal)?;
+        self.events.push(format!("{} begins", render::round_name(b.round)));
+        Ok(())
+    }
+
+    fn apply(&mut self, action: u32) -> Result<(), String> {
+        let before = self.state()?;
+        let seat = self.current();
+        let names = crate::env::action_names(self.setup.variant);
+        let name = names.get(action as usize).cloned().unwrap_or_default();
+        let step = self.env.step(&[action]).map_err(err)?.clone();
+        self.step += 1;
+        if let Some(r) = &mut self.recorder {
+            r.observe(&self.env, &[action]).map_err(err)?;
+            if let Some(done) = r.take_finished().pop() {
+                self.log = Some(crate::tenhou::write::game_text(&done.game));
+            }
+        }
+        if name != "pass" && name != "dummy" {
+            self.events.push(format!(
+                "{}: {}",
+                self.names[seat as usize],
+                label(&name, Board::from_state(&before).claim)
+            ));
+        }
+        let e = step.events[0];
+        if e & (ev::RON | ev::TSUMO | ev::EXHAUSTIVE_DRAW | ev::ABORTIVE_DRAW) != 0 {
+            let table = self.env.tables().map_err(err)?.remove(0);
+            let mut board = Board::round_end(&before, &step, 0, &table, self.setup.variant)
+                .ok_or("a round ended without a result")?;
+            board.names = self.names.clone();
+            let deltas: Vec<String> = board
+                .result
+                .iter()
+                .flat_map(|r| {
+                    r.deltas
+                        .iter()
+                        .enumerate()
+                        .map(|(p, d)| format!("{} {d:+}", self.names[p]))
+                })
+                .collect();
+            self.events.push(format!(
+                "{} ends: {}",
+                render::round_name(board.round),
+                deltas.join(", ")
+            ));
+            self.ended = Some(board);
+        }
+        if step.terminated[0] && self.ended.is_none() {
+            self.ended = Some(Board::from_state(&self.state()?));
+        }
+        self.touched = Instant::now();
+        Ok(())
+    }
+}
+
+/// A button's words for an action named `name` (chi says which run it makes with `claim`).
+pub fn label(name: &str, claim: Option<Tile>) -> String {
+    if let Some(t) = name.strip_prefix("discard_") {
+        return format!("Discard {}", spoken(t));
+    }
+    if let Some(t) = name.strip_prefix("self_kan_") {
+        return format!("Kan {}", spoken(t));
+    }
+    let run = |offsets: [i8; 3]| -> String {
+        let Some(t) = claim else { return String::new() };
+        let k = t.kind();
+        let (Some(n), Some(suit)) = (k.number(), k.name().chars().last()) else {
+            return String::new();
+        };
+        let digits: String = offsets.iter().map(|o| char::from(b'0' + (n as i8 + o) as u8)).collect();
+        format!(" {digits}{suit}")
+    };
+    let red = if name.ends_with("_red") { " (red 5)" } else { "" };
+    let base = name.trim_end_matches("_red");
+    match base {
+        "chi_left" => format!("Chi{}{red}", run([0, 1, 2])),
+        "chi_middle" => format!("Chi{}{red}", run([-1, 0, 1])),
+        "chi_right" => format!("Chi{}{red}", run([-2, -1, 0])),
+        "pon" => format!("Pon{red}"),
+        "open_kan" => "Kan".into(),
+        "tsumogiri" => "Discard drawn tile".into(),
+        "riichi" => "Riichi".into(),
+        "tsumo" => "Tsumo".into(),
+        "ron" => "Ron".into(),
+        "pass" => "Pass".into(),
+        "kyuushu" => "Nine terminals (draw)".into(),
+        "dummy" => "Continue".into(),
+        other => other.replace('_', " "),
+    }
+}
+
+/// A tile name as the board's labels read: `E`, `Rd`, `red 5m`.
+fn spoken(name: &str) -> String {
+    const HONORS: [&str; 7] = ["E", "S", "W", "N", "Wh", "Gr", "Rd"];
+    let mut chars = name.chars();
+    match (chars.next().and_then(|c| c.to_digit(10)), chars.next()) {
+        (Some(n @ 1..=7), Some('z')) => HONORS[n as usize - 1].to_string(),
+        (Some(0), Some(suit)) => format!("red 5{suit}"),
+        _ => name.to_string(),
+    }
+}

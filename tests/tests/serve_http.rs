@@ -1,0 +1,393 @@
+//! The web server in process (no socket): every refusal has its status and a message, nothing
+//! answers 5xx to anything a visitor sends, and a whole game played through the API ends with a
+//! Tenhou log that replays through the engine exactly.
+
+use std::time::Duration;
+
+use axum::body::Body;
+use axum::http::{Method, Request, StatusCode};
+use axum::Router;
+use rinshan::serve::{app, Limits};
+use serde_json::{json, Value};
+use tower::ServiceExt;
+
+async fn send(app: &Router, method: Method, uri: &str, body: Option<&str>, json_type: bool) -> (StatusCode, String) {
+    let mut req = Request::builder().method(method).uri(uri);
+    if json_type {
+        req = req.header("content-type", "application/json");
+    }
+    let req = req
+        .body(body.map_or_else(Body::empty, |b| Body::from(b.to_string())))
+        .expect("a request");
+    let resp = app.clone().oneshot(req).await.expect("the router answers");
+    let status = resp.status();
+    let bytes = axum::body::to_bytes(resp.into_body(), 64 << 20).await.expect("a body");
+    (status, String::from_utf8_lossy(&bytes).into_owned())
+}
+
+async fn get(app: &Router, uri: &str) -> (StatusCode, String) {
+    send(app, Method::GET, uri, None, false).await
+}
+
+async fn post(app: &Router, uri: &str, body: &Value) -> (StatusCode, String) {
+    send(app, Method::POST, uri, Some(&body.to_string()), true).await
+}
+
+fn parsed(body: &str) -> Value {
+    serde_json::from_str(body).unwrap_or_else(|e| panic!("JSON ({e}): {body}"))
+}
+
+async fn new_game(app: &Router, body: Value) -> Value {
+    let (status, text) = post(app, "/api/games", &body).await;
+    assert_eq!(status, StatusCode::CREATED, "{text}");
+    parsed(&text)
+}
+
+/// Waits until the agents have moved up to a state the test acts on.
+async fn settled(app: &Router, id: &str) -> Value {
+    for _ in 0..2000 {
+        let (status, text) = get(app, &format!("/api/games/{id}?board=0")).await;
+        assert_eq!(status, StatusCode::OK, "{text}");
+        let v = parsed(&text);
+        if v["phase"] != "agent" {
+            return v;
+        }
+        tokio::time::sleep(Duration::from_millis(2)).await;
+    }
+    panic!("the agents did not move");
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_whole_game_through_the_api_replays_from_its_log() {
+    let app = app(Limits::default());
+    let v = new_game(
+        &app,
+        json!({"mode": "east", "seat": 2, "agents": ["rule", "greedy", "defensive"], "seed": 11, "delay_ms": 0}),
+    )
+    .await;
+    let id = v["id"].as_str().expect("an id").to_string();
+    let (mut moves, mut rounds) = (0, 0);
+    let last = loop {
+        let v = settled(&app, &id).await;
+        match v["phase"].as_str() {
+            Some("human") => {
+                let first = &v["legal"][0];
+                let (status, text) = post(
+                    &app,
+                    &format!("/api/games/{id}/actions"),
+                    &json!({"action": first["id"], "step": v["step"]}),
+                )
+                .await;
+                assert_eq!(status, StatusCode::OK, "{text}");
+                moves += 1;
+            }
+            Some("result") => {
+                let r = &v["result"];
+                assert!(
+                    r["wins"].as_array().is_some_and(|w| !w.is_empty()) || r["draw"].is_string(),
+                    "{r}"
+                );
+                let (status, text) = send(&app, Method::POST, &format!("/api/games/{id}/next"), None, false).await;
+                assert_eq!(status, StatusCode::OK, "{text}");
+                rounds += 1;
+            }
+            Some("over") => break v,
+            other => panic!("phase {other:?}"),
+        }
+    };
+    assert!(moves > 20 && rounds >= 3, "{moves} moves, {rounds} rounds");
+    let r = &last["result"];
+    let scores: Vec<i64> = r["final_scores"]
+        .as_array()
+        .expect("final scores")
+        .iter()
+        .filter_map(Value::as_i64)
+        .collect();
+    assert_eq!(scores.iter().sum::<i64>(), 100_000, "{r}");
+    let mut ranks: Vec<i64> = r["ranks"]
+        .as_array()
+        .expect("ranks")
+        .iter()
+        .filter_map(Value::as_i64)
+        .collect();
+    ranks.sort();
+    assert_eq!(ranks, [0, 1, 2, 3]);
+    // The downloaded log replays through the engine and agrees with it everywhere.
+    let (status, text) = get(&app, &format!("/api/games/{id}/log")).await;
+    assert_eq!(status, StatusCode::OK, "{text}");
+    let game = rinshan::tenhou::log::parse_game("download", &text).expect("a Tenhou log");
+    assert_eq!(game.names[2], "You");
+    let report = rinshan::tenhou::replay::replay(&[game], rinshan::env::Backend::Cpu).expect("it replays");
+    assert!(report.all_agree(), "the log replays exactly");
+    // The replay page of that log.
+    let (status, page) = send(&app, Method::POST, "/api/replay", Some(&text), false).await;
+    assert_eq!(status, StatusCode::OK);
+    assert!(page.starts_with("<!doctype html>") && page.contains("DecompressionStream"));
+    let (status, _) = send(&app, Method::DELETE, &format!("/api/games/{id}"), None, false).await;
+    assert_eq!(status, StatusCode::NO_CONTENT);
+    let (status, _) = get(&app, &format!("/api/games/{id}")).await;
+    assert_eq!(status, StatusCode::NOT_FOUND);
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn every_refusal_has_its_status_and_a_message() {
+    let app = app(Limits {
+        max_games: 3,
+        idle: Duration::from_secs(600),
+    });
+    let error = |text: &str| parsed(text)["error"].as_str().map(str::to_string).unwrap_or_default();
+    // Bad setups: 422 with what is wrong.
+    for (body, words) in [
+        (json!({"seat": 0, "agents": ["rule", "rule"]}), "2 agents"),
+        (json!({"seat": 7, "agents": ["rule", "rule", "rule"]}), "seat 7"),
+        (
+            json!({"seat": 0, "agents": ["rule", "magic", "rule"]}),
+            "unknown agent `magic`",
+        ),
+        (
+            json!({"variant": "blue", "seat": 0, "agents": ["rule", "rule", "rule"]}),
+            "unknown variant",
+        ),
+        (
+            json!({"mode": "long", "agents": ["rule", "rule", "rule", "rule"]}),
+            "unknown mode",
+        ),
+        (
+            json!({"agents": ["rule", "rule", "rule", "rule"], "delay_ms": 99999}),
+            "delay_ms",
+        ),
+    ] {
+        let (status, text) = post(&app, "/api/games", &body).await;
+        assert_eq!(status, StatusCode::UNPROCESSABLE_ENTITY, "{body}: {text}");
+        assert!(error(&text).contains(words), "{body}: {text}");
+    }
+    // Malformed bodies, from axum's extractors.
+    let (status, _) = send(&app, Method::POST, "/api/games", Some("{not json"), true).await;
+    assert_eq!(status, StatusCode::BAD_REQUEST);
+    let (status, _) = send(&app, Method::POST, "/api/games", Some("{}"), false).await;
+    assert_eq!(status, StatusCode::UNSUPPORTED_MEDIA_TYPE);
+    let (status, _) = send(&app, Method::POST, "/api/games", Some(r#"{"agents": 3}"#), true).await;
+    assert_eq!(status, StatusCode::UNPROCESSABLE_ENTITY);
+    let (status, _) = send(
+        &app,
+        Method::POST,
+        "/api/games",
+        Some(r#"{"agents": [], "extra": 1}"#),
+        true,
+    )
+    .await;
+    assert_eq!(status, StatusCode::UNPROCESSABLE_ENTITY);
+    let big = format!(r#"{{"agents": ["{}"]}}"#, "r".repeat(64 * 1024));
+    let (status, _) = send(&app, Method::POST, "/api/games", Some(&big), true).await;
+    assert_eq!(status, StatusCode::PAYLOAD_TOO_LARGE);
+    // Unknown games and routes.
+    for uri in [
+        "/api/games/123",
+        "/api/games/abc",
+        "/api/games/123/log",
+        "/nowhere",
+        "/api/sprite/klingon",
+    ] {
+        let (status, text) = get(&app, uri).await;
+        assert_eq!(status, StatusCode::NOT_FOUND, "{uri}: {text}");
+        assert!(!error(&text).is_empty(), "{uri}");
+    }
+    let (status, _) = post(&app, "/api/games/123/actions", &json!({"action": 0, "step": 0})).await;
+    assert_eq!(status, StatusCode::NOT_FOUND);
+    let (status, _) = send(&app, Method::PUT, "/api/games", Some("{}"), true).await;
+    assert_eq!(status, StatusCode::METHOD_NOT_ALLOWED);
+    // A game where the agents never move (10 s each): seat 3 waits for the dealer.
+    let v = new_game(
+        &app,
+        json!({"mode": "east", "seat": 3, "agents": ["rule", "rule", "rule"], "seed": 1, "delay_ms": 10000}),
+    )
+    .await;
+    let slow = v["id"].as_str().expect("an id").to_string();
+    assert_eq!(v["phase"], "agent");
+    let (status, text) = post(
+        &app,
+        &format!("/api/games/{slow}/actions"),
+        &json!({"action": 0, "step": 0}),
+    )
+    .await;
+    assert_eq!(
+        (status, error(&text).contains("not your turn")),
+        (StatusCode::CONFLICT, true),
+        "{text}"
+    );
+    let (status, _) = send(&app, Method::POST, &format!("/api/games/{slow}/next"), None, false).await;
+    assert_eq!(status, StatusCode::CONFLICT);
+    let (status, text) = get(&app, &format!("/api/games/{slow}/log")).await;
+    assert_eq!(
+        (status, error(&text).contains("when the game is over")),
+        (StatusCode::CONFLICT, true),
+        "{text}"
+    );
+    // A game where the person moves first (the dealer's seat 0): illegal and stale moves.
+    let v = new_game(
+        &app,
+        json!({"mode": "single", "seat": 0, "agents": ["rule", "rule", "rule"], "seed": 1, "delay_ms": 0}),
+    )
+    .await;
+    let id = v["id"].as_str().expect("an id").to_string();
+    let v = settled(&app, &id).await;
+    assert_eq!(v["phase"], "human", "{v}");
+    let legal: Vec<u64> = v["legal"]
+        .as_array()
+        .expect("legal")
+        .iter()
+        .filter_map(|c| c["id"].as_u64())
+        .collect();
+    let illegal = (0..87).find(|a| !legal.contains(a)).expect("an illegal id");
+    let (status, text) = post(
+        &app,
+        &format!("/api/games/{id}/actions"),
+        &json!({"action": illegal, "step": v["step"]}),
+    )
+    .await;
+    assert_eq!(status, StatusCode::UNPROCESSABLE_ENTITY, "{text}");
+    assert!(error(&text).contains("is not legal now; legal:"), "{text}");
+    let (status, text) = post(
+        &app,
+        &format!("/api/games/{id}/actions"),
+        &json!({"action": 5000, "step": v["step"]}),
+    )
+    .await;
+    assert_eq!(
+        (status, error(&text).contains("does not exist")),
+        (StatusCode::UNPROCESSABLE_ENTITY, true),
+        "{text}"
+    );
+    // The refusals changed nothing: the same decision is still open.
+    let again = settled(&app, &id).await;
+    assert_eq!(again["step"], v["step"]);
+    let stale = v["step"].as_u64().expect("a step") + 1;
+    let (status, text) = post(
+        &app,
+        &format!("/api/games/{id}/actions"),
+        &json!({"action": legal[0], "step": stale}),
+    )
+    .await;
+    assert_eq!(status, StatusCode::CONFLICT, "{text}");
+    let (status, text) = post(
+        &app,
+        &format!("/api/games/{id}/actions"),
+        &json!({"action": legal[0], "step": v["step"]}),
+    )
+    .await;
+    assert_eq!(status, StatusCode::OK, "{text}");
+    // The same click again is stale.
+    let (status, _) = post(
+        &app,
+        &format!("/api/games/{id}/actions"),
+        &json!({"action": legal[0], "step": v["step"]}),
+    )
+    .await;
+    assert_eq!(status, StatusCode::CONFLICT);
+    let (status, text) = get(&app, &format!("/api/games/{id}/log")).await;
+    assert_eq!(status, StatusCode::CONFLICT, "single games have no Tenhou log: {text}");
+    // The store is bounded: a fourth game waits.
+    new_game(
+        &app,
+        json!({"agents": ["rule", "rule", "rule", "rule"], "delay_ms": 10000}),
+    )
+    .await;
+    let (status, text) = post(&app, "/api/games", &json!({"agents": ["rule", "rule", "rule", "rule"]})).await;
+    assert_eq!(status, StatusCode::SERVICE_UNAVAILABLE, "{text}");
+    // A bad upload.
+    let (status, text) = send(&app, Method::POST, "/api/replay", Some("{\"log\": 3}"), false).await;
+    assert_eq!(status, StatusCode::UNPROCESSABLE_ENTITY, "{text}");
+    // The pages and their assets.
+    for (uri, kind) in [
+        ("/", "text/html"),
+        ("/spectate", "text/html"),
+        ("/replay", "text/html"),
+        ("/static/app.js", "javascript"),
+        ("/static/style.css", "text/css"),
+        ("/favicon.ico", "svg"),
+        ("/api/sprite/ascii", "svg"),
+    ] {
+        let req = Request::builder().uri(uri).body(Body::empty()).expect("a request");
+        let resp = app.clone().oneshot(req).await.expect("an answer");
+        assert_eq!(resp.status(), StatusCode::OK, "{uri}");
+        let ct = resp
+            .headers()
+            .get("content-type")
+            .and_then(|v| v.to_str().ok())
+            .unwrap_or("");
+        assert!(ct.contains(kind), "{uri}: {ct}");
+    }
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn idle_games_are_dropped() {
+    let app = app(Limits {
+        max_games: 1,
+        idle: Duration::from_millis(200),
+    });
+    new_game(
+        &app,
+        json!({"agents": ["rule", "rule", "rule", "rule"], "delay_ms": 10000}),
+    )
+    .await;
+    let (status, _) = post(&app, "/api/games", &json!({"agents": ["rule", "rule", "rule", "rule"]})).await;
+    assert_eq!(status, StatusCode::SERVICE_UNAVAILABLE);
+    tokio::time::sleep(Duration::from_millis(300)).await;
+    new_game(
+        &app,
+        json!({"agents": ["rule", "rule", "rule", "rule"], "delay_ms": 10000}),
+    )
+    .await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn no_request_gets_a_server_error() {
+    let app = app(Limits::default());
+    let v = new_game(
+        &app,
+        json!({"mode": "single", "seat": 0, "agents": ["random", "random", "random"], "seed": 3, "delay_ms": 0}),
+    )
+    .await;
+    let id = v["id"].as_str().expect("an id").to_string();
+    // A deterministic stream of odd requests: paths, methods, bodies and content types.
+    let mut x: u64 = 0x9e37_79b9_7f4a_7c15;
+    let mut next = move || {
+        x ^= x << 13;
+        x ^= x >> 7;
+        x ^= x << 17;
+        x
+    };
+    let paths = [
+        format!("/api/games/{id}"),
+        format!("/api/games/{id}/actions"),
+        format!("/api/games/{id}/next"),
+        format!("/api/games/{id}?tiles=zz"),
+        format!("/api/games/{id}?board=7&tiles=ja"),
+        format!("/api/games/{id}?unknown=1"),
+        "/api/games".to_string(),
+        "/api/replay".to_string(),
+        "/api/games/%ff%fe".to_string(),
+        "/api/games/99999999999999999999999".to_string(),
+        "/static/../Cargo.toml".to_string(),
+    ];
+    let bodies = [
+        "",
+        "null",
+        "[]",
+        "{}",
+        r#"{"action": -1, "step": 0}"#,
+        r#"{"action": 4294967295, "step": 18446744073709551615}"#,
+        r#"{"action": 1.5, "step": "x"}"#,
+        r#"{"seat": null, "agents": ["rule","rule","rule","rule"], "seed": -4}"#,
+        "\u{0}\u{1}garbage",
+        r#"{"mode": "single", "agents": ["rule","rule","rule","rule"], "delay_ms": 0, "seed": 18446744073709551615}"#,
+    ];
+    let methods = [Method::GET, Method::POST, Method::DELETE, Method::PATCH];
+    for _ in 0..300 {
+        let path = &paths[(next() % paths.len() as u64) as usize];
+        let body = bodies[(next() % bodies.len() as u64) as usize];
+        let method = methods[(next() % methods.len() as u64) as usize].clone();
+        let (status, text) = send(&app, method.clone(), path, Some(body), next() % 2 == 0).await;
+        assert!(!status.is_server_error(), "{method} {path} {body:?}: {status} {text}");
+    }
+}
