@@ -393,6 +393,13 @@ pub(crate) const RECORD_WORDS: (usize, usize, usize) = (
     crate::hand::words::<kernel::StepView>(),
 );
 
+/// The uma `config` pays: its own, or the spec's `UMA` (thousands) x 1000.
+fn uma_of(config: &Config) -> [i32; 4] {
+    config
+        .uma
+        .unwrap_or(with_variant!(config.variant, v => v::host::UMA.map(|x| x * 1000)))
+}
+
 /// splitmix64's finalizer.
 fn mix64(mut z: u64) -> u64 {
     z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
@@ -598,8 +605,8 @@ impl Env {
         let variant = config.variant;
         let b = config.batch;
         let words = RECORD_WORDS;
-        let (uma, penalty, num_actions) = with_variant!(variant, v => (
-            config.uma.unwrap_or(v::host::UMA.map(|x| x * 1000)),
+        let uma = uma_of(&config);
+        let (penalty, num_actions) = with_variant!(variant, v => (
             config.penalty.unwrap_or(v::host::ILLEGAL_ACTION_PENALTY),
             v::NUM_ACTIONS,
         ));
@@ -647,6 +654,11 @@ impl Env {
     /// The rules played.
     pub fn variant(&self) -> Variant {
         self.config.variant
+    }
+
+    /// The uma this env pays at a game's end, by final place (points).
+    pub fn uma(&self) -> [i32; 4] {
+        uma_of(&self.config)
     }
 
     /// Number of games stepped together.

@@ -337,7 +337,7 @@ fn snapshots_of_fixed_positions_and_tile_modes() {
     let mut ends = all.iter().filter_map(|(g, _, ps, end)| {
         let (last, end) = (ps.last()?, end.as_ref()?);
         let table = &end.table;
-        let mut b = Board::round_end(&last.state, &end.step, 0, table, Variant::Red)?;
+        let mut b = Board::round_end(&last.state, &end.step, 0, table, Variant::Red, end.uma)?;
         b.names = games[*g].names.clone();
         Some(b)
     });

@@ -2,6 +2,7 @@
 //! wgpu-heavy test executable for this crate instead of one per file).
 
 mod agents;
+mod browser;
 mod brute_force;
 mod env_api;
 mod env_parity;

@@ -1,6 +1,7 @@
 //! `rinshan bench hands`: evaluations per second of the generated kernels on the CPU (one thread,
 //! all threads) and on the GPU, beside the `xiangting` crate's shanten on the same hands.
 //! `rinshan bench env`: environment steps per second of random self-play by batch size.
+//! `rinshan bench render`: boards drawn per second (decode, SVG, PNG) from self-play positions.
 
 use std::time::Instant;
 
@@ -46,6 +47,15 @@ pub enum What {
         #[arg(long, value_delimiter = ',')]
         observe: Vec<Form>,
     },
+    /// Boards drawn per second on one thread: decoding a state, writing the SVG (page fragment
+    /// and standalone file), rasterising the PNG; positions from rule-agent self-play
+    Render {
+        /// Positions measured
+        #[arg(long, default_value_t = 2000)]
+        positions: usize,
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+    },
 }
 
 fn rate(n: usize, f: impl FnOnce()) -> f64 {
@@ -60,6 +70,7 @@ fn row(name: &str, per_s: f64, baseline: f64) {
 
 pub fn run(what: What) -> Result<(), CliError> {
     match what {
+        What::Render { positions, seed } => render_bench(positions, seed),
         What::Hands {
             hands,
             seed,
@@ -279,5 +290,89 @@ fn hands_bench(hands: usize, seed: u64, variant: Variant, no_gpu: bool) -> Resul
         row(&format!("rinshan gpu ({})", g.adapter()), r, base);
         println!("  gpu == cpu: {}", gpu_out == one_thread);
     }
+    Ok(())
+}
+
+/// Times each stage of drawing a board over `n` self-play positions (the PNG on a tenth of them:
+/// it is thousands of times slower).
+fn render_bench(n: usize, seed: u64) -> Result<(), CliError> {
+    use rinshan::agents::Agent;
+    use rinshan::generated::kernel::GameState;
+    use rinshan::render::{self, Board, Options, TileMode};
+    let mut env = Env::new(Config {
+        seed,
+        threads: Some(1),
+        auto_reset: true,
+        ..Config::new(Variant::Red, 1)
+    })
+    .map_err(CliError::failure)?;
+    env.reset().map_err(CliError::failure)?;
+    let mut states: Vec<GameState> = Vec::with_capacity(n);
+    while states.len() < n.max(1) {
+        let words = env.states_words().map_err(CliError::failure)?;
+        states.push(bytemuck::pod_read_unaligned(bytemuck::cast_slice(&words)));
+        let a = env.agent_actions(&[[Agent::Rule; 4]]).map_err(CliError::failure)?;
+        env.step(&a).map_err(CliError::failure)?;
+    }
+    let boards: Vec<Board> = states.iter().map(Board::from_state).collect();
+    let decode = rate(states.len(), || {
+        for s in &states {
+            std::hint::black_box(Board::from_state(s));
+        }
+    });
+    let mut bytes = [0usize; 2];
+    let mut svg_rate = |defs: bool| {
+        let opts = Options {
+            tiles: TileMode::En,
+            defs,
+            ..Options::default()
+        };
+        rate(boards.len(), || {
+            for b in &boards {
+                bytes[usize::from(defs)] += std::hint::black_box(render::svg(b, &opts)).len();
+            }
+        })
+    };
+    let fragment = svg_rate(false);
+    let standalone = svg_rate(true);
+    let few: Vec<&Board> = boards.iter().step_by(10).collect();
+    let mut failed = None;
+    let png = rate(few.len(), || {
+        for b in &few {
+            if let Err(e) = render::png::png(&render::svg(b, &Options::default()), 1.0) {
+                failed = Some(e);
+            }
+        }
+    });
+    if let Some(e) = failed {
+        return Err(CliError::failure(e));
+    }
+    println!(
+        "render bench: {} self-play positions (rule agents, red half games, seed {seed}), one thread",
+        boards.len()
+    );
+    let per = |r: f64| 1e6 / r;
+    println!(
+        "  decode state -> Board          {:>10.0} /s  {:>8.2} us each",
+        decode,
+        per(decode)
+    );
+    println!(
+        "  SVG, page fragment (no defs)   {:>10.0} /s  {:>8.2} us each  {:>6.1} KB",
+        fragment,
+        per(fragment),
+        bytes[0] as f64 / boards.len() as f64 / 1024.0
+    );
+    println!(
+        "  SVG, standalone (faces inline) {:>10.0} /s  {:>8.2} us each  {:>6.1} KB",
+        standalone,
+        per(standalone),
+        bytes[1] as f64 / boards.len() as f64 / 1024.0
+    );
+    println!(
+        "  PNG 960x960 (resvg)            {:>10.1} /s  {:>8.0} us each",
+        png,
+        per(png)
+    );
     Ok(())
 }

@@ -123,7 +123,7 @@ fn log_board(path: &Path, round: usize, step: usize) -> Result<Board, CliError> 
     }
     let result = match (positions.last(), &end) {
         (Some(last), Some(end)) if step == positions.len() => {
-            Board::round_end(&last.state, &end.step, 0, &end.table, Variant::Red)
+            Board::round_end(&last.state, &end.step, 0, &end.table, Variant::Red, end.uma)
         }
         _ => None,
     };
@@ -159,7 +159,7 @@ fn seed_board(seed: u64, agents: &[Agent], variant: Variant, steps: usize) -> Re
         let before = state(&env)?;
         let step = env.step(&action).map_err(CliError::failure)?.clone();
         let table = env.tables().map_err(CliError::failure)?.remove(0);
-        ended = Board::round_end(&before, &step, 0, &table, variant);
+        ended = Board::round_end(&before, &step, 0, &table, variant, env.uma());
     }
     let mut board = match ended {
         Some(board) => board,

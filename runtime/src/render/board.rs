@@ -90,8 +90,10 @@ pub struct RoundResult {
     pub draw: Option<DrawKind>,
     /// Seats tenpai at an exhaustive draw.
     pub tenpai: [bool; 4],
-    /// Each seat's change of points in the round (sticks and honba included; uma at a game's end).
+    /// Each seat's change of points in the round (sticks and honba included, uma not).
     pub deltas: [i32; 4],
+    /// The uma paid by final place, where the game ended with this round.
+    pub uma: Option<[i32; 4]>,
     /// Ura-dora indicators, shown where a riichi hand won.
     pub ura: Vec<Tile>,
     /// Final places (0 = first) where the game ended with this round.
@@ -212,8 +214,17 @@ impl Board {
 
     /// The table of `before` (the state a step started from) with the result of that step, where
     /// the step ended a round: `after` is what the step reported and `table` the env's table after
-    /// it (its win records). The winners' hands (with the winning tile) are shown face up.
-    pub fn round_end(before: &GameState, step: &Step, env: usize, table: &Table, variant: Variant) -> Option<Board> {
+    /// it (its win records), `uma` what the env pays by final place (the step's rewards include
+    /// it in a game's last step; the result shows it apart). The winners' hands (with the winning
+    /// tile) are shown face up.
+    pub fn round_end(
+        before: &GameState,
+        step: &Step,
+        env: usize,
+        table: &Table,
+        variant: Variant,
+        uma: [i32; 4],
+    ) -> Option<Board> {
         use crate::env::events as e;
         let ev = *step.events.get(env)?;
         if ev & (e::RON | e::TSUMO | e::EXHAUSTIVE_DRAW | e::ABORTIVE_DRAW) == 0 {
@@ -241,7 +252,7 @@ impl Board {
                     yaku: w
                         .yaku_ids()
                         .filter_map(|y| names.get(y as usize))
-                        .map(|n| n.to_string())
+                        .map(|n| n.replace('_', " "))
                         .collect(),
                     han: w.han,
                     fu: w.fu,
@@ -263,11 +274,14 @@ impl Board {
         let draw = if wins.is_empty() { table.draw.kind } else { None };
         let over = step.terminated[env];
         let ranks = step.ranks.get(env).copied().filter(|_| over && !step.illegal[env]);
+        let paid = ranks.map(|r| std::array::from_fn(|p| uma[usize::from(r[p]).min(3)]));
+        let rewards = step.rewards[env].map(|r| (r * 100.0).round() as i32);
         board.result = Some(RoundResult {
             wins,
             draw,
             tenpai: if draw.is_some() { table.draw.tenpai } else { [false; 4] },
-            deltas: step.rewards[env].map(|r| (r * 100.0).round() as i32),
+            deltas: std::array::from_fn(|p| rewards[p] - paid.map_or(0, |u: [i32; 4]| u[p])),
+            uma: paid,
             ura,
             final_scores: ranks.map(|_| table.scores),
             ranks,

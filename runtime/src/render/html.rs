@@ -62,7 +62,7 @@ pub fn frames(game: &Game) -> Result<Vec<(String, Board)>, String> {
             out.push((caption, board));
         }
         if let (Some(last), Some(end)) = (positions.last(), end) {
-            if let Some(mut board) = Board::round_end(&last.state, &end.step, 0, &end.table, Variant::Red) {
+            if let Some(mut board) = Board::round_end(&last.state, &end.step, 0, &end.table, Variant::Red, end.uma) {
                 board.names = name.clone();
                 out.push((
                     format!("{}, {} honba: result", round_name(board.round), board.honba),

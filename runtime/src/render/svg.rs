@@ -365,22 +365,22 @@ fn result_panel(out: &mut String, used: &mut UsedTiles, board: &Board, r: &Round
             lines.push((format!("Tenpai: {t}"), 16, "#ffffff"));
         }
     }
-    let deltas: Vec<String> = (0..4u32)
-        .map(|p| format!("{} ({}) {:+}", name(board, p), wind(board, p), r.deltas[p as usize]))
-        .collect();
-    lines.push((deltas.join("   "), 18, "#ffffff"));
+    // The payments (and at a game's end the uma and standing) in four columns, one per seat.
+    let mut columns: Vec<[String; 4]> = vec![std::array::from_fn(|p| {
+        format!("{} ({})", name(board, p as u32), wind(board, p as u32))
+    })];
+    columns.push(r.deltas.map(|d| format!("{d:+}")));
     if let (Some(ranks), Some(scores)) = (r.ranks, r.final_scores) {
-        let mut order: Vec<u32> = (0..4).collect();
-        order.sort_by_key(|&p| ranks[p as usize]);
-        let standing: Vec<String> = order
-            .iter()
-            .map(|&p| format!("{}. {} {}", ranks[p as usize] + 1, name(board, p), scores[p as usize]))
-            .collect();
-        lines.push(("Game over".to_string(), 22, "#ffe082"));
-        lines.push((standing.join("   "), 16, "#ffffff"));
+        lines.push(("Game over".to_string(), 20, "#ffe082"));
+        if let Some(uma) = r.uma {
+            columns.push(uma.map(|u| format!("uma {u:+}")));
+        }
+        columns.push(std::array::from_fn(|p| format!("{}. {}", ranks[p] + 1, scores[p])));
     }
-    let height =
-        40.0 + lines.iter().map(|l| l.1 as f32 + 12.0).sum::<f32>() + if r.ura.is_empty() { 0.0 } else { 44.0 };
+    let height = 48.0
+        + lines.iter().map(|l| l.1 as f32 + 12.0).sum::<f32>()
+        + 24.0 * columns.len() as f32
+        + if r.ura.is_empty() { 0.0 } else { 44.0 };
     let (w, x, y) = (700.0, C - 350.0, C - height / 2.0);
     let _ = write!(
         out,
@@ -395,6 +395,18 @@ fn result_panel(out: &mut String, used: &mut UsedTiles, board: &Board, r: &Round
             r#"<text x="{C}" y="{ty}" font-size="{size}" fill="{fill}" text-anchor="middle">{text}</text>"#
         );
         ty += 6.0;
+    }
+    ty += 6.0;
+    for (row, cells) in columns.iter().enumerate() {
+        ty += 24.0;
+        let (size, fill) = if row == 0 { (15, "#cfe3d4") } else { (17, "#ffffff") };
+        for (p, cell) in cells.iter().enumerate() {
+            let _ = write!(
+                out,
+                r#"<text x="{}" y="{ty}" font-size="{size}" fill="{fill}" text-anchor="middle">{cell}</text>"#,
+                x + 87.5 + 175.0 * p as f32
+            );
+        }
     }
     if !r.ura.is_empty() {
         let _ = write!(

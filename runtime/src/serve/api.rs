@@ -192,6 +192,7 @@ fn view_json(id: u64, s: &Session, tiles: TileMode, board: bool) -> Result<Value
         "legal": s.choices(),
         "result": b.result.as_ref().map(|r| json!({
             "deltas": r.deltas,
+            "uma": r.uma,
             "wins": r.wins.iter().map(|w| json!({"seat": w.seat, "from": w.from, "yaku": w.yaku, "han": w.han, "fu": w.fu, "yakuman": w.yakuman})).collect::<Vec<_>>(),
             "draw": r.draw.map(|d| format!("{d:?}")),
             "ranks": r.ranks,

@@ -296,7 +296,7 @@ impl Session {
         let e = step.events[0];
         if e & (ev::RON | ev::TSUMO | ev::EXHAUSTIVE_DRAW | ev::ABORTIVE_DRAW) != 0 {
             let table = self.env.tables().map_err(err)?.remove(0);
-            let mut board = Board::round_end(&before, &step, 0, &table, self.setup.variant)
+            let mut board = Board::round_end(&before, &step, 0, &table, self.setup.variant, self.env.uma())
                 .ok_or("a round ended without a result")?;
             board.names = self.names.clone();
             let deltas: Vec<String> = board

@@ -31,6 +31,8 @@ pub struct RoundEnd {
     pub step: crate::env::Step,
     /// The table after it (the win records, the draw, the scores).
     pub table: crate::env::Table,
+    /// The uma the replaying env pays (none: replays compare the logged payments).
+    pub uma: [i32; 4],
 }
 
 /// The decisions of round `round` (0-based index into the game's rounds) in order of play.
@@ -97,7 +99,15 @@ pub fn round_replay(game: &Game, round: usize) -> Result<(Vec<Position>, Option<
             || after.illegal[0]
         {
             let table = env.tables().map_err(|e| e.to_string())?.remove(0);
-            return Ok((out, Some(RoundEnd { step: after, table })));
+            let uma = env.uma();
+            return Ok((
+                out,
+                Some(RoundEnd {
+                    step: after,
+                    table,
+                    uma,
+                }),
+            ));
         }
     }
     Ok((out, None))

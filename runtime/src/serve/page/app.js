@@ -102,7 +102,8 @@ function draw() {
   $("status").appendChild(h);
   const scores = document.createElement("p");
   scores.className = "scores";
-  scores.textContent = v.names.map((n, p) => n + " " + v.scores[p]).join(" · ");
+  const points = v.result && v.result.final_scores ? v.result.final_scores : v.scores;
+  scores.textContent = v.names.map((n, p) => n + " " + points[p]).join(" · ");
   $("status").appendChild(scores);
   if ($("actions")) drawActions(v);
   drawResult(v);
@@ -117,6 +118,7 @@ function draw() {
 function drawActions(v) {
   const box = $("actions");
   box.innerHTML = "";
+  box.hidden = v.phase !== "human" && v.phase !== "agent";
   if (v.phase !== "human") {
     box.textContent = v.phase === "agent" ? "Waiting for " + v.names[v.current] + "…" : "";
     return;
@@ -173,6 +175,12 @@ function drawResult(v) {
     tr.innerHTML = "<td></td><td class='num'></td>";
     tr.children[0].textContent = n;
     tr.children[1].textContent = (r.deltas[p] > 0 ? "+" : "") + r.deltas[p];
+    if (r.uma) {
+      const td = document.createElement("td");
+      td.className = "num uma";
+      td.textContent = "uma " + (r.uma[p] > 0 ? "+" : "") + r.uma[p];
+      tr.appendChild(td);
+    }
     t.appendChild(tr);
   });
   box.appendChild(t);
