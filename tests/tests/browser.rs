@@ -180,15 +180,16 @@ async fn play_a_round(c: &Client, base: &str) {
             tokio::time::sleep(Duration::from_millis(25)).await;
             continue;
         }
-        if !shot && clicks >= 4 {
-            screenshot(&c, "play.png").await;
-            shot = true;
-        }
         let step = body_data(&c, "step").await;
         let buttons = c
             .find_all(Locator::Css("#actions button.action"))
             .await
             .expect("buttons");
+        // The picture for a person: a call offered (buttons showing), or a few turns in.
+        if !shot && (clicks >= 9 || (clicks >= 3 && !buttons.is_empty())) {
+            screenshot(&c, "play.png").await;
+            shot = true;
+        }
         let target = match buttons.into_iter().next() {
             Some(b) => b,
             None => c

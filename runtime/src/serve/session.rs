@@ -347,17 +347,22 @@ pub fn label(name: &str, claim: Option<Tile>) -> String {
         "chi_left" => format!("Chi{}{red}", run([0, 1, 2])),
         "chi_middle" => format!("Chi{}{red}", run([-1, 0, 1])),
         "chi_right" => format!("Chi{}{red}", run([-2, -1, 0])),
-        "pon" => format!("Pon{red}"),
-        "open_kan" => "Kan".into(),
+        "pon" => format!("Pon{}{red}", on(claim)),
+        "open_kan" => format!("Kan{}", on(claim)),
         "tsumogiri" => "Discard drawn tile".into(),
         "riichi" => "Riichi".into(),
         "tsumo" => "Tsumo".into(),
-        "ron" => "Ron".into(),
+        "ron" => format!("Ron{}", on(claim)),
         "pass" => "Pass".into(),
         "kyuushu" => "Nine terminals (draw)".into(),
         "dummy" => "Continue".into(),
         other => other.replace('_', " "),
     }
+}
+
+/// ` 7s`: the claimed tile, after a call's name.
+fn on(claim: Option<Tile>) -> String {
+    claim.map_or_else(String::new, |t| format!(" {}", spoken(&t.name())))
 }
 
 /// A tile name as the board's labels read: `E`, `Rd`, `red 5m`.
