@@ -311,6 +311,27 @@ class Env:
 
     # -- saving ------------------------------------------------------------------------------
 
+    def render(
+        self,
+        i: int = 0,
+        tiles: str = "en",
+        pov: Any = None,
+        reveal: bool = False,
+        png: bool = False,
+    ) -> Any:
+        """Env `i`'s table as SVG text (or PNG bytes with `png=True`): `pov` (default: the seat to
+        act) at the bottom with its hand face up, the others face down unless `reveal`; `tiles` is
+        `ja`, `en` or `ascii`. In a notebook: `IPython.display.SVG(env.render(0))`."""
+        if not isinstance(i, (int, np.integer)) or isinstance(i, bool) or i < 0:
+            raise TypeError(f"i must be an env index (an int >= 0), not {i!r}")
+        if pov is not None and (
+            not isinstance(pov, (int, np.integer)) or isinstance(pov, bool) or pov < 0
+        ):
+            raise TypeError(f"pov must be a seat (0..3) or None, not {pov!r}")
+        return self._core.render(
+            int(i), str(tiles), None if pov is None else int(pov), bool(reveal), bool(png)
+        )
+
     def get_state(self) -> np.ndarray:
         """Every game as (num_envs, W) uint32 words (pickle-able), for `set_state`."""
         return self._core.get_state()

@@ -526,6 +526,48 @@ impl PyEnv {
         Ok(PyArray1::from_vec(py, actions.into_iter().map(i64::from).collect()))
     }
 
+    /// Env `i`'s table as SVG text (`png`: PNG bytes), `pov` at the bottom (default: the seat to act).
+    #[pyo3(signature = (i, tiles, pov, reveal, png))]
+    fn render<'py>(
+        &mut self,
+        py: Python<'py>,
+        i: usize,
+        tiles: &str,
+        pov: Option<u32>,
+        reveal: bool,
+        png: bool,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        use rinshan::render::{self, Board, Options, TileMode};
+        let tiles: TileMode = parse("tiles", tiles)?;
+        let env = self.env()?;
+        let b = env.batch();
+        if i >= b {
+            return Err(PyValueError::new_err(format!("env {i} does not exist: there are {b}")));
+        }
+        if pov.is_some_and(|p| p > 3) {
+            return Err(PyValueError::new_err(format!("pov {pov:?}: seats are 0..3")));
+        }
+        let words = env.states_words().map_err(env_error)?;
+        let n = env.state_words();
+        let state: rinshan::generated::kernel::GameState =
+            bytemuck::pod_read_unaligned(bytemuck::cast_slice(&words[i * n..(i + 1) * n]));
+        let board = Board::from_state(&state);
+        let opts = Options {
+            tiles,
+            pov: pov.unwrap_or(board.current),
+            reveal,
+            defs: true,
+        };
+        let svg = render::svg(&board, &opts);
+        if png {
+            let bytes = py
+                .detach(|| render::png::png(&svg, 1.0))
+                .map_err(PyRuntimeError::new_err)?;
+            return Ok(pyo3::types::PyBytes::new(py, &bytes).into_any());
+        }
+        Ok(pyo3::types::PyString::new(py, &svg).into_any())
+    }
+
     /// Every env's game as uint32 words (B, W): the kernel state and a check pair.
     fn get_state<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<u32>>> {
         let env = self.env()?;

@@ -252,3 +252,48 @@ def test_step_releases_the_gil():
         int(np.searchsorted(ticks, t1) - np.searchsorted(ticks, t0, "right")) for t0, t1 in inside
     )
     assert during > 0
+
+
+def test_render_draws_what_the_seat_holds():
+    import xml.etree.ElementTree as ET
+
+    env = rinshan.make(num_envs=3, num_threads=1, observation="tokens")
+    ts = play(env, 37, seed=4)[-1]
+    names = [f"{n}{s}" for s in "mps" for n in range(1, 10)] + [f"{n}z" for n in range(1, 8)]
+    for i in range(3):
+        seat = int(ts.current_player[i])
+        svg = env.render(i, tiles="ascii")
+        tiles = [
+            g
+            for g in ET.fromstring(svg).iter("{http://www.w3.org/2000/svg}g")
+            if g.get("class") == "tile"
+        ]
+        mine = [
+            g.get("data-tile")
+            for g in tiles
+            if g.get("data-seat") == str(seat) and g.get("data-zone") in ("hand", "drawn")
+        ]
+        others = [
+            g.get("data-tile")
+            for g in tiles
+            if g.get("data-seat") not in (str(seat), "4")
+            and g.get("data-zone") in ("hand", "drawn")
+        ]
+        # The seat to act sees its own hand, as its observation counts it (red fives as fives).
+        counts = np.zeros(34, dtype=int)
+        for t in mine:
+            counts[names.index(t.replace("0", "5"))] += 1
+        assert (counts == ts.observation["hand"][i]).all()
+        assert others and set(others) == {"back"}
+        revealed = env.render(i, pov=(seat + 1) % 4, reveal=True)
+        assert 'data-tile="back" data-seat="0" data-zone="hand"' not in revealed
+    png = env.render(0, tiles="ja", png=True)
+    assert isinstance(png, bytes) and png[:8] == b"\x89PNG\r\n\x1a\n"
+    with pytest.raises(ValueError, match="env 3 does not exist"):
+        env.render(3)
+    with pytest.raises(ValueError, match="unknown tile mode"):
+        env.render(0, tiles="kanji")
+    with pytest.raises(ValueError, match="seats are 0..3"):
+        env.render(0, pov=4)
+    with pytest.raises(TypeError):
+        env.render(-1)
