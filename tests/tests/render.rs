@@ -407,3 +407,49 @@ fn image_size_and_colours(png: &[u8]) -> (u32, u32, usize) {
         .count();
     (pixmap.width(), pixmap.height(), light)
 }
+
+#[test]
+fn the_replay_page_holds_every_decision_and_each_result() {
+    use base64::Engine as _;
+    use std::io::Read as _;
+    let games = games();
+    let game = &games[0];
+    let page = render::html::replay_html(game, 0).expect("a page");
+    let data = page
+        .split("const DATA = \"")
+        .nth(1)
+        .and_then(|rest| rest.split('"').next())
+        .expect("the inlined game");
+    let packed = base64::engine::general_purpose::STANDARD.decode(data).expect("base64");
+    let mut json = String::new();
+    flate2::read::GzDecoder::new(&packed[..])
+        .read_to_string(&mut json)
+        .expect("gzip");
+    let v: serde_json::Value = serde_json::from_str(&json).expect("JSON");
+    let mut want = 0;
+    for r in 0..game.rounds.len() {
+        let (ps, end) = round_replay(game, r).expect("the round replays");
+        want += ps.len() + usize::from(end.is_some());
+    }
+    let frames = v["frames"].as_array().expect("frames");
+    assert_eq!(frames.len(), want, "a frame per decision and one result per round");
+    assert_eq!(v["rounds"].as_array().map(Vec::len), Some(game.rounds.len()));
+    let results = frames
+        .iter()
+        .filter(|f| f["svg"].as_str().is_some_and(|s| s.contains("class=\"result\"")))
+        .count();
+    assert_eq!(results, game.rounds.len());
+    for f in frames.iter().step_by(50) {
+        let svg = f["svg"].as_str().expect("an SVG");
+        assert!(!tiles_of(svg).is_empty());
+        // Faces come from the page's sprite: a frame carries no art of its own.
+        assert!(!svg.contains("<symbol"));
+    }
+    let sprites = v["sprites"].as_array().expect("sprites");
+    assert_eq!(sprites.len(), 3);
+    for s in sprites {
+        let sheet = s[1].as_str().expect("a sprite");
+        roxmltree::Document::parse(sheet).expect("the sprite parses");
+        assert_eq!(sheet.matches("<symbol").count(), 38, "37 tiles and the back");
+    }
+}

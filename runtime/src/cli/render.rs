@@ -56,7 +56,7 @@ pub struct Args {
     #[arg(long, short)]
     out: Option<PathBuf>,
     /// Write the log's whole game as a self-contained HTML replay page here
-    #[arg(long, requires = "log")]
+    #[arg(long)]
     html: Option<PathBuf>,
 }
 
@@ -69,6 +69,9 @@ pub fn run(args: Args) -> Result<(), CliError> {
             "--scale {}: give a number in (0, 8]",
             args.scale
         )));
+    }
+    if args.html.is_some() && args.log.is_none() {
+        return Err(CliError::input("--html writes a logged game: give the log file"));
     }
     if let (Some(log), Some(html)) = (&args.log, &args.html) {
         let game = read_game(log).map_err(CliError::input)?;
@@ -192,6 +195,14 @@ fn state_board(path: &Path, variant: Variant) -> Result<Board, CliError> {
         ..Config::new(variant, 1)
     })
     .map_err(CliError::failure)?;
+    if words.len() != env.saved_words() {
+        return Err(CliError::input(format!(
+            "{}: {} words; one saved {variant} game is {} (Python: env.get_state()[i].tofile(path))",
+            path.display(),
+            words.len(),
+            env.saved_words()
+        )));
+    }
     env.load_states(&words)
         .map_err(|e| CliError::input(format!("{}: {e}", path.display())))?;
     Ok(Board::from_state(&state(&env)?))
