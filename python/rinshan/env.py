@@ -324,10 +324,10 @@ class Env:
         `ja`, `en` or `ascii`. In a notebook: `IPython.display.SVG(env.render(0))`."""
         if not isinstance(i, (int, np.integer)) or isinstance(i, bool) or i < 0:
             raise TypeError(f"i must be an env index (an int >= 0), not {i!r}")
-        if pov is not None and (
-            not isinstance(pov, (int, np.integer)) or isinstance(pov, bool) or pov < 0
-        ):
+        if pov is not None and (not isinstance(pov, (int, np.integer)) or isinstance(pov, bool)):
             raise TypeError(f"pov must be a seat (0..3) or None, not {pov!r}")
+        if pov is not None and not 0 <= pov <= 3:
+            raise ValueError(f"pov {pov}: seats are 0..3")
         return self._core.render(
             int(i), str(tiles), None if pov is None else int(pov), bool(reveal), bool(png)
         )

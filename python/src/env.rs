@@ -547,11 +547,8 @@ impl PyEnv {
         if pov.is_some_and(|p| p > 3) {
             return Err(PyValueError::new_err(format!("pov {pov:?}: seats are 0..3")));
         }
-        let words = env.states_words().map_err(env_error)?;
-        let n = env.state_words();
-        let state: rinshan::generated::kernel::GameState =
-            bytemuck::pod_read_unaligned(bytemuck::cast_slice(&words[i * n..(i + 1) * n]));
-        let board = Board::from_state(&state);
+        let states = env.game_states().map_err(env_error)?;
+        let board = Board::from_state(&states[i]);
         let opts = Options {
             tiles,
             pov: pov.unwrap_or(board.current),

@@ -9,12 +9,12 @@ pub const MODE_HALF: u32 = 2;
 
 // What the current player is deciding.
 const PHASE_TURN: u32 = 0; // after a draw or a call: discard, tsumo, kan, riichi, kyuushu
-const PHASE_RIICHI_DISCARD: u32 = 1; // riichi declared: discard a tile that keeps tenpai
+pub const PHASE_RIICHI_DISCARD: u32 = 1; // riichi declared: discard a tile that keeps tenpai
 pub const PHASE_CLAIM: u32 = 2; // a discard (or an added kan) waits for each claimant's decision
 pub const PHASE_OVER: u32 = 3; // the game has ended
 
 // Per-seat flags.
-const SEAT_RIICHI: u32 = 1; // riichi accepted (stick paid)
+pub const SEAT_RIICHI: u32 = 1; // riichi accepted (stick paid)
 const SEAT_DOUBLE_RIICHI: u32 = 2;
 const SEAT_IPPATSU: u32 = 4;
 const SEAT_RIICHI_PENDING: u32 = 8; // declared; accepted once the declaring discard is not ronned

@@ -311,6 +311,8 @@ pub mod events {
     pub const GAME_OVER: u32 = k::EVENT_GAME_OVER;
     /// Nagashi mangan was paid at an exhaustive draw.
     pub const NAGASHI: u32 = k::EVENT_NAGASHI;
+    /// Any of the bits of a step that ends a round.
+    pub const ROUND_OVER: u32 = RON | TSUMO | EXHAUSTIVE_DRAW | ABORTIVE_DRAW;
 }
 
 impl Step {
@@ -768,6 +770,16 @@ impl Env {
             Backing::Cpu(cpu) => Ok(cpu.states.clone()),
             Backing::Gpu(gpu) => Ok(gpu.states()?),
         }
+    }
+
+    /// Every env's game state, read back from the GPU on that backend (for pictures and tools;
+    /// [`Env::states_words`] gives the same as raw words).
+    pub fn game_states(&self) -> Result<Vec<kernel::GameState>, EnvError> {
+        let words = self.states_words()?;
+        Ok(words
+            .chunks_exact(self.state_words())
+            .map(|w| bytemuck::pod_read_unaligned(bytemuck::cast_slice(w)))
+            .collect())
     }
 
     /// Words of one env's `GameState`.

@@ -9,7 +9,7 @@ use std::path::PathBuf;
 use rinshan::render::{self, Board, MeldKind, Options, TileMode};
 use rinshan::tenhou::log::{collect_files, read_game, Discard, Draw, Game, Rel};
 use rinshan::tenhou::position::{round_replay, Position, RoundEnd};
-use rinshan::{Tile, Variant};
+use rinshan::Tile;
 
 fn games() -> Vec<Game> {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("data/tenhou");
@@ -110,10 +110,38 @@ fn the_dealt_hands_are_the_logged_ones() {
 fn rivers_and_melds_follow_the_log() {
     let games = games();
     let (mut riichi_seen, mut called_seen, mut kans_seen) = (0, 0, 0);
-    for (g, r, ps, _) in rounds(&games) {
+    let mut draws_seen = 0;
+    for (g, r, ps, end) in rounds(&games) {
         let round = &games[g].rounds[r];
         let last = ps.last().expect("a round has decisions");
         let board = Board::from_state(&last.state);
+        // A round the wall ended shows every logged discard, the last one included.
+        let drawn_out = end.as_ref().and_then(|e| Board::logged_round_end(last, e)).filter(|b| {
+            b.result
+                .as_ref()
+                .is_some_and(|r| r.draw == Some(rinshan::env::DrawKind::Exhaustive))
+        });
+        if let Some(end_board) = &drawn_out {
+            draws_seen += 1;
+            for p in 0..4 {
+                let logged = round.discards[p]
+                    .iter()
+                    .filter(|d| matches!(d, Discard::Tile(_) | Discard::Tsumogiri | Discard::Riichi(_)))
+                    .count();
+                assert_eq!(
+                    end_board.rivers[p].len(),
+                    logged,
+                    "{} round {r} seat {p}",
+                    games[g].path
+                );
+                let held = end_board.hands[p].len() + end_board.drawn[p].iter().count() + 3 * end_board.melds[p].len();
+                assert_eq!(
+                    held, 13,
+                    "{} round {r} seat {p}: 13 tiles after the last discard",
+                    games[g].path
+                );
+            }
+        }
         let path = &games[g].path;
         for p in 0..4 {
             // The log's discards in order: (named tile, riichi, tsumogiri).
@@ -213,6 +241,7 @@ fn rivers_and_melds_follow_the_log() {
         riichi_seen > 20 && called_seen > 50 && kans_seen > 0,
         "{riichi_seen} {called_seen} {kans_seen}"
     );
+    assert!(draws_seen > 3, "{draws_seen} drawn rounds");
 }
 
 #[test]
@@ -336,8 +365,7 @@ fn snapshots_of_fixed_positions_and_tile_modes() {
     // Round ends: a riichi hand won by ron (ura shown), and a drawn round.
     let mut ends = all.iter().filter_map(|(g, _, ps, end)| {
         let (last, end) = (ps.last()?, end.as_ref()?);
-        let table = &end.table;
-        let mut b = Board::round_end(&last.state, &end.step, 0, table, Variant::Red, end.uma)?;
+        let mut b = Board::logged_round_end(last, end)?;
         b.names = games[*g].names.clone();
         Some(b)
     });

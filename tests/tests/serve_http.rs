@@ -71,6 +71,25 @@ async fn a_whole_game_through_the_api_replays_from_its_log() {
         let v = settled(&app, &id).await;
         match v["phase"].as_str() {
             Some("human") => {
+                if moves == 0 {
+                    // The person's board shows their own hand and nobody else's.
+                    let (_, text) = get(&app, &format!("/api/games/{id}?tiles=ascii")).await;
+                    let svg = parsed(&text)["svg"].as_str().expect("a board").to_string();
+                    let doc = roxmltree::Document::parse(&svg).expect("the board parses");
+                    let hands = doc.descendants().filter(|n| {
+                        n.attribute("class") == Some("tile")
+                            && matches!(n.attribute("data-zone"), Some("hand" | "drawn"))
+                    });
+                    for t in hands {
+                        let mine = t.attribute("data-seat") == Some("2");
+                        assert_eq!(
+                            t.attribute("data-tile") != Some("back"),
+                            mine,
+                            "{:?}",
+                            t.attributes().collect::<Vec<_>>()
+                        );
+                    }
+                }
                 let first = &v["legal"][0];
                 let (status, text) = post(
                     &app,

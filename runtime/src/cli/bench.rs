@@ -309,8 +309,7 @@ fn render_bench(n: usize, seed: u64) -> Result<(), CliError> {
     env.reset().map_err(CliError::failure)?;
     let mut states: Vec<GameState> = Vec::with_capacity(n);
     while states.len() < n.max(1) {
-        let words = env.states_words().map_err(CliError::failure)?;
-        states.push(bytemuck::pod_read_unaligned(bytemuck::cast_slice(&words)));
+        states.extend(env.game_states().map_err(CliError::failure)?);
         let a = env.agent_actions(&[[Agent::Rule; 4]]).map_err(CliError::failure)?;
         env.step(&a).map_err(CliError::failure)?;
     }

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use rinshan::agents::Agent;
 use rinshan::env::{Config, Env, Mode};
 use rinshan::generated::kernel::GameState;
-use rinshan::render::{self, Board, Options, TileMode};
+use rinshan::render::{self, Board, Options, RoundEndInput, TileMode};
 use rinshan::tenhou::log::read_game;
 use rinshan::tenhou::position::round_replay;
 use rinshan::Variant;
@@ -125,9 +125,7 @@ fn log_board(path: &Path, round: usize, step: usize) -> Result<Board, CliError> 
         return Ok(with_names(Board::from_state(&p.state)));
     }
     let result = match (positions.last(), &end) {
-        (Some(last), Some(end)) if step == positions.len() => {
-            Board::round_end(&last.state, &end.step, 0, &end.table, Variant::Red, end.uma)
-        }
+        (Some(last), Some(end)) if step == positions.len() => Board::logged_round_end(last, end),
         _ => None,
     };
     result.map(with_names).ok_or_else(|| {
@@ -162,7 +160,15 @@ fn seed_board(seed: u64, agents: &[Agent], variant: Variant, steps: usize) -> Re
         let before = state(&env)?;
         let step = env.step(&action).map_err(CliError::failure)?.clone();
         let table = env.tables().map_err(CliError::failure)?.remove(0);
-        ended = Board::round_end(&before, &step, 0, &table, variant, env.uma());
+        let end = RoundEndInput {
+            action: action[0],
+            step: &step,
+            env: 0,
+            table: &table,
+            variant,
+            uma: env.uma(),
+        };
+        ended = Board::round_end(&before, &end);
     }
     let mut board = match ended {
         Some(board) => board,
@@ -173,8 +179,8 @@ fn seed_board(seed: u64, agents: &[Agent], variant: Variant, steps: usize) -> Re
 }
 
 fn state(env: &Env) -> Result<GameState, CliError> {
-    let words = env.states_words().map_err(CliError::failure)?;
-    bytemuck::try_pod_read_unaligned(bytemuck::cast_slice(&words)).map_err(|e| CliError::failure(format!("state: {e}")))
+    let mut states = env.game_states().map_err(CliError::failure)?;
+    states.pop().ok_or_else(|| CliError::failure("the env holds no game"))
 }
 
 fn state_board(path: &Path, variant: Variant) -> Result<Board, CliError> {

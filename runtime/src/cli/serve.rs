@@ -29,7 +29,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
     }
     let limits = Limits {
         max_games: args.max_games,
-        idle: Duration::from_secs(args.idle_minutes * 60),
+        idle: Duration::from_secs(args.idle_minutes.saturating_mul(60)),
     };
     let runtime = tokio::runtime::Builder::new_multi_thread()
         .enable_all()

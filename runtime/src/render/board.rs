@@ -147,6 +147,11 @@ fn tile_of(value: u32) -> Option<Tile> {
     u8::try_from(value).ok().and_then(Tile::from_value)
 }
 
+/// A tile value's type (a red five is its suit's five).
+fn value_type(v: u32) -> u32 {
+    kernel::value_type(v)
+}
+
 fn plain(t: u32) -> Tile {
     TileType::new(t as u8).map_or_else(|| Tile::plain(TileType::new(0).expect("1m")), Tile::plain)
 }
@@ -189,7 +194,8 @@ impl Board {
         let dora = (0..s.dora_revealed.min(5))
             .filter_map(|i| tile_of(kernel::wall_tile(&mut s, kernel::WALL_DORA + i)))
             .collect();
-        let riichi = std::array::from_fn(|p| s.seat_flags[p] & 1 != 0 || rivers[p].iter().any(|r| r.riichi));
+        let riichi =
+            std::array::from_fn(|p| s.seat_flags[p] & kernel::SEAT_RIICHI != 0 || rivers[p].iter().any(|r| r.riichi));
         Board {
             round: s.round,
             dealer: s.dealer,
@@ -212,25 +218,25 @@ impl Board {
         }
     }
 
-    /// The table of `before` (the state a step started from) with the result of that step, where
-    /// the step ended a round: `after` is what the step reported and `table` the env's table after
-    /// it (its win records), `uma` what the env pays by final place (the step's rewards include
-    /// it in a game's last step; the result shows it apart). The winners' hands (with the winning
-    /// tile) are shown face up.
-    pub fn round_end(
-        before: &GameState,
-        step: &Step,
-        env: usize,
-        table: &Table,
-        variant: Variant,
-        uma: [i32; 4],
-    ) -> Option<Board> {
+    /// The table at the end of the round that `end.action`, played from `before`, ended (`None`
+    /// if it did not end one): the last discard in its river, the winners' hands (with the
+    /// winning tile) face up, and the result panel.
+    pub fn round_end(before: &GameState, end: &RoundEndInput) -> Option<Board> {
         use crate::env::events as e;
+        let RoundEndInput {
+            action,
+            step,
+            env,
+            table,
+            variant,
+            uma,
+        } = *end;
         let ev = *step.events.get(env)?;
-        if ev & (e::RON | e::TSUMO | e::EXHAUSTIVE_DRAW | e::ABORTIVE_DRAW) == 0 {
+        if ev & ROUND_OVER == 0 {
             return None;
         }
         let mut board = Board::from_state(before);
+        board.place_last_discard(before, action, variant);
         let winners = step.winners[env];
         let names = crate::env::yaku_names(variant);
         let mut s = *before;
@@ -274,7 +280,10 @@ impl Board {
         let draw = if wins.is_empty() { table.draw.kind } else { None };
         let over = step.terminated[env];
         let ranks = step.ranks.get(env).copied().filter(|_| over && !step.illegal[env]);
-        let paid = ranks.map(|r| std::array::from_fn(|p| uma[usize::from(r[p]).min(3)]));
+        // A replay pays no uma (it compares logged payments): nothing to show apart then.
+        let paid = ranks
+            .map(|r| std::array::from_fn(|p| uma[usize::from(r[p]).min(3)]))
+            .filter(|u: &[i32; 4]| u.iter().any(|&x| x != 0));
         let rewards = step.rewards[env].map(|r| (r * 100.0).round() as i32);
         board.result = Some(RoundResult {
             wins,
@@ -291,9 +300,105 @@ impl Board {
     }
 }
 
+/// What [`Board::round_end`] needs besides the state before the step: the action played, the
+/// step's report for env `env`, the env's table after it (its win records), the variant (yaku
+/// names, action names) and the uma the env pays by final place (the step's rewards include it in
+/// a game's last step; the result shows it apart).
+#[derive(Clone, Copy)]
+pub struct RoundEndInput<'a> {
+    /// The action that ended the round.
+    pub action: u32,
+    /// The step it made.
+    pub step: &'a Step,
+    /// The env's index in the step.
+    pub env: usize,
+    /// The env's table after the step.
+    pub table: &'a Table,
+    /// The rules.
+    pub variant: Variant,
+    /// Uma by final place, in points.
+    pub uma: [i32; 4],
+}
+
+impl Board {
+    /// The result board of a replayed log round: its last decision and how the round ended.
+    pub fn logged_round_end(
+        last: &crate::tenhou::position::Position,
+        end: &crate::tenhou::position::RoundEnd,
+    ) -> Option<Board> {
+        let input = RoundEndInput {
+            action: last.action,
+            step: &end.step,
+            env: 0,
+            table: &end.table,
+            variant: Variant::Red,
+            uma: end.uma,
+        };
+        Board::round_end(&last.state, &input)
+    }
+}
+
+use crate::env::events::ROUND_OVER;
+
+impl Board {
+    /// A round ended by a discard (an exhaustive or abortive draw) shows that discard in the
+    /// river, as the table saw it; a ron on an added kan (chankan) shows the pon it robbed.
+    fn place_last_discard(&mut self, before: &GameState, action: u32, variant: Variant) {
+        let seat = before.current as usize;
+        if before.phase == kernel::PHASE_CLAIM {
+            if before.claim_kan != 0 {
+                let from = before.claim_from as usize;
+                let robbed = self
+                    .melds
+                    .get_mut(from)
+                    .and_then(|ms| ms.iter_mut().rev().find(|m| m.kind == MeldKind::AddedKan));
+                if let Some(m) = robbed {
+                    m.kind = MeldKind::Pon;
+                    m.added = None;
+                }
+            }
+            return;
+        }
+        let names = crate::env::action_names(variant);
+        let tile = match names.get(action as usize).map(String::as_str) {
+            Some("tsumogiri") => self.drawn[seat].take().map(|t| (t, true)),
+            Some(name) => name
+                .strip_prefix("discard_")
+                .and_then(|t| crate::notation::parse_tile(t).ok())
+                .and_then(|t| {
+                    let Some(i) = self.hands[seat].iter().position(|&h| h == t) else {
+                        return self.drawn[seat].take().filter(|&d| d == t).map(|d| (d, true));
+                    };
+                    let tile = self.hands[seat].remove(i);
+                    // The drawn tile joins the hand the discard came from.
+                    if let Some(d) = self.drawn[seat].take() {
+                        self.hands[seat].push(d);
+                        self.hands[seat].sort_by_key(|t| (t.kind(), !t.is_red()));
+                    }
+                    Some((tile, false))
+                }),
+            None => None,
+        };
+        if let Some((tile, tsumogiri)) = tile {
+            self.rivers[seat].push(RiverTile {
+                tile,
+                riichi: before.phase == kernel::PHASE_RIICHI_DISCARD,
+                called: false,
+                tsumogiri,
+            });
+            self.last = Some(LastAction::Discard(seat as u32));
+        }
+    }
+}
+
 /// Melds, rivers and the last event, read from the round's public log (which says which tile of
 /// a meld was called and which discard declared riichi) beside the state's meld words.
 type Record = ([Vec<Meld>; 4], [Vec<RiverTile>; 4], Option<LastAction>);
+
+// A river byte, as `GameState.rivers` documents it (the kernel writes these bits as literals).
+const RIVER_VALUE: u32 = 63;
+const RIVER_CALLED: u32 = 64;
+const RIVER_TSUMOGIRI: u32 = 128;
 
 fn public_record(s: &mut GameState) -> Record {
     let mut melds: [Vec<Meld>; 4] = Default::default();
@@ -302,18 +407,19 @@ fn public_record(s: &mut GameState) -> Record {
         let len = kernel::byte_of(s.river_lens, seat);
         for i in 0..len.min(24) {
             let b = kernel::byte_of(s.rivers[(seat * 6 + i / 4) as usize], i % 4);
-            if let Some(tile) = tile_of(b & 63) {
+            if let Some(tile) = tile_of(b & RIVER_VALUE) {
                 rivers[seat as usize].push(RiverTile {
                     tile,
                     riichi: false,
-                    called: b & 64 != 0,
-                    tsumogiri: b & 128 != 0,
+                    called: b & RIVER_CALLED != 0,
+                    tsumogiri: b & RIVER_TSUMOGIRI != 0,
                 });
             }
         }
     }
     // The log names each call's tile and, for a chi, the called tile's place in the run.
     let mut calls: [Vec<(u32, u32)>; 4] = Default::default();
+    let mut added: [Vec<u32>; 4] = Default::default();
     let mut discards = [0usize; 4];
     let mut last = None;
     for i in 0..kernel::log_count(s) {
@@ -339,7 +445,10 @@ fn public_record(s: &mut GameState) -> Record {
                 calls[a].push((tile, flags));
                 last = Some(LastAction::Meld(actor));
             }
-            kernel::EV_ADDED_KAN => last = Some(LastAction::Meld(actor)),
+            kernel::EV_ADDED_KAN => {
+                added[a].push(tile);
+                last = Some(LastAction::Meld(actor));
+            }
             kernel::EV_RIICHI => last = Some(LastAction::Riichi(actor)),
             _ => {}
         }
@@ -349,14 +458,16 @@ fn public_record(s: &mut GameState) -> Record {
         for i in 0..n {
             let word = s.melds[(seat * 4 + i) as usize];
             let call = calls[seat as usize].get(i as usize).copied();
-            melds[seat as usize].push(meld_of(word, call));
+            let low = word >> kernel::MELD_TILE_SHIFT & 63;
+            let fourth = added[seat as usize].iter().copied().find(|&v| value_type(v) == low);
+            melds[seat as usize].push(meld_of(word, call, fourth));
         }
     }
     (melds, rivers, last)
 }
 
 /// A meld word (kind, lowest type, source seat, red fives) as tiles in table order.
-fn meld_of(word: u32, call: Option<(u32, u32)>) -> Meld {
+fn meld_of(word: u32, call: Option<(u32, u32)>, added_value: Option<u32>) -> Meld {
     let kind = match word & 15 {
         kernel::MELD_CHI => MeldKind::Chi,
         kernel::MELD_PON => MeldKind::Pon,
@@ -366,10 +477,11 @@ fn meld_of(word: u32, call: Option<(u32, u32)>) -> Meld {
     };
     let low = word >> kernel::MELD_TILE_SHIFT & 63;
     let from = word >> kernel::MELD_FROM_SHIFT & 3;
+    // Red fives in the meld: one bit count per suit's five, at most one per meld in practice.
     let mut reds = word >> kernel::MELD_REDS_SHIFT & 7;
     let called_value = call.map(|(t, _)| t);
     let called_red = called_value.is_some_and(|v| v >= 34);
-    let called_type = called_value.map(|v| if v >= 34 { (v - 34) * 9 + 4 } else { v });
+    let called_type = called_value.map(value_type);
     let size = match kind {
         MeldKind::Chi | MeldKind::Pon => 3,
         _ => 4,
@@ -392,6 +504,16 @@ fn meld_of(word: u32, call: Option<(u32, u32)>) -> Meld {
         }
         called_tile = Some(tile);
     }
+    // An added kan's fourth tile is the one the log names (it may be the red five).
+    let mut added = None;
+    if kind == MeldKind::AddedKan {
+        types.pop();
+        let tile = tile_of(added_value.unwrap_or(low)).unwrap_or_else(|| plain(low));
+        if tile.is_red() {
+            reds = reds.saturating_sub(1);
+        }
+        added = Some(tile);
+    }
     let mut tiles: Vec<Tile> = types
         .iter()
         .map(|&t| {
@@ -404,10 +526,6 @@ fn meld_of(word: u32, call: Option<(u32, u32)>) -> Meld {
             }
         })
         .collect();
-    let mut added = None;
-    if kind == MeldKind::AddedKan {
-        added = tiles.pop();
-    }
     let Some(called) = called_tile else {
         return Meld {
             kind,

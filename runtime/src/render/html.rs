@@ -12,7 +12,6 @@ use super::svg::{escape, round_name, sprite, svg};
 use super::{Options, TileMode};
 use crate::tenhou::log::Game;
 use crate::tenhou::position::round_replay;
-use crate::Variant;
 
 const PAGE: &str = include_str!("replay.html");
 
@@ -62,7 +61,7 @@ pub fn frames(game: &Game) -> Result<Vec<(String, Board)>, String> {
             out.push((caption, board));
         }
         if let (Some(last), Some(end)) = (positions.last(), end) {
-            if let Some(mut board) = Board::round_end(&last.state, &end.step, 0, &end.table, Variant::Red, end.uma) {
+            if let Some(mut board) = Board::logged_round_end(last, &end) {
                 board.names = name.clone();
                 out.push((
                     format!("{}, {} honba: result", round_name(board.round), board.honba),

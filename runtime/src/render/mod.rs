@@ -8,7 +8,7 @@ pub mod png;
 pub mod svg;
 mod tiles;
 
-pub use board::{Board, LastAction, Meld, MeldKind, RiverTile, RoundResult, WinLine};
+pub use board::{Board, LastAction, Meld, MeldKind, RiverTile, RoundEndInput, RoundResult, WinLine};
 pub use svg::{round_name, sprite, svg};
 pub use tiles::face_names;
 

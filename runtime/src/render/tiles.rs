@@ -279,7 +279,11 @@ mod tests {
             assert_eq!(FACES[usize::from(v)].0, want);
             assert_eq!(symbol_name(usize::from(v)), t.name());
             let (view_box, inner) = split_face(FACES[usize::from(v)].1);
-            assert!(view_box.split(' ').count() == 4 && !inner.is_empty(), "{want}");
+            // FluffyStuff's white dragon (P) is a blank face: the renderer draws its frame.
+            assert!(
+                view_box.split(' ').count() == 4 && (!inner.is_empty() || want == "P"),
+                "{want}"
+            );
         }
         assert_eq!(TileType::new(27).map(|k| label(Tile::plain(k))).as_deref(), Some("E"));
     }

@@ -336,12 +336,26 @@ async fn tiles_sprite(Path(mode): Path<String>) -> Result<Response, ApiError> {
         .into_response())
 }
 
+/// The most rounds an uploaded log may have (a long half game has about 20).
+const MAX_REPLAY_ROUNDS: usize = 32;
+static REPLAYS: tokio::sync::Semaphore = tokio::sync::Semaphore::const_new(1);
+
 /// `POST /api/replay` with a tenhou.net/6 log as the body: the replay page of that game.
 async fn replay(body: String) -> Result<Response, ApiError> {
     let game = crate::tenhou::log::parse_game("upload", &body).map_err(unprocessable)?;
-    if game.rounds.is_empty() {
-        return Err(unprocessable("the log has no rounds"));
+    if game.rounds.is_empty() || game.rounds.len() > MAX_REPLAY_ROUNDS {
+        return Err(unprocessable(format!(
+            "the log has {} rounds: a game of 1 to {MAX_REPLAY_ROUNDS} is replayed",
+            game.rounds.len()
+        )));
     }
+    // Drawing a game holds its frames in memory (a few tens of MB): one at a time.
+    let Ok(_permit) = REPLAYS.try_acquire() else {
+        return Err(ApiError(
+            StatusCode::SERVICE_UNAVAILABLE,
+            "another replay is being drawn: try again in a moment".into(),
+        ));
+    };
     // Drawing every decision of a long game takes a while: keep it off the async threads.
     let page = tokio::task::spawn_blocking(move || crate::render::html::replay_html(&game, 0))
         .await

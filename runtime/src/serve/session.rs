@@ -8,8 +8,8 @@ use serde::Serialize;
 
 use crate::agents::Agent;
 use crate::env::{events as ev, Config, Env, Mode};
-use crate::generated::kernel::GameState;
-use crate::render::{self, Board, Options, TileMode};
+use crate::generated::kernel::{self, GameState};
+use crate::render::{self, Board, Options, RoundEndInput, TileMode};
 use crate::tenhou::write::Recorder;
 use crate::{Tile, Variant};
 
@@ -24,7 +24,8 @@ pub struct Setup {
     pub seats: [Option<Agent>; 4],
     /// Seeds the walls.
     pub seed: u64,
-    /// Pause before each agent move (and before a spectated game moves past a round's end).
+    /// Pause before each agent's turn (its calls are decided at once: who may call is hidden);
+    /// a spectated game moves past a round's end after four times this and half a second.
     pub delay: Duration,
 }
 
@@ -76,6 +77,10 @@ pub struct Session {
     recorder: Option<Recorder>,
     log: Option<String>,
     events: Vec<String>,
+    /// Entries of the round's public log already in `events`.
+    told: u32,
+    /// The pass action's id (claim prompts offer it).
+    pass: u32,
     /// When a request or a move last touched the game.
     pub touched: Instant,
 }
@@ -103,6 +108,10 @@ impl Session {
         let recorder = logged.then(|| Recorder::new(&env)).transpose().map_err(err)?;
         let names: [String; 4] =
             std::array::from_fn(|p| setup.seats[p].map_or_else(|| "You".to_string(), |a| format!("{a} {p}")));
+        let pass = crate::env::action_names(setup.variant)
+            .iter()
+            .position(|n| n == "pass")
+            .ok_or("the variant has no pass action")? as u32;
         let mut s = Session {
             setup,
             env,
@@ -112,6 +121,8 @@ impl Session {
             recorder,
             log: None,
             events: Vec::new(),
+            told: 0,
+            pass,
             touched: Instant::now(),
         };
         if let Some(r) = &mut s.recorder {
@@ -149,8 +160,8 @@ impl Session {
     }
 
     fn state(&self) -> Result<GameState, String> {
-        let words = self.env.states_words().map_err(err)?;
-        bytemuck::try_pod_read_unaligned(bytemuck::cast_slice(&words)).map_err(err)
+        let mut states = self.env.game_states().map_err(err)?;
+        states.pop().ok_or_else(|| "the env holds no game".to_string())
     }
 
     /// The board as the person may see it (a spectator sees every hand).
@@ -251,14 +262,22 @@ impl Session {
         if self.phase() != Phase::Agent {
             return Ok(false);
         }
+        let action = self.agent_action()?;
+        self.apply(action)?;
+        Ok(true)
+    }
+
+    fn agent_action(&mut self) -> Result<u32, String> {
         let current = self.current() as usize;
-        let Some(agent) = self.setup.seats[current] else {
-            return Ok(false);
-        };
+        let agent = self.setup.seats[current].ok_or("no agent sits there")?;
         // Every seat gets the deciding seat's agent; only the current player's entry is read.
         let action = self.env.agent_actions(&[[agent; 4]]).map_err(err)?;
-        self.apply(action[0])?;
-        Ok(true)
+        Ok(action[0])
+    }
+
+    /// The current decision is a claim prompt (whether to call a discard or an added kan).
+    fn claim_prompt(&self) -> bool {
+        self.env.last().legal_actions(0).any(|a| a == self.pass)
     }
 
     /// Leaves a round's result for the next round.
@@ -273,31 +292,44 @@ impl Session {
         Ok(())
     }
 
+    /// Plays `action`, then every agent's claim prompt that follows at once: who may call a
+    /// discard is hidden information, so the page never sees an agent considering a call (no
+    /// delay, no `current`, no decision counted); it sees the call, if one is made, on the table.
     fn apply(&mut self, action: u32) -> Result<(), String> {
-        let before = self.state()?;
-        let seat = self.current();
-        let names = crate::env::action_names(self.setup.variant);
-        let name = names.get(action as usize).cloned().unwrap_or_default();
-        let step = self.env.step(&[action]).map_err(err)?.clone();
+        self.step_once(action)?;
         self.step += 1;
+        while self.phase() == Phase::Agent && self.claim_prompt() {
+            let a = self.agent_action()?;
+            self.step_once(a)?;
+        }
+        self.touched = Instant::now();
+        Ok(())
+    }
+
+    fn step_once(&mut self, action: u32) -> Result<(), String> {
+        let before = self.state()?;
+        let step = self.env.step(&[action]).map_err(err)?.clone();
         if let Some(r) = &mut self.recorder {
             r.observe(&self.env, &[action]).map_err(err)?;
             if let Some(done) = r.take_finished().pop() {
                 self.log = Some(crate::tenhou::write::game_text(&done.game));
             }
         }
-        if name != "pass" && name != "dummy" {
-            self.events.push(format!(
-                "{}: {}",
-                self.names[seat as usize],
-                label(&name, Board::from_state(&before).claim)
-            ));
-        }
         let e = step.events[0];
-        if e & (ev::RON | ev::TSUMO | ev::EXHAUSTIVE_DRAW | ev::ABORTIVE_DRAW) != 0 {
+        if e & ev::ROUND_OVER == 0 {
+            self.tell(&self.state()?);
+        }
+        if e & ev::ROUND_OVER != 0 {
             let table = self.env.tables().map_err(err)?.remove(0);
-            let mut board = Board::round_end(&before, &step, 0, &table, self.setup.variant, self.env.uma())
-                .ok_or("a round ended without a result")?;
+            let end = RoundEndInput {
+                action,
+                step: &step,
+                env: 0,
+                table: &table,
+                variant: self.setup.variant,
+                uma: self.env.uma(),
+            };
+            let mut board = Board::round_end(&before, &end).ok_or("a round ended without a result")?;
             board.names = self.names.clone();
             let deltas: Vec<String> = board
                 .result
@@ -315,12 +347,43 @@ impl Session {
                 deltas.join(", ")
             ));
             self.ended = Some(board);
+            // The next round's record starts afresh.
+            self.told = 0;
         }
         if step.terminated[0] && self.ended.is_none() {
             self.ended = Some(Board::from_state(&self.state()?));
         }
-        self.touched = Instant::now();
         Ok(())
+    }
+
+    /// Adds the table's new public events (discards, calls, kans, riichi) to the story: what every
+    /// seat saw, never a decision that changed nothing on the table.
+    fn tell(&mut self, state: &GameState) {
+        let mut s = *state;
+        let n = kernel::log_count(&mut s);
+        for i in self.told.min(n)..n {
+            let e = kernel::log_entry(&mut s, i);
+            let tile = u8::try_from(kernel::log_tile(e))
+                .ok()
+                .and_then(Tile::from_value)
+                .map_or_else(String::new, |t| spoken(&t.name()));
+            let what = match kernel::log_kind(e) {
+                kernel::EV_DISCARD if kernel::log_flags(e) & kernel::LOG_TSUMOGIRI != 0 => {
+                    format!("discards {tile} (just drawn)")
+                }
+                kernel::EV_DISCARD => format!("discards {tile}"),
+                kernel::EV_CHI => format!("chi {tile}"),
+                kernel::EV_PON => format!("pon {tile}"),
+                kernel::EV_OPEN_KAN => format!("kan {tile}"),
+                kernel::EV_CLOSED_KAN => format!("closed kan {tile}"),
+                kernel::EV_ADDED_KAN => format!("added kan {tile}"),
+                kernel::EV_RIICHI => "riichi".to_string(),
+                _ => continue,
+            };
+            let who = &self.names[kernel::log_actor(e) as usize];
+            self.events.push(format!("{who}: {what}"));
+        }
+        self.told = n;
     }
 }
 

@@ -2,6 +2,7 @@
 //! (the agents' moves) and its change counter for the page's event stream.
 
 use std::collections::HashMap;
+use std::hash::BuildHasher as _;
 use std::sync::{Arc, Mutex, MutexGuard};
 use std::time::{Duration, Instant};
 
@@ -68,6 +69,7 @@ impl Held {
 pub struct Store {
     games: Arc<Mutex<HashMap<u64, Arc<Held>>>>,
     next: Arc<Mutex<u64>>,
+    keys: std::hash::RandomState,
     limits: Limits,
 }
 
@@ -76,6 +78,7 @@ impl Store {
         Store {
             games: Arc::default(),
             next: Arc::new(Mutex::new(1)),
+            keys: std::hash::RandomState::new(),
             limits,
         }
     }
@@ -87,15 +90,20 @@ impl Store {
     /// A new game, with its driver started; `Err(None)` when the server is full.
     pub fn create(&self, setup: Setup) -> Result<(u64, Arc<Held>), Option<String>> {
         self.sweep();
-        if self.map().len() >= self.limits.max_games {
+        let session = Session::new(setup).map_err(Some)?;
+        let mut map = self.map();
+        if map.len() >= self.limits.max_games {
             return Err(None);
         }
-        let session = Session::new(setup).map_err(Some)?;
-        let id = {
+        let id = loop {
             let mut n = self.next.lock().unwrap_or_else(|p| p.into_inner());
             *n += 1;
-            // Ids are not guessable in sequence: another visitor's game is not one off.
-            crate::env::env_seed(*n, 0x5eed, 0) >> 12
+            // The id is the counter hashed with this process's random SipHash keys: anyone can
+            // play, read or drop a game whose id they know, so ids must not be guessable.
+            let id = self.keys.hash_one(*n) >> 11;
+            if !map.contains_key(&id) {
+                break id;
+            }
         };
         let (changed, _) = watch::channel(0);
         let held = Arc::new(Held {
@@ -104,7 +112,8 @@ impl Store {
             changed,
             closed: Mutex::new(false),
         });
-        self.map().insert(id, held.clone());
+        map.insert(id, held.clone());
+        drop(map);
         tokio::spawn(drive(held.clone()));
         Ok((id, held))
     }

@@ -65,8 +65,7 @@ pub fn round_replay(game: &Game, round: usize) -> Result<(Vec<Position>, Option<
     let mut next = 0;
     loop {
         let step = env.last().clone();
-        let words = env.states_words().map_err(|e| e.to_string())?;
-        let state: GameState = *bytemuck::from_bytes(bytemuck::cast_slice(&words));
+        let state: GameState = env.game_states().map_err(|e| e.to_string())?.remove(0);
         let seat = step.current_player[0];
         let claim = step.legal_actions(0).any(|a| a == k::ACTION_PASS);
         let (action, what) = match p.moves.get(next) {
@@ -94,10 +93,7 @@ pub fn round_replay(game: &Game, round: usize) -> Result<(Vec<Position>, Option<
         });
         let after = env.step(&[action]).map_err(|e| e.to_string())?.clone();
         use crate::env::events as e;
-        if after.events[0] & (e::RON | e::TSUMO | e::EXHAUSTIVE_DRAW | e::ABORTIVE_DRAW) != 0
-            || after.terminated[0]
-            || after.illegal[0]
-        {
+        if after.events[0] & e::ROUND_OVER != 0 || after.terminated[0] || after.illegal[0] {
             let table = env.tables().map_err(|e| e.to_string())?.remove(0);
             let uma = env.uma();
             return Ok((

@@ -4,11 +4,13 @@
 
 const $ = (id) => document.getElementById(id);
 const PAGE = document.body.dataset.page;
-let tiles = localStorage.getItem("rinshan-tiles") || "en";
+const MODES = ["ja", "en", "ascii"];
+let tiles = MODES.includes(localStorage.getItem("rinshan-tiles")) ? localStorage.getItem("rinshan-tiles") : "en";
 let game = null;   // the id
 let view = null;   // the last view
 let stream = null;
 let busy = false, again = false;
+let acting = false; // a move is on its way: further clicks wait for the next view
 
 async function api(method, url, body) {
   const init = { method, headers: {} };
@@ -77,17 +79,17 @@ async function refresh() {
   if (!game) return;
   if (busy) { again = true; return; }
   busy = true;
-  try {
-    do {
-      again = false;
-      view = await api("GET", "/api/games/" + game + "?tiles=" + tiles);
-      draw();
-    } while (again);
-  } catch (e) { showError(e); }
+  do {
+    again = false;
+    const id = game;
+    try {
+      const v = await api("GET", "/api/games/" + id + "?tiles=" + tiles);
+      // A view of a game the person has left is dropped.
+      if (id === game) { view = v; draw(); }
+    } catch (e) { showError(e); }
+  } while (again && game);
   busy = false;
 }
-
-const WINDS = ["E", "S", "W", "N"];
 
 function draw() {
   const v = view;
@@ -198,7 +200,11 @@ function drawResult(v) {
     b.className = "action next";
     b.textContent = "Next round";
     b.addEventListener("click", async () => {
+      if (acting) return;
+      acting = true;
+      b.disabled = true;
       try { await api("POST", "/api/games/" + game + "/next"); } catch (e) { showError(e); }
+      acting = false;
       refresh();
     });
     box.appendChild(b);
@@ -206,10 +212,14 @@ function drawResult(v) {
 }
 
 async function act(id) {
+  if (acting) return;
+  acting = true;
+  document.querySelectorAll("#actions button").forEach((b) => { b.disabled = true; });
   showError(null);
   try {
     await api("POST", "/api/games/" + game + "/actions", { action: id, step: view.step });
   } catch (e) { showError(e); }
+  acting = false;
   refresh();
 }
 
@@ -223,6 +233,8 @@ async function openReplay(ev) {
     const text = await r.text();
     if (!r.ok) { let m = text; try { m = JSON.parse(text).error; } catch (_) {} throw new Error(m); }
     const frame = $("viewer");
+    // The page is ours, but it holds names from the uploaded log: keep it in a sandbox.
+    frame.setAttribute("sandbox", "allow-scripts");
     frame.srcdoc = text;
     frame.hidden = false;
   } catch (e) { showError(e); }

@@ -16,7 +16,7 @@ use super::outcome::{
 };
 use super::round::{meld_count, Current};
 
-const ROUND_OVER: u32 = events::RON | events::TSUMO | events::EXHAUSTIVE_DRAW | events::ABORTIVE_DRAW;
+use events::ROUND_OVER;
 
 /// Follows one game (and, with auto-reset, the games after it) and hands out each finished game.
 #[derive(Debug, Clone)]
