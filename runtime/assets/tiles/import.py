@@ -46,32 +46,63 @@ XLINK = "http://www.w3.org/1999/xlink"
 NAMES = {}
 for _suit, _letter in (("Man", "m"), ("Pin", "p"), ("Sou", "s")):
     for _n in range(1, 10):
-        NAMES["%s%d" % (_suit, _n)] = "%d%s" % (_n, _letter)
-    NAMES["%s5-Dora" % _suit] = "0" + _letter
-NAMES.update({"Ton": "E", "Nan": "S", "Shaa": "W", "Pei": "N",
-              "Haku": "P", "Hatsu": "F", "Chun": "C"})
+        NAMES[f"{_suit}{_n}"] = f"{_n}{_letter}"
+    NAMES[f"{_suit}5-Dora"] = "0" + _letter
+NAMES.update(
+    {"Ton": "E", "Nan": "S", "Shaa": "W", "Pei": "N", "Haku": "P", "Hatsu": "F", "Chun": "C"}
+)
 
 # Inherited presentation properties we keep, with their initial values.
 INHERITED = {
-    "fill": "#000", "fill-opacity": "1", "fill-rule": "nonzero",
-    "stroke": "none", "stroke-width": "1", "stroke-opacity": "1",
-    "stroke-linecap": "butt", "stroke-linejoin": "miter",
-    "stroke-miterlimit": "4", "stroke-dasharray": "none",
+    "fill": "#000",
+    "fill-opacity": "1",
+    "fill-rule": "nonzero",
+    "stroke": "none",
+    "stroke-width": "1",
+    "stroke-opacity": "1",
+    "stroke-linecap": "butt",
+    "stroke-linejoin": "miter",
+    "stroke-miterlimit": "4",
+    "stroke-dasharray": "none",
     "stroke-dashoffset": "0",
 }
 NON_INHERITED = {"opacity": "1"}
 # Properties that would need <defs> or that we cannot carry over: refuse.
-UNSUPPORTED = {"filter", "mask", "clip-path", "marker", "marker-start",
-               "marker-mid", "marker-end"}
+UNSUPPORTED = {"filter", "mask", "clip-path", "marker", "marker-start", "marker-mid", "marker-end"}
 STROKE_PROPS = [p for p in INHERITED if p.startswith("stroke")]
 FILL_PROPS = ["fill-opacity", "fill-rule"]
 SHAPES = {"path", "circle", "ellipse", "rect", "line", "polyline", "polygon"}
-GEOMETRY = ["d", "cx", "cy", "r", "rx", "ry", "x", "y", "width", "height",
-            "x1", "y1", "x2", "y2", "points"]
-ATTR_ORDER = ["fill", "fill-opacity", "fill-rule", "stroke", "stroke-width",
-              "stroke-opacity", "stroke-linecap", "stroke-linejoin",
-              "stroke-miterlimit", "stroke-dasharray", "stroke-dashoffset",
-              "opacity"]
+GEOMETRY = [
+    "d",
+    "cx",
+    "cy",
+    "r",
+    "rx",
+    "ry",
+    "x",
+    "y",
+    "width",
+    "height",
+    "x1",
+    "y1",
+    "x2",
+    "y2",
+    "points",
+]
+ATTR_ORDER = [
+    "fill",
+    "fill-opacity",
+    "fill-rule",
+    "stroke",
+    "stroke-width",
+    "stroke-opacity",
+    "stroke-linecap",
+    "stroke-linejoin",
+    "stroke-miterlimit",
+    "stroke-dasharray",
+    "stroke-dashoffset",
+    "opacity",
+]
 
 NUM = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
 
@@ -81,6 +112,7 @@ def local(tag):
 
 
 # ---------------------------------------------------------------- numbers
+
 
 def fmt_int(n, d):
     """Format the integer n (in units of 10**-d) minimally."""
@@ -98,7 +130,7 @@ def fmt_int(n, d):
 
 def q(x, d):
     """Round x to d decimals, returning an integer in units of 10**-d."""
-    return int(math.floor(x * 10 ** d + 0.5))
+    return int(math.floor(x * 10**d + 0.5))
 
 
 def fmt(x, d):
@@ -131,10 +163,16 @@ def decimals_for(scale):
 
 # ------------------------------------------------------------- transforms
 
+
 def mat_mul(a, b):
-    return (a[0] * b[0] + a[2] * b[1], a[1] * b[0] + a[3] * b[1],
-            a[0] * b[2] + a[2] * b[3], a[1] * b[2] + a[3] * b[3],
-            a[0] * b[4] + a[2] * b[5] + a[4], a[1] * b[4] + a[3] * b[5] + a[5])
+    return (
+        a[0] * b[0] + a[2] * b[1],
+        a[1] * b[0] + a[3] * b[1],
+        a[0] * b[2] + a[2] * b[3],
+        a[1] * b[2] + a[3] * b[3],
+        a[0] * b[4] + a[2] * b[5] + a[4],
+        a[1] * b[4] + a[3] * b[5] + a[5],
+    )
 
 
 IDENT = (1.0, 0.0, 0.0, 1.0, 0.0, 0.0)
@@ -157,8 +195,7 @@ def parse_transform(s):
             c, s_ = math.cos(a), math.sin(a)
             t = (c, s_, -s_, c, 0, 0)
             if len(v) == 3:
-                t = mat_mul(mat_mul((1, 0, 0, 1, v[1], v[2]), t),
-                            (1, 0, 0, 1, -v[1], -v[2]))
+                t = mat_mul(mat_mul((1, 0, 0, 1, v[1], v[2]), t), (1, 0, 0, 1, -v[1], -v[2]))
         elif name == "skewX":
             t = (1, 0, math.tan(math.radians(v[0])), 1, 0, 0)
         elif name == "skewY":
@@ -186,27 +223,27 @@ def fmt_transform(items, parent_dec):
             tr = [fmt(x, parent_dec) for x in v[4:]]
             if lin == ["1", "0", "0", "1"]:
                 if tr != ["0", "0"]:
-                    out.append("translate(%s)" % " ".join(tr))
+                    out.append("translate({})".format(" ".join(tr)))
             else:
-                out.append("matrix(%s)" % " ".join(lin + tr))
+                out.append("matrix({})".format(" ".join(lin + tr)))
         elif name == "translate":
             tr = [fmt(x, parent_dec) for x in v]
             if len(tr) == 2 and tr[1] == "0":
                 tr = tr[:1]
             if tr != ["0"]:
-                out.append("translate(%s)" % " ".join(tr))
+                out.append("translate({})".format(" ".join(tr)))
         elif name == "rotate":
-            out.append("rotate(%s)" % " ".join(
-                [fmt(v[0], 4)] + [fmt(x, parent_dec) for x in v[1:]]))
+            out.append(
+                "rotate({})".format(" ".join([fmt(v[0], 4)] + [fmt(x, parent_dec) for x in v[1:]]))
+            )
         else:
-            out.append("%s(%s)" % (name, " ".join(fmt(x, 6) for x in v)))
+            out.append("{}({})".format(name, " ".join(fmt(x, 6) for x in v)))
     return " ".join(out)
 
 
 # ------------------------------------------------------------------ paths
 
-ARGC = {"m": 2, "l": 2, "h": 1, "v": 1, "c": 6, "s": 4, "q": 4, "t": 2,
-        "a": 7, "z": 0}
+ARGC = {"m": 2, "l": 2, "h": 1, "v": 1, "c": 6, "s": 4, "q": 4, "t": 2, "a": 7, "z": 0}
 
 
 def parse_path(d):
@@ -230,15 +267,19 @@ def parse_path(d):
             args = []
             while len(args) < 7:
                 tok = toks[i]
-                if len(args) in (3, 4) and len(tok) > 1 and tok[0] in "01" \
-                        and not tok.startswith(("0.", "1.")):
+                if (
+                    len(args) in (3, 4)
+                    and len(tok) > 1
+                    and tok[0] in "01"
+                    and not tok.startswith(("0.", "1."))
+                ):
                     args.append(float(tok[0]))
                     toks[i] = tok[1:]
                     continue
                 args.append(float(tok))
                 i += 1
         else:
-            args = [float(x) for x in toks[i:i + n]]
+            args = [float(x) for x in toks[i : i + n]]
             i += n
         if len(args) != n:
             raise ValueError("truncated path data")
@@ -253,13 +294,13 @@ def parse_path(d):
 def round_path(d, dec, points_out):
     """Round path data; append absolute (unrounded) points to points_out."""
     segs = parse_path(d)
-    cx = cy = 0.0          # true current point
-    rx = ry = 0            # rounded current point (ints, units 10**-dec)
-    sx = sy = 0.0          # true subpath start
+    cx = cy = 0.0  # true current point
+    rx = ry = 0  # rounded current point (ints, units 10**-dec)
+    sx = sy = 0.0  # true subpath start
     srx = sry = 0
     out = []
-    prev = None            # letter whose repetition may be implicit
-    last = ""              # last number written
+    prev = None  # letter whose repetition may be implicit
+    last = ""  # last number written
 
     for cmd, a in segs:
         up = cmd.upper()
@@ -277,13 +318,15 @@ def round_path(d, dec, points_out):
         elif up == "V":
             pts = [(cx, a[0] + (cy if rel else 0))]
         elif up in "CSQ":
-            pts = [(a[k] + (cx if rel else 0), a[k + 1] + (cy if rel else 0))
-                   for k in range(0, len(a), 2)]
+            pts = [
+                (a[k] + (cx if rel else 0), a[k + 1] + (cy if rel else 0))
+                for k in range(0, len(a), 2)
+            ]
         else:  # A
             pts = [(a[5] + (cx if rel else 0), a[6] + (cy if rel else 0))]
         qp = [(q(x, dec), q(y, dec)) for x, y in pts]
 
-        def nums(relative):
+        def nums(relative, up=up, qp=qp, a=a, rx=rx, ry=ry):
             ox, oy = (rx, ry) if relative else (0, 0)
             if up == "H":
                 return [fmt_int(qp[0][0] - ox, dec)]
@@ -291,8 +334,7 @@ def round_path(d, dec, points_out):
                 return [fmt_int(qp[0][1] - oy, dec)]
             res = []
             if up == "A":
-                res = [fmt(a[0], dec), fmt(a[1], dec), fmt(a[2], 2),
-                       str(int(a[3])), str(int(a[4]))]
+                res = [fmt(a[0], dec), fmt(a[1], dec), fmt(a[2], 2), str(int(a[3])), str(int(a[4]))]
             for x, y in qp:
                 res += [fmt_int(x - ox, dec), fmt_int(y - oy, dec)]
             return res
@@ -321,10 +363,10 @@ def round_path(d, dec, points_out):
 
 # ----------------------------------------------------------------- styles
 
+
 def parse_style(el):
     props = {}
-    for k in list(INHERITED) + list(NON_INHERITED) + list(UNSUPPORTED) + \
-            ["display", "visibility"]:
+    for k in list(INHERITED) + list(NON_INHERITED) + list(UNSUPPORTED) + ["display", "visibility"]:
         if el.get(k) is not None:
             props[k] = el.get(k).strip()
     for part in (el.get("style") or "").split(";"):
@@ -351,14 +393,14 @@ def norm_value(k, v, dec):
     if k == "stroke-dasharray":
         if v == "none":
             return v
-        return ",".join(fmt(float(x), dec + 1)
-                        for x in NUM.findall(v))
+        return ",".join(fmt(float(x), dec + 1) for x in NUM.findall(v))
     if k in ("opacity", "fill-opacity", "stroke-opacity", "stroke-miterlimit"):
         return fmt(float(v), 3)
     return v
 
 
 # ---------------------------------------------------------------- convert
+
 
 class Face:
     def __init__(self, root):
@@ -368,7 +410,7 @@ class Face:
         self.boxes = []
         vb = root.get("viewBox")
         if vb is None:
-            vb = "0 0 %s %s" % (root.get("width"), root.get("height"))
+            vb = "0 0 {} {}".format(root.get("width"), root.get("height"))
         self.viewbox = [float(x) for x in NUM.findall(vb)]
 
     def convert(self, el, ctm, dec_parent, inherited, depth=0):
@@ -381,16 +423,14 @@ class Face:
         if tag == "use":
             return self.expand_use(el, ctm, dec_parent, inherited, depth)
         if tag not in SHAPES and tag not in ("g", "svg"):
-            self.warnings.append("dropped <%s>" % tag)
+            self.warnings.append(f"dropped <{tag}>")
             return []
 
         props = parse_style(el)
         for k in UNSUPPORTED:
             if k in props and props[k] != "none":
-                raise ValueError("%s=%s needs <defs>; not supported"
-                                 % (k, props[k]))
-        if props.get("display") == "none" or \
-                props.get("visibility") == "hidden":
+                raise ValueError(f"{k}={props[k]} needs <defs>; not supported")
+        if props.get("display") == "none" or props.get("visibility") == "hidden":
             return []
 
         items, m = parse_transform(el.get("transform"))
@@ -413,14 +453,16 @@ class Face:
         if opacity != "1":
             attrs["opacity"] = opacity
         if leaf:
-            stroked = comp["stroke"] != "none" and comp["stroke-opacity"] != "0" \
+            stroked = (
+                comp["stroke"] != "none"
+                and comp["stroke-opacity"] != "0"
                 and comp["stroke-width"] != "0"
+            )
             filled = comp["fill"] != "none" and comp["fill-opacity"] != "0"
             if not stroked:
                 for k in STROKE_PROPS:
                     attrs.pop(k, None)
-                if comp["stroke"] != inherited["stroke"] and \
-                        inherited["stroke"] != "none":
+                if comp["stroke"] != inherited["stroke"] and inherited["stroke"] != "none":
                     attrs["stroke"] = "none"
             else:
                 if comp["stroke-linejoin"] != "miter":
@@ -452,39 +494,57 @@ class Face:
                     geom.append((k, v))
                 else:
                     geom.append((k, fmt(float(v), dec)))
-            g = {k: float(el.get(k)) for k in GEOMETRY
-                 if el.get(k) is not None and k != "points"
-                 and not el.get(k).endswith("%")}
+            g = {
+                k: float(el.get(k))
+                for k in GEOMETRY
+                if el.get(k) is not None and k != "points" and not el.get(k).endswith("%")
+            }
             if tag == "circle":
                 r = g.get("r", 0)
-                points += [(g.get("cx", 0) + sx * r, g.get("cy", 0) + sy * r)
-                           for sx in (-1, 1) for sy in (-1, 1)]
+                points += [
+                    (g.get("cx", 0) + sx * r, g.get("cy", 0) + sy * r)
+                    for sx in (-1, 1)
+                    for sy in (-1, 1)
+                ]
             elif tag == "ellipse":
-                points += [(g.get("cx", 0) + sx * g.get("rx", 0),
-                            g.get("cy", 0) + sy * g.get("ry", 0))
-                           for sx in (-1, 1) for sy in (-1, 1)]
+                points += [
+                    (g.get("cx", 0) + sx * g.get("rx", 0), g.get("cy", 0) + sy * g.get("ry", 0))
+                    for sx in (-1, 1)
+                    for sy in (-1, 1)
+                ]
             elif tag == "rect":
                 x, y = g.get("x", 0), g.get("y", 0)
-                points += [(x + sx * g.get("width", 0), y + sy * g.get("height", 0))
-                           for sx in (0, 1) for sy in (0, 1)]
+                points += [
+                    (x + sx * g.get("width", 0), y + sy * g.get("height", 0))
+                    for sx in (0, 1)
+                    for sy in (0, 1)
+                ]
             elif tag == "line":
-                points += [(g.get("x1", 0), g.get("y1", 0)),
-                           (g.get("x2", 0), g.get("y2", 0))]
+                points += [(g.get("x1", 0), g.get("y1", 0)), (g.get("x2", 0), g.get("y2", 0))]
 
         tf = fmt_transform(items, dec_parent)
 
         if leaf and points:
-            tp = [(ctm2[0] * x + ctm2[2] * y + ctm2[4],
-                   ctm2[1] * x + ctm2[3] * y + ctm2[5]) for x, y in points]
-            box = (min(p[0] for p in tp), min(p[1] for p in tp),
-                   max(p[0] for p in tp), max(p[1] for p in tp))
+            tp = [
+                (ctm2[0] * x + ctm2[2] * y + ctm2[4], ctm2[1] * x + ctm2[3] * y + ctm2[5])
+                for x, y in points
+            ]
+            box = (
+                min(p[0] for p in tp),
+                min(p[1] for p in tp),
+                max(p[0] for p in tp),
+                max(p[1] for p in tp),
+            )
             vx, vy, vw, vh = self.viewbox
-            cover = (max(0, min(box[2], vx + vw) - max(box[0], vx)) *
-                     max(0, min(box[3], vy + vh) - max(box[1], vy))) / (vw * vh)
+            cover = (
+                max(0, min(box[2], vx + vw) - max(box[0], vx))
+                * max(0, min(box[3], vy + vh) - max(box[1], vy))
+            ) / (vw * vh)
             opaque = filled and comp["fill-opacity"] == "1" and opacity == "1"
             if opaque and cover >= 0.9:
-                self.removed.append("<%s> fill=%s covering %.0f%%"
-                                    % (tag, comp["fill"], cover * 100))
+                self.removed.append(
+                    "<{}> fill={} covering {:.0f}%".format(tag, comp["fill"], cover * 100)
+                )
                 return []
             self.boxes.append(box)
 
@@ -504,22 +564,21 @@ class Face:
             return children
         if tag == "g" and not out_attrs:
             return children  # attribute-less group: unwrap
-        open_ = "<%s%s" % (tag, "".join(' %s="%s"' % (k, xml_escape(v))
-                                        for k, v in out_attrs))
+        open_ = "<{}{}".format(tag, "".join(f' {k}="{xml_escape(v)}"' for k, v in out_attrs))
         if leaf:
             return [open_ + "/>"]
-        return [open_ + ">"] + children + ["</%s>" % tag]
+        return [open_ + ">"] + children + [f"</{tag}>"]
 
     def expand_use(self, el, ctm, dec_parent, inherited, depth):
-        href = el.get("{%s}href" % XLINK) or el.get("href")
+        href = el.get(f"{{{XLINK}}}href") or el.get("href")
         if not href or not href.startswith("#") or href[1:] not in self.ids:
-            raise ValueError("unresolvable <use> %r" % href)
+            raise ValueError(f"unresolvable <use> {href!r}")
         target = self.ids[href[1:]]
-        g = ET.Element("{%s}g" % SVG)
+        g = ET.Element(f"{{{SVG}}}g")
         tf = el.get("transform") or ""
         x, y = float(el.get("x", 0) or 0), float(el.get("y", 0) or 0)
         if x or y:
-            tf += " translate(%r,%r)" % (x, y)
+            tf += f" translate({x!r},{y!r})"
         if tf.strip():
             g.set("transform", tf.strip())
         for k, v in el.attrib.items():
@@ -542,7 +601,7 @@ def convert_file(path):
     body = []
     for c in root:
         body += face.convert(c, IDENT, 1, inherited)
-    svg = '<svg xmlns="%s" viewBox="%s">%s</svg>' % (SVG, vb, "".join(body))
+    svg = '<svg xmlns="{}" viewBox="{}">{}</svg>'.format(SVG, vb, "".join(body))
     ET.fromstring(svg)  # must still be well-formed
     return svg, face
 
@@ -563,13 +622,12 @@ def main(argv):
         total += size
         note = []
         if face.viewbox != [0, 0, 300, 400]:
-            note.append("viewBox %s" % face.viewbox)
+            note.append(f"viewBox {face.viewbox}")
         if face.removed:
             note.append("REMOVED background: " + "; ".join(face.removed))
         note += face.warnings
-        print("%-14s -> %-6s %6d bytes %s" % (name + ".svg", short + ".svg",
-                                              size, "  ".join(note)))
-    print("total %d bytes in %d files" % (total, len(NAMES)))
+        print(f"{name + '.svg':<14} -> {short + '.svg':<6} {size:>6} bytes {'  '.join(note)}")
+    print(f"total {total} bytes in {len(NAMES)} files")
 
 
 if __name__ == "__main__":

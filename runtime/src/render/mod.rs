@@ -10,7 +10,7 @@ mod tiles;
 
 pub use board::{Board, LastAction, Meld, MeldKind, RiverTile, RoundEndInput, RoundResult, WinLine};
 pub use svg::{round_name, sprite, svg};
-pub use tiles::face_names;
+pub use tiles::label as tile_label;
 
 /// How tiles are drawn.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]

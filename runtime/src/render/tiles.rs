@@ -170,7 +170,7 @@ fn split_face(svg: &str) -> (&str, &str) {
 }
 
 /// The ASCII label: `5m`, `E`, `Wh`; a red five reads as its five.
-pub(super) fn label(t: Tile) -> String {
+pub fn label(t: Tile) -> String {
     let k = t.kind();
     match k.suit() {
         Some(_) => k.name(),
@@ -256,11 +256,6 @@ pub(super) fn draw(out: &mut String, used: &mut UsedTiles, tile: Option<Tile>, p
         r##"><title>{title}</title><use href="#t-{name}" width="{}" height="{}"{dim}/></g>"##,
         p.w, p.h
     );
-}
-
-/// Every tile type's face name in [`FACES`], for tests.
-pub fn face_names() -> impl Iterator<Item = &'static str> {
-    FACES.iter().map(|(n, _)| *n)
 }
 
 #[cfg(test)]

@@ -430,11 +430,9 @@ fn on(claim: Option<Tile>) -> String {
 
 /// A tile name as the board's labels read: `E`, `Rd`, `red 5m`.
 fn spoken(name: &str) -> String {
-    const HONORS: [&str; 7] = ["E", "S", "W", "N", "Wh", "Gr", "Rd"];
-    let mut chars = name.chars();
-    match (chars.next().and_then(|c| c.to_digit(10)), chars.next()) {
-        (Some(n @ 1..=7), Some('z')) => HONORS[n as usize - 1].to_string(),
-        (Some(0), Some(suit)) => format!("red 5{suit}"),
-        _ => name.to_string(),
+    match crate::notation::parse_tile(name) {
+        Ok(t) if t.is_red() => format!("red {}", render::tile_label(t)),
+        Ok(t) => render::tile_label(t),
+        Err(_) => name.to_string(),
     }
 }
