@@ -4,6 +4,7 @@
 
 use std::time::{Duration, Instant};
 
+use bytemuck::Zeroable as _;
 use serde::Serialize;
 
 use crate::agents::Agent;
@@ -280,6 +281,14 @@ impl Session {
         self.env.last().legal_actions(0).any(|a| a == self.pass)
     }
 
+    /// Ends the game where it stands (the engine failed), telling the page why.
+    pub fn stop(&mut self, why: &str) {
+        self.events.push(format!("the game stopped: {why}"));
+        let mut board = self.board().unwrap_or_else(|_| Board::from_state(&GameState::zeroed()));
+        board.over = true;
+        self.ended = Some(board);
+    }
+
     /// Leaves a round's result for the next round.
     pub fn next_round(&mut self) -> Result<(), Refusal> {
         if self.phase() != Phase::Result {
@@ -434,5 +443,67 @@ fn spoken(name: &str) -> String {
         Ok(t) if t.is_red() => format!("red {}", render::tile_label(t)),
         Ok(t) => render::tile_label(t),
         Err(_) => name.to_string(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn setup(seats: [Option<Agent>; 4]) -> Setup {
+        Setup {
+            variant: Variant::Red,
+            mode: Mode::East,
+            seats,
+            seed: 5,
+            delay: Duration::ZERO,
+        }
+    }
+
+    #[test]
+    fn a_stopped_game_is_over_and_says_why() {
+        let mut s =
+            Session::new(setup([None, Some(Agent::Rule), Some(Agent::Rule), Some(Agent::Rule)])).expect("a game");
+        s.stop("the device was lost");
+        assert_eq!(s.phase(), Phase::Over);
+        assert!(s.events().last().is_some_and(|e| e.contains("the device was lost")));
+        assert!(s.choices().is_empty());
+    }
+
+    #[test]
+    fn two_people_cannot_share_a_game() {
+        let e = Session::new(setup([None, None, Some(Agent::Rule), Some(Agent::Rule)])).err();
+        assert_eq!(e.as_deref(), Some("at most one seat can be played by a person"));
+    }
+
+    #[test]
+    fn buttons_name_the_tiles() {
+        let t = crate::notation::parse_tile("4p").ok();
+        assert_eq!(label("chi_left", t), "Chi 456p");
+        assert_eq!(label("chi_middle_red", t), "Chi 345p (red 5)");
+        assert_eq!(label("chi_right", t), "Chi 234p");
+        assert_eq!(label("pon", crate::notation::parse_tile("7z").ok()), "Pon Rd");
+        assert_eq!(label("discard_0s", None), "Discard red 5s");
+        assert_eq!(label("self_kan_1z", None), "Kan E");
+    }
+
+    #[test]
+    fn agents_decide_their_calls_out_of_sight() {
+        // Four agents, played to the end: the page never finds an agent at a claim prompt.
+        let mut s = Session::new(setup([Some(Agent::Rule); 4])).expect("a game");
+        let mut moves = 0;
+        while s.phase() != Phase::Over {
+            match s.phase() {
+                Phase::Agent => {
+                    assert!(!s.claim_prompt(), "an agent's claim prompt was left open");
+                    s.agent_move().expect("a move");
+                    moves += 1;
+                }
+                Phase::Result => s.next_round().expect("the next round"),
+                _ => unreachable!(),
+            }
+            assert!(moves < 20_000);
+        }
+        assert!(moves > 100 && u64::try_from(moves).is_ok_and(|m| s.step >= m));
     }
 }

@@ -173,9 +173,9 @@ async fn drive(held: Arc<Held>) {
         let moved = {
             let mut s = held.lock();
             match s.phase() {
-                // An env error cannot be answered to anyone: the game stops where it is.
-                Phase::Agent => s.agent_move().unwrap_or_else(|_| {
-                    held.close();
+                // An env error cannot be answered to anyone: the game stops where it is, saying so.
+                Phase::Agent => s.agent_move().unwrap_or_else(|e| {
+                    s.stop(&e);
                     true
                 }),
                 Phase::Result if spectating => s.next_round().is_ok(),
