@@ -284,6 +284,16 @@ fn seat_frame(out: &mut String, used: &mut UsedTiles, board: &Board, seat: u32, 
         wind(board, seat),
         board.scores[s]
     );
+    if seat == board.dealer % 4 {
+        let _ = write!(
+            out,
+            r##"<g class="dealer"><rect x="{}" y="{}" width="18" height="18" rx="4" fill="#c62828"/><text x="{}" y="{}" font-size="13" fill="#fff" text-anchor="middle">D</text></g>"##,
+            C - 74.0,
+            edge - 26.0,
+            C - 65.0,
+            edge - 12.5
+        );
+    }
     if board.riichi[s] {
         let _ = write!(
             out,
