@@ -458,7 +458,7 @@ fn public_record(s: &mut GameState) -> Record {
         for i in 0..n {
             let word = s.melds[(seat * 4 + i) as usize];
             let call = calls[seat as usize].get(i as usize).copied();
-            let low = word >> kernel::MELD_TILE_SHIFT & 63;
+            let low = kernel::meld_tile(word);
             let fourth = added[seat as usize].iter().copied().find(|&v| value_type(v) == low);
             melds[seat as usize].push(meld_of(word, call, fourth));
         }
@@ -468,14 +468,14 @@ fn public_record(s: &mut GameState) -> Record {
 
 /// A meld word (kind, lowest type, source seat, red fives) as tiles in table order.
 fn meld_of(word: u32, call: Option<(u32, u32)>, added_value: Option<u32>) -> Meld {
-    let kind = match word & 15 {
+    let kind = match kernel::meld_kind(word) {
         kernel::MELD_CHI => MeldKind::Chi,
         kernel::MELD_PON => MeldKind::Pon,
         kernel::MELD_OPEN_KAN => MeldKind::OpenKan,
         kernel::MELD_CLOSED_KAN => MeldKind::ClosedKan,
         _ => MeldKind::AddedKan,
     };
-    let low = word >> kernel::MELD_TILE_SHIFT & 63;
+    let low = kernel::meld_tile(word);
     let from = word >> kernel::MELD_FROM_SHIFT & 3;
     // Red fives in the meld: one bit count per suit's five, at most one per meld in practice.
     let mut reds = word >> kernel::MELD_REDS_SHIFT & 7;

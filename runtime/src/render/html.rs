@@ -8,7 +8,7 @@ use base64::Engine as _;
 use serde::Serialize;
 
 use super::board::Board;
-use super::svg::{escape, round_name, sprite, svg};
+use super::svg::{escape, round_name, seat_name, sprite, svg};
 use super::{Options, TileMode};
 use crate::tenhou::log::Game;
 use crate::tenhou::position::round_replay;
@@ -34,8 +34,6 @@ struct Data {
     sprites: Vec<(String, String)>,
 }
 
-const SEATS: [&str; 4] = ["seat 0", "seat 1", "seat 2", "seat 3"];
-
 /// The boards of every decision of `game` (a tenhou.net/6 log), with a result board after each
 /// round.
 pub fn frames(game: &Game) -> Result<Vec<(String, Board)>, String> {
@@ -46,10 +44,7 @@ pub fn frames(game: &Game) -> Result<Vec<(String, Board)>, String> {
         for p in &positions {
             let mut board = Board::from_state(&p.state);
             board.names = name.clone();
-            let who = name
-                .get(p.seat as usize)
-                .filter(|n| !n.is_empty())
-                .map_or(SEATS[p.seat as usize], |n| n.as_str());
+            let who = seat_name(&name, p.seat);
             let caption = format!(
                 "{}, {} honba: decision {} of {}, {who}: {}",
                 round_name(board.round),

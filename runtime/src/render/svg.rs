@@ -36,8 +36,13 @@ fn wind(board: &Board, seat: u32) -> &'static str {
 }
 
 fn name(board: &Board, seat: u32) -> String {
-    match board.names.get(seat as usize) {
-        Some(n) if !n.is_empty() => escape(n),
+    escape(&seat_name(&board.names, seat))
+}
+
+/// What a seat is called: its player's name, or `seat N` where the name is empty.
+pub fn seat_name(names: &[String; 4], seat: u32) -> String {
+    match names.get(seat as usize) {
+        Some(n) if !n.is_empty() => n.clone(),
         _ => format!("seat {seat}"),
     }
 }

@@ -168,14 +168,7 @@ struct ViewQuery {
 
 fn view_json(id: u64, s: &Session, tiles: TileMode, board: bool) -> Result<Value, ApiError> {
     let b = s.board().map_err(|e| ApiError(StatusCode::INTERNAL_SERVER_ERROR, e))?;
-    let svg = if board {
-        Some(
-            s.svg(tiles)
-                .map_err(|e| ApiError(StatusCode::INTERNAL_SERVER_ERROR, e))?,
-        )
-    } else {
-        None
-    };
+    let svg = board.then(|| s.svg(&b, tiles));
     let setup = s.setup();
     Ok(json!({
         "id": id.to_string(),

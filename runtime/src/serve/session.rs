@@ -175,15 +175,15 @@ impl Session {
         Ok(board)
     }
 
-    /// The board drawn for the page (faces from the page's sprite).
-    pub fn svg(&self, tiles: TileMode) -> Result<String, String> {
+    /// `board` (this game's [`Session::board`]) drawn for the page (faces from the page's sprite).
+    pub fn svg(&self, board: &Board, tiles: TileMode) -> String {
         let opts = Options {
             tiles,
             pov: self.human().unwrap_or(0),
             reveal: self.human().is_none() || self.phase() == Phase::Over,
             defs: false,
         };
-        Ok(render::svg(&self.board()?, &opts))
+        render::svg(board, &opts)
     }
 
     /// The person's legal actions (none when it is not their turn).
