@@ -1,0 +1,127 @@
+"""Behaviour cloning: the network learns the collected agent's choices (cross-entropy over the
+legal actions), with a held-out tenth to measure accuracy.
+
+python examples/train/bc.py --config configs/seed.toml --data runs/x/data --out runs/x
+"""
+
+from __future__ import annotations
+
+import argparse
+import pathlib
+import time
+
+import numpy as np
+import torch
+from collect import load_shards
+from common import CANONICAL, Log, Net, Space, load_config, save, seed_everything, set_threads
+
+
+def train_bc(cfg: dict, seed: int, data: pathlib.Path, out: pathlib.Path) -> dict:
+    c = cfg["bc"]
+    seed_everything(seed)
+    set_threads(cfg)
+    d = load_shards(data)
+    n = len(d["action"])
+    order = np.random.default_rng(seed).permutation(n)
+    n_val = max(1, n // 10)
+    val, train = order[:n_val], order[n_val:]
+    analysis = bool(cfg["run"].get("analysis", False))
+    net = Net(
+        Space(CANONICAL).size,
+        int(c["hidden"]),
+        int(c["layers"]),
+        analysis,
+        tile_head=bool(c.get("tile_head", False)),
+    )
+    want = (net.row_scale.shape[0], net.config["num_actions"])
+    if (d["planes"].shape[1], d["mask"].shape[1]) != want:
+        raise SystemExit(
+            f"{data}: shards hold {d['planes'].shape[1]} rows and {d['mask'].shape[1]} actions, "
+            f"this config's net reads {want[0]} and writes {want[1]} (collect them again)"
+        )
+    s = torch.tensor(d["scalars"][train], dtype=torch.float32)
+    net.scalar_mean.copy_(s.mean(0))
+    net.scalar_std.copy_(s.std(0).clamp(min=1.0))
+    del s
+    opt = torch.optim.Adam(net.parameters(), lr=float(c["lr"]))
+    batch, epochs = int(c["batch"]), float(c["epochs"])
+    total = int(epochs * len(train) / batch)
+    sched = torch.optim.lr_scheduler.CosineAnnealingLR(opt, max(total, 1))
+    log = Log(out / "bc.jsonl")
+    start = time.time()
+
+    def rows(idx):
+        return (
+            torch.from_numpy(d["planes"][idx]),
+            torch.from_numpy(d["scalars"][idx]),
+            torch.from_numpy(d["mask"][idx]),
+            torch.from_numpy(d["action"][idx]),
+        )
+
+    def validate() -> tuple[float, float]:
+        net.eval()
+        loss = correct = 0.0
+        with torch.no_grad():
+            for i in range(0, n_val, 8192):
+                p, sc, m, a = rows(val[i : i + 8192])
+                logits = net(p, sc, m)
+                loss += torch.nn.functional.cross_entropy(logits, a, reduction="sum").item()
+                correct += (logits.argmax(1) == a).sum().item()
+        net.train()
+        return loss / n_val, correct / n_val
+
+    val_loss, acc = validate()
+    log.write(step=0, samples=0, train_loss=None, val_loss=val_loss, val_accuracy=acc)
+    first_loss = val_loss
+    rng = np.random.default_rng(seed + 1)
+    step, running = 0, []
+    every = max(1, total // 40)
+    while step < total:
+        perm = train[rng.permutation(len(train))]
+        for i in range(0, len(perm) - batch + 1, batch):
+            p, sc, m, a = rows(np.sort(perm[i : i + batch]))
+            loss = torch.nn.functional.cross_entropy(net(p, sc, m), a)
+            opt.zero_grad()
+            loss.backward()
+            opt.step()
+            sched.step()
+            running.append(loss.item())
+            step += 1
+            if step % every == 0 or step == total:
+                val_loss, acc = validate()
+                log.write(
+                    step=step,
+                    samples=step * batch,
+                    train_loss=float(np.mean(running)),
+                    val_loss=val_loss,
+                    val_accuracy=acc,
+                )
+                print(f"bc step {step}/{total} loss {np.mean(running):.4f} val acc {acc:.3f}")
+                running = []
+            if step >= total:
+                break
+    seconds = round(time.time() - start, 1)
+    save(net, out / "bc.pt", seed=seed, samples=n)
+    log.close()
+    return {
+        "samples": n,
+        "steps": step,
+        "first_val_loss": first_loss,
+        "val_loss": val_loss,
+        "val_accuracy": acc,
+        "seconds": seconds,
+    }
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--config", required=True)
+    ap.add_argument("--seed", type=int, default=0)
+    ap.add_argument("--data", required=True)
+    ap.add_argument("--out", required=True)
+    a = ap.parse_args()
+    print(train_bc(load_config(a.config), a.seed, pathlib.Path(a.data), pathlib.Path(a.out)))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,102 @@
+"""Behaviour-cloning data: a built-in agent (`rule` or `greedy`) plays all four seats and every
+decision with a real choice (two or more legal actions) is written as numpy shards:
+planes (N, R, 34) uint8 (the analysis rows under the 64 planes when `[run] analysis`), scalars
+(N, 48) int16, mask (N, A) bool and action (N,) int64 in the canonical (red) action ids.
+
+python examples/train/collect.py --config configs/seed.toml --seed 0 --out runs/x/data
+"""
+
+from __future__ import annotations
+
+import argparse
+import pathlib
+import time
+
+import numpy as np
+from common import Log, Space, load_config, rows
+
+import rinshan
+
+
+def collect(cfg: dict, seed: int, out: pathlib.Path) -> dict:
+    """Writes `[collect] samples` decisions, or each `[[collect.mix]]` entry's `samples` in its own
+    variant and mode (so one net learns both, e.g. single no-red hands and red half games)."""
+    c = cfg["collect"]
+    parts = c.get("mix") or [{"samples": c["samples"]}]
+    out.mkdir(parents=True, exist_ok=True)
+    for old in out.glob("shard-*.npz"):
+        old.unlink()
+    log = Log(out / "collect.jsonl")
+    totals = {"samples": 0, "shards": 0, "env_steps": 0, "games": 0}
+    start = time.time()
+    for k, part in enumerate(parts):
+        variant = part.get("variant", cfg["run"]["variant"])
+        mode = part.get("mode", cfg["run"]["mode"])
+        got = _collect_part(cfg, variant, mode, int(part["samples"]), seed + k, out, totals)
+        log.write(variant=variant, mode=mode, **got)
+    totals.update(agent=c["agent"], seconds=round(time.time() - start, 1))
+    log.write(**totals)
+    log.close()
+    return totals
+
+
+def _collect_part(cfg, variant, mode, samples, seed, out, totals) -> dict:
+    c = cfg["collect"]
+    agent, shard = c["agent"], int(c["shard_size"])
+    analysis = bool(cfg["run"].get("analysis", False))
+    env = rinshan.make(
+        variant,
+        mode=mode,
+        num_envs=int(c["num_envs"]),
+        seed=seed,
+        num_threads=int(cfg["run"].get("env_threads", 1)),
+        analysis=analysis,
+    )
+    space = Space(variant)
+    ts = env.reset()
+    buf: dict[str, list] = {"planes": [], "scalars": [], "mask": [], "action": []}
+    held = written = steps = games = 0
+    while written < samples:
+        actions = env.agent_actions(agent)
+        choice = ts.legal_action_mask.sum(axis=1) > 1
+        buf["planes"].append(rows(ts.observation, analysis)[choice])
+        buf["scalars"].append(ts.observation["scalars"][choice].copy())
+        buf["mask"].append(space.mask(ts.legal_action_mask[choice]))
+        buf["action"].append(space.columns[actions[choice]])
+        held += int(choice.sum())
+        ts = env.step(actions)
+        steps += env.num_envs
+        games += int(ts.terminated.sum())
+        if held >= shard or written + held >= samples:
+            arrays = {k: np.concatenate(v)[: samples - written] for k, v in buf.items()}
+            np.savez(out / f"shard-{totals['shards']:03}.npz", **arrays)
+            totals["shards"] += 1
+            written += len(arrays["action"])
+            held = 0
+            buf = {k: [] for k in buf}
+    env.close()
+    totals["samples"] += written
+    totals["env_steps"] += steps
+    totals["games"] += games
+    return {"samples": written, "env_steps": steps, "games": games}
+
+
+def load_shards(folder: pathlib.Path) -> dict[str, np.ndarray]:
+    files = sorted(folder.glob("shard-*.npz"))
+    if not files:
+        raise SystemExit(f"{folder}: no shard-*.npz (run collect.py first)")
+    parts = [np.load(f) for f in files]
+    return {k: np.concatenate([p[k] for p in parts]) for k in parts[0].files}
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--config", required=True)
+    ap.add_argument("--seed", type=int, default=0)
+    ap.add_argument("--out", required=True, help="folder for the shards")
+    a = ap.parse_args()
+    print(collect(load_config(a.config), a.seed, pathlib.Path(a.out)))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,288 @@
+"""What the training stages share: the config, the network, and turning a TimeStep into tensors.
+
+A config is one TOML file (configs/*.toml); every stage reads its own table and `[run]`.
+"""
+
+from __future__ import annotations
+
+import json
+import pathlib
+import random
+import sys
+import time
+
+import numpy as np
+import tomllib
+import torch
+from torch import nn
+
+import rinshan
+
+PLANES = (64, 34)
+SCALARS = 48
+# The analysis tier's rows the net may read besides the planes, and the scale that brings each
+# near 1 (plane counts are small integers: 0..4, river places up to 24).
+ANALYSIS = ("discard_shanten", "discard_ukeire", "improving")
+PLANE_SCALE = 0.25
+ANALYSIS_SCALE = (0.25, 1 / 16, 1 / 16)
+MASKED = -1e9
+# The nets act in the red variant's action space, a superset of no-red's, so that one net plays
+# both; `Space` maps an env's ids to and from it.
+CANONICAL = "red"
+
+
+class Space:
+    """An env variant's action ids against the canonical (red) ones."""
+
+    def __init__(self, variant: str):
+        canon = rinshan.make(CANONICAL, num_envs=1).spec.action_names
+        names = rinshan.make(variant, num_envs=1).spec.action_names
+        missing = [a for a in names if a not in canon]
+        if missing:
+            raise ValueError(f"{variant} actions {missing} are not in the {CANONICAL} variant's")
+        self.size = len(canon)
+        self.columns = np.array([canon.index(a) for a in names])
+        self.back = np.full(self.size, -1)
+        self.back[self.columns] = np.arange(len(names))
+
+    def discard_columns(self) -> np.ndarray:
+        """Per canonical action, the tile type it discards (a red five is its type's five; 34 =
+        the drawn tile, for tsumogiri), -1 when it is not a discard."""
+        cols = np.full(self.size, -1)
+        for i, name in enumerate(rinshan.make(CANONICAL, num_envs=1).spec.action_names):
+            if name == "tsumogiri":
+                cols[i] = 34
+            elif name.startswith("discard_"):
+                number, suit = int(name[-2]), "mpsz".index(name[-1])
+                cols[i] = suit * 9 + (number or 5) - 1
+        return cols
+
+    def mask(self, m: np.ndarray) -> np.ndarray:
+        out = np.zeros((m.shape[0], self.size), bool)
+        out[:, self.columns] = m
+        return out
+
+    def to_env(self, actions: np.ndarray) -> np.ndarray:
+        return self.back[actions]
+
+
+def load_config(path: str | pathlib.Path) -> dict:
+    with open(path, "rb") as f:
+        cfg = tomllib.load(f)
+    for table in ("run", "collect", "bc", "ppo", "evaluate"):
+        if table not in cfg:
+            sys.exit(f"{path}: the config has no [{table}] table")
+    return cfg
+
+
+def seed_everything(seed: int) -> None:
+    random.seed(seed)
+    np.random.seed(seed % 2**32)
+    torch.manual_seed(seed)
+
+
+def set_threads(cfg: dict) -> None:
+    torch.set_num_threads(int(cfg["run"].get("threads", 2)))
+
+
+DRAWN_ROW = 5  # the planes' `drawn` row (docs/observation.md)
+
+
+class Net(nn.Module):
+    """An MLP over the flattened planes and the normalised scalars: masked logits over the action
+    ids. The scalar statistics come from the BC data and travel with the weights.
+
+    With `tile_head`, each discard's logit also gets a score computed from its own tile's column
+    of the planes (one small MLP shared by the 34 columns, plus a summary of the whole position):
+    comparing discards tile by tile (e.g. the shanten each leaves) is then one weight, where the
+    flat MLP would have to learn it for every column apart."""
+
+    def __init__(
+        self,
+        num_actions: int,
+        hidden: int = 256,
+        layers: int = 2,
+        analysis=False,
+        extra: int = 0,
+        tile_head: bool = False,
+    ):
+        super().__init__()
+        blocks: list[nn.Module] = []
+        rows = PLANES[0] + (len(ANALYSIS) if analysis else 0)
+        width = rows * PLANES[1] + SCALARS + extra
+        for _ in range(layers):
+            blocks += [nn.Linear(width, hidden), nn.ReLU()]
+            width = hidden
+        self.torso = nn.Sequential(*blocks)
+        self.head = nn.Linear(hidden, num_actions)
+        self.register_buffer("scalar_mean", torch.zeros(SCALARS))
+        self.register_buffer("scalar_std", torch.ones(SCALARS))
+        scale = [PLANE_SCALE] * PLANES[0] + (list(ANALYSIS_SCALE) if analysis else [])
+        self.register_buffer("row_scale", torch.tensor(scale)[:, None])
+        self.analysis = analysis
+        self.tile_head = None
+        if tile_head:
+            self.tile_context = nn.Linear(hidden, 32)
+            self.tile_head = nn.Sequential(
+                nn.Linear(len(scale) + 32, 64), nn.ReLU(), nn.Linear(64, 1)
+            )
+            cols = torch.from_numpy(Space(CANONICAL).discard_columns())
+            self.register_buffer("discard_column", cols.clamp(min=0))
+            self.register_buffer("is_discard", (cols >= 0).float())
+        self.config = {
+            "num_actions": num_actions,
+            "hidden": hidden,
+            "layers": layers,
+            "analysis": analysis,
+            "extra": extra,
+            "tile_head": tile_head,
+        }
+
+    def features(self, planes, scalars, extra=None) -> torch.Tensor:
+        p = (planes.float() * self.row_scale).reshape(planes.shape[0], -1)
+        s = (scalars.float() - self.scalar_mean) / self.scalar_std
+        return self.torso(torch.cat([p, s] + ([] if extra is None else [extra]), dim=1))
+
+    def forward(self, planes, scalars, mask) -> torch.Tensor:
+        g = self.features(planes, scalars)
+        logits = self.head(g)
+        if self.tile_head is not None:
+            columns = (planes.float() * self.row_scale).transpose(1, 2)
+            context = self.tile_context(g)[:, None, :].expand(-1, PLANES[1], -1)
+            per_tile = self.tile_head(torch.cat([columns, context], dim=2)).squeeze(2)
+            drawn = planes[:, DRAWN_ROW].argmax(dim=1, keepdim=True)
+            per_tile = torch.cat([per_tile, per_tile.gather(1, drawn)], dim=1)
+            logits = logits + per_tile[:, self.discard_column] * self.is_discard
+        return logits.masked_fill(~mask, MASKED)
+
+
+# What an oracle critic reads of the hidden state, from the learner's seat: the others' hands and
+# waits (3 rows each), the tiles of the next live-wall draws (1 row), and per other seat its
+# shanten and furiten. The policy never reads it (`env.oracle` is for critics).
+ORACLE_ROWS, ORACLE_SCALARS, WALL_AHEAD = 7, 6, 8
+RED_FIVE_TYPES = np.array([4, 13, 22])
+
+
+def oracle_features(o: dict) -> np.ndarray:
+    """(B, 7 * 34 + 6) float32 features of `env.oracle(...)` arrays."""
+    n = o["others_hand"].shape[0]
+    wall = o["wall"].astype(np.int64)
+    live = wall >= 0
+    take = live & (np.cumsum(live, axis=1) <= WALL_AHEAD)
+    types = np.where(wall >= 34, RED_FIVE_TYPES[np.clip(wall - 34, 0, 2)], wall)
+    ahead = np.zeros((n, 34), np.float32)
+    np.add.at(ahead, (np.nonzero(take)[0], types[take]), 1.0)
+    planes = np.concatenate(
+        [o["others_hand"] / 4.0, o["others_waits"] > 0, ahead[:, None, :] / 4.0], axis=1
+    )
+    scalars = np.concatenate([o["others_shanten"] / 4.0, o["others_furiten"]], axis=1)
+    return np.concatenate([planes.reshape(n, -1), scalars], axis=1).astype(np.float32)
+
+
+class Critic(nn.Module):
+    """The value of a seat's position, in the reward's units (a separate MLP, so that learning the
+    value does not move the cloned policy's features); with `oracle`, it also reads what the seat
+    cannot see, which takes much of the luck out of the advantages."""
+
+    def __init__(self, hidden=256, layers=2, analysis=False, oracle=False):
+        super().__init__()
+        self.oracle = oracle
+        extra = ORACLE_ROWS * PLANES[1] + ORACLE_SCALARS if oracle else 0
+        self.body = Net(1, hidden, layers, analysis, extra)
+
+    def forward(self, planes, scalars, hidden=None) -> torch.Tensor:
+        return self.body.head(self.body.features(planes, scalars, hidden)).squeeze(1)
+
+
+def save(net: nn.Module, path: pathlib.Path, **meta) -> None:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    torch.save({"config": net.config, "state": net.state_dict(), "meta": meta}, path)
+
+
+def load_net(path: str | pathlib.Path) -> Net:
+    ckpt = torch.load(path, map_location="cpu", weights_only=True)
+    net = Net(**ckpt["config"])
+    net.load_state_dict(ckpt["state"])
+    net.eval()
+    return net
+
+
+def rows(obs: dict, analysis: bool) -> np.ndarray:
+    """The planes, with the analysis tier's rows under them when the net reads those (uint8:
+    shanten after a discard + 1, so that "not held" is 0)."""
+    if not analysis:
+        return np.asarray(obs["planes"])
+    extra = [
+        (obs["discard_shanten"].astype(np.int16) + 1).astype(np.uint8),
+        obs["discard_ukeire"],
+        obs["improving"],
+    ]
+    return np.concatenate([obs["planes"], np.stack(extra, axis=1)], axis=1)
+
+
+def tensors(ts, space: Space, analysis: bool):
+    """(planes, scalars, canonical mask) tensors of a TimeStep (copies: the env rewrites them)."""
+    obs = ts.observation
+    return (
+        torch.from_numpy(rows(obs, analysis).copy()),
+        torch.tensor(np.asarray(obs["scalars"])),
+        torch.from_numpy(space.mask(ts.legal_action_mask)),
+    )
+
+
+def greedy_policy(net: Net, variant: str):
+    """A function TimeStep -> actions for `rinshan.evaluate`: the net's most likely legal action."""
+    space = Space(variant)
+
+    def act(ts) -> np.ndarray:
+        with torch.no_grad():
+            logits = net(*tensors(ts, space, net.analysis))
+        return space.to_env(logits.argmax(dim=1).numpy())
+
+    return act
+
+
+def entropy_and_kl(logp: torch.Tensor, ref_logp: torch.Tensor, mask: torch.Tensor):
+    """Entropy of the policy and KL(policy || reference) over the legal actions only (illegal ones
+    have probability 0 in both, and their log-probabilities are not finite in any useful sense)."""
+    p = logp.exp()
+    zero = torch.zeros_like(logp)
+    ent = -torch.where(mask, p * logp, zero).sum(1)
+    kl = torch.where(mask, p * (logp - ref_logp), zero).sum(1)
+    return ent, kl
+
+
+class Log:
+    """One JSON object per line, flushed at once: the plots and the report read these files."""
+
+    def __init__(self, path: pathlib.Path):
+        path.parent.mkdir(parents=True, exist_ok=True)
+        self.f = open(path, "w")
+        self.start = time.time()
+
+    def write(self, **row) -> None:
+        row["wall_s"] = round(time.time() - self.start, 2)
+        self.f.write(json.dumps(row) + "\n")
+        self.f.flush()
+
+    def close(self) -> None:
+        self.f.close()
+
+
+def setting(cfg: dict, table: str) -> tuple[str, str]:
+    """(variant, mode) of a stage: its own table's, else `[run]`'s."""
+    t = cfg[table]
+    return t.get("variant", cfg["run"]["variant"]), t.get("mode", cfg["run"]["mode"])
+
+
+def make_env(cfg: dict, table: str, num_envs: int, seed: int, **kw) -> rinshan.Env:
+    variant, mode = setting(cfg, table)
+    return rinshan.make(
+        variant,
+        mode=mode,
+        num_envs=num_envs,
+        seed=seed,
+        num_threads=int(cfg["run"].get("env_threads", 1)),
+        analysis=bool(cfg["run"].get("analysis", False)),
+        **kw,
+    )

@@ -1,0 +1,77 @@
+"""Plots of a run folder (matplotlib, PNG): rank against steps and the loss curves of every seed.
+
+python examples/train/plots.py runs/seed      # writes runs/seed/plots/*.png
+"""
+
+from __future__ import annotations
+
+import json
+import pathlib
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def read(path: pathlib.Path) -> list[dict]:
+    return [json.loads(line) for line in path.read_text().splitlines()] if path.exists() else []
+
+
+def plot_run(run: pathlib.Path) -> list[pathlib.Path]:
+    seeds = sorted(p for p in run.glob("seed*") if p.is_dir())
+    out = run / "plots"
+    out.mkdir(exist_ok=True)
+    written = []
+
+    stages = [s for s in ("ppo", "finetune") if any((d / f"{s}.jsonl").exists() for d in seeds)]
+    fig, axes = plt.subplots(1, len(stages), figsize=(6 * len(stages), 4), squeeze=False)
+    for ax, stage in zip(axes[0], stages):
+        for d in seeds:
+            ev = [r for r in read(d / f"{stage}.jsonl") if r.get("kind") == "evaluate"]
+            if ev:
+                x = [r["env_steps"] / 1e6 for r in ev]
+                y = [r["rank"] for r in ev]
+                ci = [r["ci95"] for r in ev]
+                ax.errorbar(x, y, yerr=ci, marker="o", capsize=3, label=d.name)
+        ax.axhline(2.5, color="grey", linestyle="--", linewidth=1, label="even (2.5)")
+        ax.set_xlabel("env steps (millions, all seats)")
+        ax.set_ylabel("average rank (95% CI)")
+        ax.set_title(f"{stage}: rank against the stage's opponents")
+        ax.invert_yaxis()
+        ax.legend()
+    fig.tight_layout()
+    written.append(out / "rank.png")
+    fig.savefig(written[-1], dpi=100)
+    plt.close(fig)
+
+    fig, axes = plt.subplots(1, 4, figsize=(20, 4))
+    for d in seeds:
+        bc = [r for r in read(d / "bc.jsonl") if r.get("train_loss") is not None]
+        if bc:
+            x = [r["samples"] / 1e6 for r in bc]
+            axes[0].plot(x, [r["train_loss"] for r in bc], label=f"{d.name} train")
+            axes[0].plot(x, [r["val_loss"] for r in bc], "--", label=f"{d.name} held out")
+        for stage in stages:
+            up = [r for r in read(d / f"{stage}.jsonl") if r.get("kind") == "update"]
+            x = [r["env_steps"] / 1e6 for r in up]
+            for ax, key in zip(axes[1:], ("value", "kl", "entropy")):
+                ax.plot(x, [r[key] for r in up], label=f"{d.name} {stage}")
+    axes[0].set(xlabel="samples (millions)", ylabel="cross-entropy", title="BC loss")
+    for ax, title in zip(axes[1:], ("PPO value loss", "KL to the BC policy", "policy entropy")):
+        ax.set(xlabel="env steps (millions)", title=title)
+    for ax in axes:
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    written.append(out / "losses.png")
+    fig.savefig(written[-1], dpi=100)
+    plt.close(fig)
+    return written
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    for p in plot_run(pathlib.Path(sys.argv[1])):
+        print(p)
