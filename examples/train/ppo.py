@@ -159,6 +159,7 @@ def train_ppo(
     vf_coef, kl_coef = float(c["value"]), float(c["kl"])
     epochs, minibatch = int(c["epochs"]), int(c["minibatch"])
     warmup = int(c.get("critic_warmup", 0))
+    critic_epochs = int(c.get("critic_epochs", epochs))
     buf = Rollout(n * t_len, bc.row_scale.shape[0], bc.config["num_actions"], oracle)
     rng = np.random.default_rng(seed)
     bc_act = greedy_policy(bc, variant)
@@ -258,11 +259,15 @@ def train_ppo(
         idx = np.nonzero(ok & choice)[0]
         returns = torch.from_numpy(adv_all) + buf.value[:size]
         adv_t = torch.from_numpy(adv_all)
+        # How much of the return the critic explained before it trained on this rollout.
+        r_ok = returns[torch.from_numpy(idx)]
+        v_ok = buf.value[:size][torch.from_numpy(idx)]
+        explained = float(1 - (r_ok - v_ok).var() / r_ok.var().clamp(min=1e-8))
         policy.train()
         stats: dict[str, list] = {k: [] for k in ("pg", "value", "entropy", "kl", "clipfrac")}
         t1 = time.time()
         by_epoch: dict[str, list] = {"pg": [], "value": []}
-        for _ in range(epochs):
+        for epoch in range(epochs):
             seen = len(stats["value"])
             perm = idx[rng.permutation(len(idx))]
             for i in range(0, len(perm), minibatch):
@@ -278,15 +283,18 @@ def train_ppo(
                 pg = -torch.min(ratio * adv, ratio.clamp(1 - clip, 1 + clip) * adv).mean()
                 h = buf.hidden[mb] if oracle else None
                 value_loss = 0.5 * (critic(p, s, h) - returns[mb]).pow(2).mean()
+                # More passes over one rollout make the critic memorise its games' outcomes.
+                critic_on = epoch < critic_epochs
                 ent, kl = entropy_and_kl(logp_all, buf.ref_logp[mb], m)
-                if update <= warmup:
-                    loss = vf_coef * value_loss
-                else:
-                    loss = pg + vf_coef * value_loss - ent_coef * ent.mean() + kl_coef * kl.mean()
-                opt.zero_grad()
-                loss.backward()
-                torch.nn.utils.clip_grad_norm_([*policy.parameters(), *critic.parameters()], 0.5)
-                opt.step()
+                terms = [vf_coef * value_loss] if critic_on else []
+                if update > warmup:
+                    terms.append(pg - ent_coef * ent.mean() + kl_coef * kl.mean())
+                if terms:
+                    opt.zero_grad()
+                    sum(terms).backward()
+                    params = [*policy.parameters(), *critic.parameters()]
+                    torch.nn.utils.clip_grad_norm_(params, 0.5)
+                    opt.step()
                 stats["pg"].append(pg.item())
                 stats["value"].append(value_loss.item())
                 stats["entropy"].append(ent.mean().item())
@@ -305,6 +313,8 @@ def train_ppo(
             env_steps=env_steps,
             decisions=decisions,
             trained_rows=int(len(idx)),
+            explained_variance=explained,
+            return_var=float(r_ok.var()),
             rollout_s=round(rollout_s, 2),
             train_s=round(time.time() - t1, 2),
             games=len(finished_ranks),
@@ -316,6 +326,7 @@ def train_ppo(
         if update % max(1, int(c.get("print_every", 1))) == 0:
             print(
                 f"{table} update {update}: {env_steps} steps, value {means['value']:.4f} "
+                f"explained {explained:.2f} "
                 f"kl {means['kl']:.4f} entropy {means['entropy']:.3f} "
                 f"rank {np.mean(recent) if recent else float('nan'):.3f} "
                 f"({env_steps / (time.time() - start):.0f} steps/s)"
