@@ -36,7 +36,7 @@ def plot_run(run: pathlib.Path) -> list[pathlib.Path]:
                 ci = [r["ci95"] for r in ev]
                 ax.errorbar(x, y, yerr=ci, marker="o", capsize=3, label=d.name)
         ax.axhline(2.5, color="grey", linestyle="--", linewidth=1, label="even (2.5)")
-        ax.set_xlabel("env steps (millions, all seats)")
+        ax.set_xlabel("env steps (millions; hero mode: the learner's)")
         ax.set_ylabel("average rank (95% CI)")
         ax.set_title(f"{stage}: rank against the stage's opponents")
         ax.invert_yaxis()
@@ -46,26 +46,35 @@ def plot_run(run: pathlib.Path) -> list[pathlib.Path]:
     fig.savefig(written[-1], dpi=100)
     plt.close(fig)
 
-    fig, axes = plt.subplots(1, 4, figsize=(20, 4))
+    fig, axes = plt.subplots(2, 3, figsize=(18, 8))
+    (bc_loss, bc_acc, explained), (value, kl, entropy) = axes
     for d in seeds:
         bc = [r for r in read(d / "bc.jsonl") if r.get("train_loss") is not None]
         if bc:
             x = [r["samples"] / 1e6 for r in bc]
-            axes[0].plot(x, [r["train_loss"] for r in bc], label=f"{d.name} train")
-            axes[0].plot(x, [r["val_loss"] for r in bc], "--", label=f"{d.name} held out")
+            bc_loss.plot(x, [r["train_loss"] for r in bc], label=f"{d.name} train")
+            bc_loss.plot(x, [r["val_loss"] for r in bc], "--", label=f"{d.name} held out")
+            bc_acc.plot(x, [r["val_accuracy"] for r in bc], label=d.name)
         for stage in stages:
             up = [r for r in read(d / f"{stage}.jsonl") if r.get("kind") == "update"]
+            if not up:
+                continue
             x = [r["env_steps"] / 1e6 for r in up]
-            for ax, key in zip(axes[1:], ("value", "kl", "entropy")):
-                ax.plot(x, [r[key] for r in up], label=f"{d.name} {stage}")
-    axes[0].set(xlabel="samples (millions)", ylabel="cross-entropy", title="BC loss")
-    for ax, title in zip(axes[1:], ("PPO value loss", "KL to the BC policy", "policy entropy")):
-        ax.set(xlabel="env steps (millions)", title=title)
-    for ax in axes:
+            for ax, key in ((explained, "explained_variance"), (value, "value"), (kl, "kl")):
+                ax.plot(x, [r.get(key) for r in up], label=f"{d.name} {stage}")
+            entropy.plot(x, [r["entropy"] for r in up], label=f"{d.name} {stage}")
+    bc_loss.set(xlabel="samples (millions)", ylabel="cross-entropy", title="BC loss")
+    bc_acc.set(xlabel="samples (millions)", title="BC held-out accuracy")
+    steps = "env steps (millions; hero mode: the learner's)"
+    explained.set(xlabel=steps, title="critic: share of the return's variance explained")
+    value.set(xlabel=steps, title="critic loss (reward units squared / 2)")
+    kl.set(xlabel=steps, title="KL(learner || BC)")
+    entropy.set(xlabel=steps, title="policy entropy (nats)")
+    for ax in axes.flat:
         ax.legend(fontsize=7)
     fig.tight_layout()
     written.append(out / "losses.png")
-    fig.savefig(written[-1], dpi=100)
+    fig.savefig(written[-1], dpi=90)
     plt.close(fig)
     return written
 
