@@ -18,8 +18,9 @@ from torch import nn
 
 import rinshan
 
-PLANES = (64, 34)
-SCALARS = 48
+# The planes form's shapes, as the package declares them: (rows, 34 tile types) and (scalars,).
+_SHAPES = {f.name: f.shape for f in rinshan.fields("planes")[1]}
+PLANES, (SCALARS,) = _SHAPES["planes"], _SHAPES["scalars"]
 # The analysis tier's rows the net may read besides the planes, and the scale that brings each
 # near 1 (plane counts are small integers: 0..4, river places up to 24).
 ANALYSIS = ("discard_shanten", "discard_ukeire", "improving")
@@ -40,6 +41,7 @@ class Space:
         missing = [a for a in names if a not in canon]
         if missing:
             raise ValueError(f"{variant} actions {missing} are not in the {CANONICAL} variant's")
+        self.canonical_names = canon
         self.size = len(canon)
         self.columns = np.array([canon.index(a) for a in names])
         self.back = np.full(self.size, -1)
@@ -49,7 +51,7 @@ class Space:
         """Per canonical action, the tile type it discards (a red five is its type's five; 34 =
         the drawn tile, for tsumogiri), -1 when it is not a discard."""
         cols = np.full(self.size, -1)
-        for i, name in enumerate(rinshan.make(CANONICAL, num_envs=1).spec.action_names):
+        for i, name in enumerate(self.canonical_names):
             if name == "tsumogiri":
                 cols[i] = 34
             elif name.startswith("discard_"):
@@ -170,7 +172,7 @@ def oracle_features(o: dict) -> np.ndarray:
     live = wall >= 0
     take = live & (np.cumsum(live, axis=1) <= WALL_AHEAD)
     types = np.where(wall >= 34, RED_FIVE_TYPES[np.clip(wall - 34, 0, 2)], wall)
-    ahead = np.zeros((n, 34), np.float32)
+    ahead = np.zeros((n, PLANES[1]), np.float32)
     np.add.at(ahead, (np.nonzero(take)[0], types[take]), 1.0)
     planes = np.concatenate(
         [o["others_hand"] / 4.0, o["others_waits"] > 0, ahead[:, None, :] / 4.0], axis=1

@@ -26,6 +26,7 @@ from common import (
     ORACLE_ROWS,
     ORACLE_SCALARS,
     PLANES,
+    SCALARS,
     Critic,
     Log,
     Space,
@@ -49,10 +50,10 @@ class Rollout:
     """The learner's decisions of one rollout, in time order."""
 
     def __init__(self, capacity: int, rows: int, num_actions: int, oracle: bool):
-        self.planes = torch.empty((capacity, rows, 34), dtype=torch.uint8)
+        self.planes = torch.empty((capacity, rows, PLANES[1]), dtype=torch.uint8)
         width = ORACLE_ROWS * PLANES[1] + ORACLE_SCALARS if oracle else 0
         self.hidden = torch.empty((capacity, width)) if oracle else None
-        self.scalars = torch.empty((capacity, 48), dtype=torch.int16)
+        self.scalars = torch.empty((capacity, SCALARS), dtype=torch.int16)
         self.mask = torch.empty((capacity, num_actions), dtype=torch.bool)
         self.action = torch.empty(capacity, dtype=torch.int64)
         self.logp = torch.empty(capacity)
