@@ -251,6 +251,8 @@ fn variant_options() {
             [25000, 1000, 30000]
         );
         assert!(flag(v, "bust_below_zero") && flag(v, "west_extension") && flag(v, "dealer_top_stop"));
+        // Tenhou lets no hand rob a closed kan, thirteen orphans included.
+        assert!(!flag(v, "kokushi_robs_closed_kan"));
         assert_eq!(v.uma, [30, 10, -10, -30]);
         assert_eq!(v.illegal_action_penalty, -1.0);
         assert_eq!(v.yaku_rules, [("open_tanyao".to_string(), true)]);
@@ -269,6 +271,7 @@ fn variant_options() {
                 "riichi_stick_points",
                 "double_ron",
                 "triple_ron_abort",
+                "kokushi_robs_closed_kan",
                 "abortive_draws",
                 "nagashi_mangan",
                 "pao",

@@ -60,7 +60,7 @@ fn chi_options(s: &mut GameState, q: u32, size: u32, a: u32, b: u32, ban_a: u32,
 fn claim_options_for(s: &mut GameState, q: u32, from: u32, v: u32, kan: u32) -> u32 {
     let t: u32 = value_type(v);
     let mut o: u32 = 0u32;
-    if waits_include(s, q, t) && !furiten(s, q) {
+    if waits_include(s, q, t) && !furiten(s, q) && (kan != 2u32 || KOKUSHI_ROBS_CLOSED_KAN) {
         let out: ScoreOutput = score_hand(win_input(s, q, v, false, kan == 1u32));
         let orphans: bool = has_yaku(out.yaku_lo, out.yaku_hi, YAKU_KOKUSHI)
             || has_yaku(out.yaku_lo, out.yaku_hi, YAKU_KOKUSHI_13);
@@ -115,7 +115,7 @@ fn claim_options_for(s: &mut GameState, q: u32, from: u32, v: u32, kan: u32) -> 
 }
 
 // Opens a claim window on tile value `v` from seat `from`. `kan`: 0 a discard, 1 an added kan
-// (chankan), 2 a closed kan (only thirteen orphans may rob it).
+// (chankan), 2 a closed kan (only thirteen orphans may rob it, where the rules allow).
 fn set_claim(s: &mut GameState, from: u32, v: u32, kan: u32) -> u32 {
     s.claim_tile = v;
     s.claim_from = from;

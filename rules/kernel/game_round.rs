@@ -148,7 +148,9 @@ fn receive_draw(s: &mut GameState, seat: u32, v: u32, rinshan: u32) {
     s.current = seat;
     s.phase = PHASE_TURN;
     s.kuikae = 0xffffu32;
-    // Temporary furiten lasts until the seat's own next draw.
+    // Temporary furiten lasts until the seat's own next discard (see `do_discard`); nothing
+    // between a draw and that discard can be ronned by the seat, so the draw lifts it already and
+    // the turn's view shows the seat as it will discard.
     s.seat_flags[seat as usize] &= !SEAT_FURITEN_TEMP;
     log_draw(s);
 }
@@ -179,7 +181,8 @@ fn top_seat(s: &mut GameState) -> u32 {
     best
 }
 
-fn game_is_over(s: &mut GameState, dealer_continues: bool) -> bool {
+// `flags`: the END_* arguments of the round's end.
+fn game_is_over(s: &mut GameState, flags: u32) -> bool {
     if s.mode == MODE_SINGLE {
         return true;
     }
@@ -204,9 +207,13 @@ fn game_is_over(s: &mut GameState, dealer_continues: bool) -> bool {
         // Extension rounds end as soon as someone reaches the target.
         return true;
     }
-    if dealer_continues {
-        // All-last: a dealer who is top (and has reached the target) stops the game.
-        return DEALER_TOP_STOP && top == s.dealer && (reached || !WEST_EXTENSION) && s.round >= last;
+    if (flags & END_DEALER_CONTINUES) != 0u32 {
+        // All-last: a dealer who is top (and has reached the target) stops the game after a win or
+        // a tenpai at the exhaustive draw (agari-yame, tenpai-yame). An abortive draw is neither:
+        // the round is played again with one more honba, as Tenhou and RiichiEnv do (otherwise a
+        // leading dealer could end the game by declaring nine terminals).
+        let stop_allowed: bool = (flags & END_ABORTIVE) == 0u32;
+        return DEALER_TOP_STOP && stop_allowed && top == s.dealer && (reached || !WEST_EXTENSION) && s.round >= last;
     }
     if s.round == limit {
         return true;
@@ -249,11 +256,13 @@ fn finish_game(s: &mut GameState) {
     s.events |= EVENT_GAME_OVER;
 }
 
-// Ends the round: `dealer_continues` after a dealer win, a dealer tenpai at a draw or an abortive
-// draw; `drawn_round` when nobody won.
-fn end_round(s: &mut GameState, dealer_continues: bool, drawn_round: bool) {
+// Ends the round. `flags` (END_*): the dealer continues after a dealer win, a dealer tenpai at a
+// draw or an abortive draw; the round is drawn when nobody won.
+fn end_round(s: &mut GameState, flags: u32) {
+    let dealer_continues: bool = (flags & END_DEALER_CONTINUES) != 0u32;
+    let drawn_round: bool = (flags & END_DRAWN) != 0u32;
     s.rounds += 1u32;
-    if game_is_over(s, dealer_continues) {
+    if game_is_over(s, flags) {
         finish_game(s);
         return;
     }

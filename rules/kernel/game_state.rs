@@ -18,7 +18,7 @@ pub const SEAT_RIICHI: u32 = 1; // riichi accepted (stick paid)
 const SEAT_DOUBLE_RIICHI: u32 = 2;
 const SEAT_IPPATSU: u32 = 4;
 const SEAT_RIICHI_PENDING: u32 = 8; // declared; accepted once the declaring discard is not ronned
-pub const SEAT_FURITEN_TEMP: u32 = 16; // a winning tile passed by since the last own draw
+pub const SEAT_FURITEN_TEMP: u32 = 16; // a winning tile passed by since the last own draw or discard
 pub const SEAT_FURITEN_RIICHI: u32 = 32; // a winning tile passed by in riichi: furiten for the rest of the round
 const SEAT_NAGASHI: u32 = 64; // every discard so far was a terminal or honor, none called
 const SEAT_CONCEALED: u32 = 128; // no open meld
@@ -85,6 +85,7 @@ const TASK_END_ROUND: u32 = 7;
 // End-of-round arguments (GameState.task_flags).
 const END_DEALER_CONTINUES: u32 = 1;
 const END_DRAWN: u32 = 2;
+const END_ABORTIVE: u32 = 4;
 
 // Dead wall layout (indices into the 136-tile wall): replacement tiles, dora and ura indicators.
 // `pub`: log replay builds walls in this layout.

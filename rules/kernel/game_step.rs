@@ -44,7 +44,7 @@ fn run_tasks(s: &mut GameState, first: u32) {
             task = TASK_DONE;
         } else if task == TASK_ABORTIVE {
             s.events |= EVENT_ABORTIVE_DRAW;
-            s.task_flags = END_DEALER_CONTINUES | END_DRAWN;
+            s.task_flags = END_DEALER_CONTINUES | END_DRAWN | END_ABORTIVE;
             task = TASK_END_ROUND;
         } else if task == TASK_TSUMO {
             let winner: u32 = s.task_seat;
@@ -56,7 +56,7 @@ fn run_tasks(s: &mut GameState, first: u32) {
             task = TASK_END_ROUND;
         } else if task == TASK_END_ROUND {
             let flags: u32 = s.task_flags;
-            end_round(s, (flags & END_DEALER_CONTINUES) != 0u32, (flags & END_DRAWN) != 0u32);
+            end_round(s, flags);
             task = TASK_DONE;
         } else {
             task = TASK_DONE;

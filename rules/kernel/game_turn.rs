@@ -190,8 +190,10 @@ fn do_discard(s: &mut GameState, v: u32, tsumogiri: bool) -> u32 {
         f &= !SEAT_NAGASHI;
     }
     f |= SEAT_DISCARDED;
-    // A riichi player's ippatsu ends with their next discard.
-    f &= !SEAT_IPPATSU;
+    // A riichi player's ippatsu ends with their next discard. So does temporary furiten, also
+    // on the discard that follows a chi or pon (riichi.wiki, Furiten: "until the player's next
+    // discard"; Mortal's libriichi); the seat's draw has lifted it already on a plain turn.
+    f &= !(SEAT_IPPATSU | SEAT_FURITEN_TEMP);
     s.seat_flags[p as usize] = f;
     s.drawn = NO_TILE_VALUE;
     s.rinshan = 0u32;

@@ -173,8 +173,9 @@ fn random_east_games_round_trip() {
 }
 
 /// The first round of each of these scenarios, then the rest of a half game by the policy.
-const PREPARED: [(&str, &str); 10] = [
+const PREPARED: [(&str, &str); 11] = [
     ("triple_ron_aborts", "三家和了"),
+    ("triple_ron_after_a_go_around", "三家和了"),
     ("nagashi_mangan", "流し満貫"),
     ("pao_daisangen_ron_split", "pao"),
     ("pao_daisangen_tsumo_liable_pays_all", "pao"),
@@ -183,7 +184,7 @@ const PREPARED: [(&str, &str); 10] = [
     ("four_winds", "四風連打"),
     ("kyuushu_kyuuhai", "九種九牌"),
     ("chankan_on_added_kan", "chankan"),
-    ("chankan_on_closed_kan_kokushi", "robbed closed kan"),
+    ("closed_kan_not_robbed_by_kokushi", "closed kan"),
 ];
 
 #[test]

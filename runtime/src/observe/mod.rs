@@ -540,7 +540,7 @@ pub static SCALARS: [Scalar; 27] = [
     sc(k::S_MELDS, 4, "melds", "per ego seat: melds declared"),
     sc(k::S_SHANTEN, 1, "shanten", "the observer's exact shanten (-1 = complete hand)"),
     sc(k::S_FURITEN, 1, "furiten", "the observer is furiten (0/1)"),
-    sc(k::S_DECISION, 1, "decision", "what the observer is asked: 0 nothing, 1 its turn, 2 the discard after riichi, 3 a claim on a discard, 4 a claim on a kan's tile (chankan: an added kan, or a closed kan for thirteen orphans)"),
+    sc(k::S_DECISION, 1, "decision", "what the observer is asked: 0 nothing, 1 its turn, 2 the discard after riichi, 3 a claim on a discard, 4 a claim on a kan's tile (chankan: an added kan, or a closed kan for thirteen orphans where the rules allow it)"),
     sc(k::S_CLAIM_FROM, 1, "claim_from", "ego seat whose tile is claimed (-1 when not a claim)"),
     sc(k::S_FIRST_GO_AROUND, 1, "first_go_around", "no call or kan yet this round (0/1)"),
     sc(k::S_MODE, 1, "mode", "0 single hand, 1 east, 2 half (east + south)"),

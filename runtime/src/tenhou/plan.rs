@@ -130,10 +130,19 @@ impl<'a> Walker<'a> {
                 seats.sort_by_key(|&q| (q + 4 - p) % 4);
                 seats
             }
+            // The log of a triple ron names no discarder: the ronned tile is the round's last
+            // one, so every other seat's entries are used up by then (a seat's last discard
+            // can come a go-around before the round ends).
             Outcome::Draw {
                 kind: LoggedDraw::TripleRon,
                 ..
-            } => (1..4).map(|j| (p + j) % 4).collect(),
+            } if (0..4).all(|q| {
+                q == p
+                    || (self.drawn[q] == self.round.draws[q].len() && self.discarded[q] == self.round.discards[q].len())
+            }) =>
+            {
+                (1..4).map(|j| (p + j) % 4).collect()
+            }
             Outcome::Draw { .. } => Vec::new(),
         }
     }
