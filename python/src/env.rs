@@ -5,10 +5,10 @@ use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1, PyReadonlyArra
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use rinshan::agents::Agent;
-use rinshan::env::{env_seed, Backend, Config, Env, EnvError, Mode, Observer, Step};
-use rinshan::observe::Form;
-use rinshan::Variant;
+use rinshan_engine::agents::Agent;
+use rinshan_engine::env::{env_seed, Backend, Config, Env, EnvError, Mode, Observer, Step};
+use rinshan_engine::observe::Form;
+use rinshan_engine::Variant;
 
 pub(crate) fn env_error(e: EnvError) -> PyErr {
     match e {
@@ -392,7 +392,7 @@ impl PyEnv {
         let env = py.detach(|| Env::new(config)).map_err(env_error)?;
         let b = num_envs;
         let na = env.num_actions() as usize;
-        let ny = rinshan::env::yaku_names(variant).len();
+        let ny = rinshan_engine::env::yaku_names(variant).len();
         let outputs = Outputs {
             mask: PyArray2::zeros(py, [b, na], false).unbind(),
             current_player: PyArray1::zeros(py, b, false).unbind(),
@@ -537,7 +537,7 @@ impl PyEnv {
         reveal: bool,
         png: bool,
     ) -> PyResult<Bound<'py, PyAny>> {
-        use rinshan::render::{self, Board, Options, TileMode};
+        use rinshan_render::{Board, Options, TileMode};
         let tiles: TileMode = parse("tiles", tiles)?;
         let env = self.env()?;
         let b = env.batch();
@@ -555,10 +555,10 @@ impl PyEnv {
             reveal,
             defs: true,
         };
-        let svg = render::svg(&board, &opts);
+        let svg = rinshan_render::svg(&board, &opts);
         if png {
             let bytes = py
-                .detach(|| render::png::png(&svg, 1.0))
+                .detach(|| rinshan_render::png::png(&svg, 1.0))
                 .map_err(PyRuntimeError::new_err)?;
             return Ok(pyo3::types::PyBytes::new(py, &bytes).into_any());
         }

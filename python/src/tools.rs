@@ -5,18 +5,18 @@ use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
-use rinshan::env::Backend;
-use rinshan::observe::Form;
-use rinshan::tenhou;
-use rinshan::win_input::{score_json, WinInput};
-use rinshan::Variant;
+use rinshan_engine::env::Backend;
+use rinshan_engine::observe::Form;
+use rinshan_engine::win_input::{score_json, WinInput};
+use rinshan_engine::Variant;
+use rinshan_logs::tenhou;
 
 use crate::env::{env_error, expand_bits, form_of, parse};
 
 /// `{"shanten", "normal", "chiitoitsu", "kokushi"}` of a concealed hand in notation.
 #[pyfunction]
 fn shanten<'py>(py: Python<'py>, hand: &str) -> PyResult<Bound<'py, PyDict>> {
-    let s = rinshan::hand::shanten_of_notation(hand).map_err(PyValueError::new_err)?;
+    let s = rinshan_engine::hand::shanten_of_notation(hand).map_err(PyValueError::new_err)?;
     let d = PyDict::new(py);
     d.set_item("shanten", s.shanten)?;
     d.set_item("normal", s.normal)?;
@@ -73,7 +73,7 @@ fn score(
         *f = true;
     }
     let win = input.win().map_err(|e| PyValueError::new_err(e.0))?;
-    let s = rinshan::hand::score(variant, &win).map_err(|e| PyValueError::new_err(e.to_string()))?;
+    let s = rinshan_engine::hand::score(variant, &win).map_err(|e| PyValueError::new_err(e.to_string()))?;
     Ok(score_json(&s).to_string())
 }
 
@@ -93,7 +93,7 @@ fn tenhou_read<'py>(py: Python<'py>, path: &str, forms: Vec<String>) -> PyResult
         ));
     }
     let variant = Variant::Red;
-    let na = rinshan::env::action_names(variant).len();
+    let na = rinshan_engine::env::action_names(variant).len();
     let rounds = PyList::empty(py);
     for (r, round) in game.rounds.iter().enumerate() {
         let d = PyDict::new(py);
@@ -120,7 +120,7 @@ fn tenhou_read<'py>(py: Python<'py>, path: &str, forms: Vec<String>) -> PyResult
                 for &form in &forms {
                     let mut raw = Vec::with_capacity(n * form.bytes());
                     for p in &positions {
-                        raw.extend(rinshan::observe::record(variant, form, &p.state, p.seat));
+                        raw.extend(rinshan_engine::observe::record(variant, form, &p.state, p.seat));
                     }
                     obs.set_item(form.name(), PyArray1::from_vec(py, raw).reshape([n, form.bytes()])?)?;
                 }
@@ -207,8 +207,11 @@ fn fields(form: &str) -> PyResult<(usize, Vec<FieldRow>)> {
 fn variant_info(variant: &str) -> PyResult<(Vec<String>, Vec<String>, u32)> {
     let v: Variant = parse("variant", variant)?;
     Ok((
-        rinshan::env::action_names(v),
-        rinshan::env::yaku_names(v).iter().map(|s| s.to_string()).collect(),
+        rinshan_engine::env::action_names(v),
+        rinshan_engine::env::yaku_names(v)
+            .iter()
+            .map(|s| s.to_string())
+            .collect(),
         v.starting_points(),
     ))
 }
@@ -218,9 +221,9 @@ fn variant_info(variant: &str) -> PyResult<(Vec<String>, Vec<String>, u32)> {
 fn names() -> (Vec<&'static str>, Vec<&'static str>, Vec<String>, Vec<&'static str>) {
     (
         Form::ALL.map(Form::name).to_vec(),
-        rinshan::agents::Agent::ALL.map(|a| a.name()).to_vec(),
+        rinshan_engine::agents::Agent::ALL.map(|a| a.name()).to_vec(),
         Variant::ALL.iter().map(|v| v.to_string()).collect(),
-        rinshan::env::Mode::ALL.map(|m| m.name()).to_vec(),
+        rinshan_engine::env::Mode::ALL.map(|m| m.name()).to_vec(),
     )
 }
 
@@ -232,6 +235,6 @@ pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(fields, m)?)?;
     m.add_function(wrap_pyfunction!(variant_info, m)?)?;
     m.add_function(wrap_pyfunction!(names, m)?)?;
-    m.add("STATE_CHECK_WORDS", rinshan::env::CHECK_WORDS)?;
+    m.add("STATE_CHECK_WORDS", rinshan_engine::env::CHECK_WORDS)?;
     Ok(())
 }

@@ -39,7 +39,7 @@ const CLAIM_CHI_MIDDLE_RED: u32 = 128;
 const CLAIM_CHI_RIGHT: u32 = 256;
 const CLAIM_CHI_RIGHT_RED: u32 = 512;
 
-// What a step settled (StepView.events). `pub`: hosts read these numbers (rinshan::env::events).
+// What a step settled (StepView.events). `pub`: hosts read these numbers (rinshan_engine::env::events).
 pub const EVENT_RON: u32 = 1;
 pub const EVENT_TSUMO: u32 = 2;
 pub const EVENT_EXHAUSTIVE_DRAW: u32 = 4;

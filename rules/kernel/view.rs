@@ -5,7 +5,7 @@
 // Everything here reads only what the observer may know: its own hand, draws and waits, the
 // public record, and the decision it is asked for. Other seats' hands, waits, furiten, claim
 // options and choices, the wall and the hidden dead wall are never read (a test permutes them).
-// Field meanings, scales and dtypes are documented once, on the host (rinshan::observe).
+// Field meanings, scales and dtypes are documented once, on the host (rinshan_engine::observe).
 
 // What the view needs about one observer, gathered once.
 struct Seen {

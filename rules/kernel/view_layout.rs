@@ -1,5 +1,5 @@
 // The layout of the observation records that rules/kernel/view.rs writes: one fact each, read by
-// the view, the host's field table (rinshan::observe) and the GPU entry points.
+// the view, the host's field table (rinshan_engine::observe) and the GPU entry points.
 
 // `arg` of the observe functions: the observing seat 0..3, or OBSERVE_CURRENT for the player to move.
 pub const OBSERVE_CURRENT: u32 = 4;

@@ -10,7 +10,7 @@ use axum::body::Bytes;
 use http_body_util::{BodyExt, Full};
 use hyper_util::client::legacy::{connect::HttpConnector, Client};
 use hyper_util::rt::TokioExecutor;
-use rinshan::serve::{app, Limits};
+use rinshan_serve::{app, Limits};
 use serde_json::{json, Value};
 
 type Http = Client<HttpConnector, Full<Bytes>>;

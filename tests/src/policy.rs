@@ -2,10 +2,10 @@
 //! declares riichi and kans, calls often, and otherwise discards towards tenpai (a quarter of
 //! the time at random), so that riichi, tenpai draws, double rons and kans come up often.
 
-use rinshan::generated::kernel::{self as kernel, GameState};
-use rinshan::generated::red as k;
-use rinshan::hand::shanten;
-use rinshan::random::Rng;
+use rinshan_engine::generated::kernel::{self as kernel, GameState};
+use rinshan_engine::generated::red as k;
+use rinshan_engine::hand::shanten;
+use rinshan_engine::random::Rng;
 
 /// Whether action `a` is set in a legal-action mask.
 pub fn legal(mask: &[u32; 3], a: u32) -> bool {

@@ -4,8 +4,8 @@
 
 use std::collections::BTreeSet;
 
-use rinshan::notation::parse_tile;
-use rinshan::{Tile, TileType};
+use rinshan_engine::notation::parse_tile;
+use rinshan_engine::{Tile, TileType};
 use serde::Deserialize;
 
 use crate::test_data;
@@ -218,7 +218,7 @@ pub fn build_wall(sc: &Scenario, red: bool) -> Result<[u32; 136], String> {
         return Err("dealer must be 0..3".into());
     }
     for (seat, hand) in sc.hands.iter().enumerate() {
-        let tiles = rinshan::notation::parse_tiles(hand).map_err(|e| format!("hand of seat {seat}: {e}"))?;
+        let tiles = rinshan_engine::notation::parse_tiles(hand).map_err(|e| format!("hand of seat {seat}: {e}"))?;
         if tiles.tiles.len() != 13 {
             return Err(format!("hand of seat {seat} has {} tiles, not 13", tiles.tiles.len()));
         }
@@ -227,7 +227,7 @@ pub fn build_wall(sc: &Scenario, red: bool) -> Result<[u32; 136], String> {
             place(offset + k, &t.name(), &format!("hand of seat {seat}"), &mut wall)?;
         }
     }
-    use rinshan::generated::kernel::{WALL_DORA, WALL_LIVE_END, WALL_LIVE_START, WALL_RINSHAN, WALL_URA};
+    use rinshan_engine::generated::kernel::{WALL_DORA, WALL_LIVE_END, WALL_LIVE_START, WALL_RINSHAN, WALL_URA};
     let at = |i: u32| i as usize;
     let lists: [(&[String], usize, usize, &str); 4] = [
         (

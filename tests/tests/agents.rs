@@ -3,14 +3,14 @@
 //! it played in between, and plays exactly the game a step-by-step loop over the same agents
 //! plays; the arena rates a stronger agent above a weaker one and counts a policy's illegal moves.
 
-use rinshan::agents::Agent;
-use rinshan::arena::{self, Arena, Player, Policy};
-use rinshan::env::{Config, Env, Mode, Observer};
-use rinshan::generated::kernel::{self, ResetInput};
-use rinshan::generated::red;
-use rinshan::observe::Form;
-use rinshan::random::Rng;
-use rinshan::Variant;
+use rinshan_engine::agents::Agent;
+use rinshan_engine::arena::{self, Arena, Player, Policy};
+use rinshan_engine::env::{Config, Env, Mode, Observer};
+use rinshan_engine::generated::kernel::{self, ResetInput};
+use rinshan_engine::generated::red;
+use rinshan_engine::observe::Form;
+use rinshan_engine::random::Rng;
+use rinshan_engine::Variant;
 
 fn hero_config(batch: usize, agents: Vec<[Option<Agent>; 4]>) -> Config {
     Config {

@@ -9,7 +9,7 @@ use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
 
 use fantoccini::{Client, ClientBuilder, Locator};
-use rinshan::serve::{app, Limits};
+use rinshan_serve::{app, Limits};
 use serde_json::{json, Value};
 
 /// The chromedriver child, stopped when the test ends however it ends.

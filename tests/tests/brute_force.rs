@@ -1,4 +1,4 @@
-//! An independent brute-force oracle for hand scoring, checked against `rinshan::hand::score` on
+//! An independent brute-force oracle for hand scoring, checked against `rinshan_engine::hand::score` on
 //! random winning hands.
 //!
 //! The oracle shares nothing with the scoring kernel but the rule files: it splits the concealed
@@ -13,12 +13,12 @@ use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
-use rinshan::hand::{score, Payment, Score, ScoreError, Win, WinContext};
-use rinshan::notation::{parse_meld, parse_tile, parse_tiles, MeldKind};
-use rinshan::random::{random_win, Rng};
-use rinshan::{TileType, Variant};
 use rinshan_codegen::expr::{eval, Value};
 use rinshan_codegen::Spec;
+use rinshan_engine::hand::{score, Payment, Score, ScoreError, Win, WinContext};
+use rinshan_engine::notation::{parse_meld, parse_tile, parse_tiles, MeldKind};
+use rinshan_engine::random::{random_win, Rng};
+use rinshan_engine::{TileType, Variant};
 
 /// The oracle's own tile: a type index 0..33, counted with plain arithmetic.
 type Tile = u8;

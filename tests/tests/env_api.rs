@@ -1,9 +1,9 @@
 //! The batched environment's public API on the CPU backend: determinism whatever the thread
 //! count, dealing a given wall, typed errors for bad input, and illegal actions as outcomes.
 
-use rinshan::env::{Config, Env, EnvError, Mode, Step};
-use rinshan::random::Rng;
-use rinshan::{Tile, TileType, Variant};
+use rinshan_engine::env::{Config, Env, EnvError, Mode, Step};
+use rinshan_engine::random::Rng;
+use rinshan_engine::{Tile, TileType, Variant};
 
 fn config(variant: Variant, batch: usize, threads: Option<usize>) -> Config {
     Config {
@@ -85,7 +85,7 @@ fn sorted_wall(red: bool) -> [Tile; 136] {
     })
 }
 
-fn hand_of(s: &rinshan::generated::kernel::GameState, seat: usize) -> [u32; 34] {
+fn hand_of(s: &rinshan_engine::generated::kernel::GameState, seat: usize) -> [u32; 34] {
     std::array::from_fn(|t| (s.hands[seat * 5 + t / 8] >> ((t % 8) * 4)) & 15)
 }
 
@@ -102,7 +102,7 @@ fn reset_with_walls_deals_exactly_those_hands() {
         .clone();
     assert_eq!(step.current_player, [2, 0], "the dealer acts first");
     let words = env.states_words().expect("states");
-    let states: &[rinshan::generated::kernel::GameState] = bytemuck::cast_slice(&words);
+    let states: &[rinshan_engine::generated::kernel::GameState] = bytemuck::cast_slice(&words);
     for (e, (wall, dealer)) in [(sorted, 2usize), (reversed, 0usize)].into_iter().enumerate() {
         let s = &states[e];
         for j in 0..4 {
@@ -340,7 +340,7 @@ fn saved_states_replay_the_same_games_and_edits_are_refused() {
 #[test]
 fn action_names_follow_the_layout() {
     for &v in Variant::ALL {
-        let names = rinshan::env::action_names(v);
+        let names = rinshan_engine::env::action_names(v);
         let env = Env::new(Config::new(v, 1)).expect("env");
         assert_eq!(names.len(), env.num_actions() as usize, "{v}");
         let mut unique = names.clone();
@@ -351,7 +351,7 @@ fn action_names_follow_the_layout() {
         assert_eq!(names[0], "discard_1m");
         assert_eq!(names[33], "discard_7z");
     }
-    let red = rinshan::env::action_names(Variant::Red);
+    let red = rinshan_engine::env::action_names(Variant::Red);
     assert_eq!(&red[34..37], ["discard_0m", "discard_0p", "discard_0s"]);
     assert_eq!(red[37], "self_kan_1m");
     assert_eq!(&red[71..75], ["tsumogiri", "riichi", "tsumo", "ron"]);

@@ -4,11 +4,11 @@
 //! steps) at every step of whole games, and identical states at the end. Hero mode (built-in
 //! agents playing three seats inside a step) is compared the same way.
 
-use rinshan::agents::Agent;
-use rinshan::env::{Backend, Config, Env, Mode, Observer};
-use rinshan::observe::Form;
-use rinshan::random::Rng;
-use rinshan::Variant;
+use rinshan_engine::agents::Agent;
+use rinshan_engine::env::{Backend, Config, Env, Mode, Observer};
+use rinshan_engine::observe::Form;
+use rinshan_engine::random::Rng;
+use rinshan_engine::Variant;
 
 const BATCH: usize = 200;
 

@@ -2,14 +2,14 @@
 //! the game after every step: tiles conserved, points conserved, one seat to act with a legal
 //! action, rewards adding up to the final score change, and termination.
 
-use rinshan::generated::kernel::{self as k, GameState};
-use rinshan::random::Rng;
+use rinshan_engine::generated::kernel::{self as k, GameState};
+use rinshan_engine::random::Rng;
 
 macro_rules! invariant_suite {
     ($name:ident, $v:ident, $games:expr, $steps:expr, $fingerprint:expr) => {
         #[test]
         fn $name() {
-            use rinshan::generated::$v as variant;
+            use rinshan_engine::generated::$v as variant;
             let mut total_steps = 0u64;
             let mut wins = 0u32;
             // Every action, reward and settlement of every game, so that a change meant to be
@@ -205,7 +205,7 @@ fn game_state_fits_in_one_kib() {
 
 #[test]
 fn auto_reset_starts_the_next_game_in_the_same_step() {
-    use rinshan::generated::red;
+    use rinshan_engine::generated::red;
     let mut rng = Rng::new(3);
     let input = k::ResetInput {
         seed: [9, 9],

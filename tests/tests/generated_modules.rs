@@ -1,7 +1,7 @@
 //! The generated WGSL of every variant: validated by naga and pinned by insta snapshots, so a
 //! change to the kernels, the specs or the translator shows up as a reviewed diff.
 
-use rinshan::Variant;
+use rinshan_engine::Variant;
 
 /// The module without its first line, which names absolute source paths.
 fn body(wgsl: &str) -> &str {
@@ -10,8 +10,8 @@ fn body(wgsl: &str) -> &str {
 
 fn wgsl(variant: Variant) -> &'static str {
     match variant {
-        Variant::Red => rinshan::generated::red::WGSL,
-        Variant::NoRed => rinshan::generated::no_red::WGSL,
+        Variant::Red => rinshan_engine::generated::red::WGSL,
+        Variant::NoRed => rinshan_engine::generated::no_red::WGSL,
     }
 }
 
@@ -64,7 +64,7 @@ fn wgsl_layout(module: &naga::Module, name: &str) -> (u32, Vec<(String, u32)>) {
 /// so every variant's WGSL must lay each record out the same way, at the Rust size.
 #[test]
 fn every_variant_lays_out_the_shared_records_alike_and_at_the_rust_size() {
-    use rinshan::generated::kernel as k;
+    use rinshan_engine::generated::kernel as k;
     use std::mem::size_of;
     let rust_size = |name: &str| match name {
         "ShantenInput" => size_of::<k::ShantenInput>(),

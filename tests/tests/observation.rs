@@ -7,13 +7,13 @@
 //! - the event tokens replay the round (each seat's discards in order, every draw of the
 //!   observer with its tile).
 
-use rinshan::generated::kernel::{
+use rinshan_engine::generated::kernel::{
     self, GameState, ObsAnalysis, ObsPlanes, ObsTokens, ResetInput, MODE_HALF, OBSERVE_CURRENT, SEAT_FURITEN_RIICHI,
     SEAT_FURITEN_TEMP, WALL_DORA, WALL_LIVE_END, WALL_LIVE_START, WALL_RINSHAN, WALL_URA,
 };
-use rinshan::generated::{no_red, red};
-use rinshan::random::Rng;
-use rinshan::Variant;
+use rinshan_engine::generated::{no_red, red};
+use rinshan_engine::random::Rng;
+use rinshan_engine::Variant;
 
 /// One variant's kernels, as plain functions.
 #[derive(Clone, Copy)]

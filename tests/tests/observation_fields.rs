@@ -2,8 +2,8 @@
 //! exactly (fields in bounds, not overlapping; plane rows and scalars each described once) and
 //! docs/observation.md is the page it generates.
 
-use rinshan::generated::kernel as k;
-use rinshan::observe::{fields_markdown, Form, PLANE_ROWS, SCALARS, SEAT_ROWS};
+use rinshan_engine::generated::kernel as k;
+use rinshan_engine::observe::{fields_markdown, Form, PLANE_ROWS, SCALARS, SEAT_ROWS};
 
 #[test]
 fn fields_lie_inside_their_record_without_overlapping() {

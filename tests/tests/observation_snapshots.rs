@@ -4,11 +4,11 @@
 //! and the turn after the call, a chankan prompt, each kan kind and the moment its dora appears,
 //! and a red five among the dora indicators.
 
-use rinshan::generated::kernel::{self, GameState};
-use rinshan::generated::red as k;
-use rinshan::observe::{describe, Form};
-use rinshan::tenhou::log::{collect_files, read_game, Game};
-use rinshan::tenhou::position::{round_positions, Position};
+use rinshan_engine::generated::kernel::{self, GameState};
+use rinshan_engine::generated::red as k;
+use rinshan_engine::observe::{describe, Form};
+use rinshan_logs::tenhou::log::{collect_files, read_game, Game};
+use rinshan_logs::tenhou::position::{round_positions, Position};
 
 fn games() -> Vec<Game> {
     let files = collect_files(&[rinshan_tests::test_data().join("tenhou")]).expect("logs");

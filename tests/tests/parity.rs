@@ -1,9 +1,9 @@
 //! CPU/GPU parity: the native kernels and their WGSL translation give identical words.
 
-use rinshan::gpu::Kernel;
-use rinshan::hand::{self, score_input, SCORE_OUT_WORDS, SHANTEN_OUT_WORDS};
-use rinshan::random::{random_hand, random_win, Rng};
-use rinshan::Variant;
+use rinshan_engine::gpu::Kernel;
+use rinshan_engine::hand::{self, score_input, SCORE_OUT_WORDS, SHANTEN_OUT_WORDS};
+use rinshan_engine::random::{random_hand, random_win, Rng};
+use rinshan_engine::Variant;
 use rinshan_tests::gpu_or_skip;
 
 const HANDS: usize = 100_000;

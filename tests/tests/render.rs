@@ -6,10 +6,10 @@
 use std::collections::BTreeSet;
 use std::path::PathBuf;
 
-use rinshan::render::{self, Board, MeldKind, Options, TileMode};
-use rinshan::tenhou::log::{collect_files, read_game, Discard, Draw, Game, Rel};
-use rinshan::tenhou::position::{round_replay, Position, RoundEnd};
-use rinshan::Tile;
+use rinshan_engine::Tile;
+use rinshan_logs::tenhou::log::{collect_files, read_game, Discard, Draw, Game, Rel};
+use rinshan_logs::tenhou::position::{round_replay, Position, RoundEnd};
+use rinshan_render::{Board, MeldKind, Options, TileMode};
 
 fn games() -> Vec<Game> {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("data/tenhou");
@@ -91,7 +91,7 @@ fn the_dealt_hands_are_the_logged_ones() {
             assert_eq!(sorted(shown), sorted(dealt), "{} round {r} seat {p}", games[g].path);
         }
         // The SVG shows the same tiles, face up for every seat when revealed.
-        let svg = render::svg(&board, &revealed(0));
+        let svg = rinshan_render::svg(&board, &revealed(0));
         for p in 0..4 {
             let mut drawn: Vec<String> = tiles_of(&svg)
                 .into_iter()
@@ -119,7 +119,7 @@ fn rivers_and_melds_follow_the_log() {
         let drawn_out = end.as_ref().and_then(|e| Board::logged_round_end(last, e)).filter(|b| {
             b.result
                 .as_ref()
-                .is_some_and(|r| r.draw == Some(rinshan::env::DrawKind::Exhaustive))
+                .is_some_and(|r| r.draw == Some(rinshan_engine::env::DrawKind::Exhaustive))
         });
         if let Some(end_board) = &drawn_out {
             draws_seen += 1;
@@ -244,6 +244,81 @@ fn rivers_and_melds_follow_the_log() {
     assert!(draws_seen > 3, "{draws_seen} drawn rounds");
 }
 
+/// Each tile of seat `seat` in its own frame (before the seat's quarter turn): (zone, left x,
+/// right x), a sideways tile as wide as a standing one is tall.
+fn seat_tiles(svg: &str, seat: u32) -> Vec<(String, f32, f32)> {
+    let doc = roxmltree::Document::parse(svg).expect("the SVG is well-formed XML");
+    let group = doc
+        .descendants()
+        .find(|n| n.attribute("class") == Some("seat") && n.attribute("data-seat") == Some(&seat.to_string()));
+    let Some(group) = group else {
+        return Vec::new();
+    };
+    group
+        .descendants()
+        .filter(|n| n.attribute("class") == Some("tile"))
+        .map(|n| {
+            let transform = n.attribute("transform").unwrap_or("");
+            let x: f32 = transform
+                .trim_start_matches("translate(")
+                .split(' ')
+                .next()
+                .and_then(|x| x.parse().ok())
+                .expect("a translated tile");
+            let face = n.children().find(|c| c.has_tag_name("use") || c.has_tag_name("rect"));
+            let size = |k: &str| face.and_then(|f| f.attribute(k)).and_then(|v| v.parse::<f32>().ok());
+            let width = if transform.contains("rotate") {
+                size("height")
+            } else {
+                size("width")
+            };
+            let zone = n.attribute("data-zone").unwrap_or("").to_string();
+            (zone, x, x + width.unwrap_or(0.0))
+        })
+        .collect()
+}
+
+#[test]
+fn melds_lie_beside_their_hand() {
+    let games = games();
+    let mut seats_with_melds = 0;
+    for (g, r, ps, _) in rounds(&games) {
+        let last = ps.last().expect("a round has decisions");
+        let board = Board::from_state(&last.state);
+        let svg = rinshan_render::svg(&board, &revealed(0));
+        for seat in 0..4u32 {
+            if board.melds[seat as usize].is_empty() {
+                continue;
+            }
+            seats_with_melds += 1;
+            let tiles = seat_tiles(&svg, seat);
+            let zone_span = |zones: &[&str]| {
+                let xs: Vec<(f32, f32)> = tiles
+                    .iter()
+                    .filter(|t| zones.contains(&t.0.as_str()))
+                    .map(|t| (t.1, t.2))
+                    .collect();
+                let lo = xs.iter().map(|x| x.0).fold(f32::INFINITY, f32::min);
+                let hi = xs.iter().map(|x| x.1).fold(f32::NEG_INFINITY, f32::max);
+                (lo, hi)
+            };
+            let (_, hand_end) = zone_span(&["hand"]);
+            let (melds_start, _) = zone_span(&["meld"]);
+            let (_, with_drawn_end) = zone_span(&["hand", "drawn"]);
+            let at = format!("{} round {r} seat {seat}", games[g].path);
+            // Right of the hand and of its drawn tile, with at most the drawn tile's place and
+            // two gaps between (about one tile and a half).
+            assert!(melds_start >= with_drawn_end, "{at}: a meld overlaps the hand");
+            assert!(
+                melds_start - hand_end <= 1.6 * 38.0,
+                "{at}: the melds start {} after the hand's last tile",
+                melds_start - hand_end
+            );
+        }
+    }
+    assert!(seats_with_melds > 50, "{seats_with_melds} seats with melds");
+}
+
 #[test]
 fn every_tile_names_itself() {
     let names: BTreeSet<String> = (0..37u8)
@@ -257,7 +332,7 @@ fn every_tile_names_itself() {
         for (i, p) in ps.iter().enumerate().step_by(7) {
             let board = Board::from_state(&p.state);
             let pov = (i % 4) as u32;
-            let svg = render::svg(
+            let svg = rinshan_render::svg(
                 &board,
                 &Options {
                     reveal: false,
@@ -352,7 +427,7 @@ fn snapshots_of_fixed_positions_and_tile_modes() {
             })
             .find(|b| pick(b))
             .unwrap_or_else(|| panic!("no position for {name}"));
-        let svg = render::svg(
+        let svg = rinshan_render::svg(
             &board,
             &Options {
                 defs: false,
@@ -385,7 +460,7 @@ fn snapshots_of_fixed_positions_and_tile_modes() {
         // Payments balance once the riichi sticks a winner takes from the table are counted.
         let sticks_taken = if r.wins.is_empty() { 0 } else { 1000 * b.sticks as i32 };
         assert_eq!(r.deltas.iter().sum::<i32>(), sticks_taken, "{name}: {:?}", r.deltas);
-        let svg = render::svg(
+        let svg = rinshan_render::svg(
             b,
             &Options {
                 defs: false,
@@ -395,7 +470,7 @@ fn snapshots_of_fixed_positions_and_tile_modes() {
         insta::assert_snapshot!(format!("board_{name}"), lines(&svg));
     }
     for mode in TileMode::ALL {
-        insta::assert_snapshot!(format!("tiles_{mode}"), symbols(&render::sprite(mode)));
+        insta::assert_snapshot!(format!("tiles_{mode}"), symbols(&rinshan_render::sprite(mode)));
     }
 }
 
@@ -405,14 +480,14 @@ fn pictures_rasterise_in_every_mode() {
     let (ps, _) = round_replay(&games[0], 0).expect("a round");
     let board = Board::from_state(&ps[ps.len() / 2].state);
     for mode in TileMode::ALL {
-        let svg = render::svg(
+        let svg = rinshan_render::svg(
             &board,
             &Options {
                 tiles: mode,
                 ..revealed(0)
             },
         );
-        let png = render::png::png(&svg, 0.5).expect("a PNG");
+        let png = rinshan_render::png::png(&svg, 0.5).expect("a PNG");
         let img = image_size_and_colours(&png);
         assert_eq!((img.0, img.1), (480, 480), "{mode}");
         assert!(
@@ -421,7 +496,7 @@ fn pictures_rasterise_in_every_mode() {
             img.2
         );
     }
-    assert!(render::png::png("<svg", 1.0).is_err());
+    assert!(rinshan_render::png::png("<svg", 1.0).is_err());
 }
 
 /// Width, height and the count of light (tile-body) pixels of a PNG, decoded by resvg's own
@@ -442,7 +517,7 @@ fn the_replay_page_holds_every_decision_and_each_result() {
     use std::io::Read as _;
     let games = games();
     let game = &games[0];
-    let page = render::html::replay_html(game, 0).expect("a page");
+    let page = rinshan_render::html::replay_html(game, 0).expect("a page");
     let data = page
         .split("const DATA = \"")
         .nth(1)

@@ -3,10 +3,10 @@
 
 use std::path::{Path, PathBuf};
 
-use rinshan::generated::kernel::ScoreOutput;
-use rinshan::gpu::Kernel;
-use rinshan::hand::{self, Win};
-use rinshan::notation::{parse_meld, parse_tiles};
+use rinshan_engine::generated::kernel::ScoreOutput;
+use rinshan_engine::gpu::Kernel;
+use rinshan_engine::hand::{self, Win};
+use rinshan_engine::notation::{parse_meld, parse_tiles};
 use rinshan_shaders_gen::Source;
 use rinshan_tests::gpu_or_skip;
 
@@ -98,7 +98,7 @@ fn win(hand: &str, win: &str, melds: &[&str], tsumo: bool) -> Win {
 }
 
 /// (status, han, yakuman) of each hand under a WGSL module.
-fn judge(gpu: &mut rinshan::gpu::Gpu, wgsl: &str, wins: &[Win]) -> Vec<(u32, u32, u32)> {
+fn judge(gpu: &mut rinshan_engine::gpu::Gpu, wgsl: &str, wins: &[Win]) -> Vec<(u32, u32, u32)> {
     let inputs: Vec<u32> = wins
         .iter()
         .flat_map(|w| hand::score_input(w).expect("consistent"))
@@ -132,10 +132,10 @@ fn edited_specs_change_results_on_the_gpu() {
     // The first line names the source paths, which differ between build.rs and this test.
     let body = |w: &str| w.split_once('\n').map(|(_, rest)| rest.to_string()).unwrap_or_default();
     assert!(
-        body(&stock) == body(rinshan::generated::red::WGSL),
+        body(&stock) == body(rinshan_engine::generated::red::WGSL),
         "run-time compilation reproduces the built module"
     );
-    let stock_results = judge(&mut gpu, rinshan::generated::red::WGSL, &hands);
+    let stock_results = judge(&mut gpu, rinshan_engine::generated::red::WGSL, &hands);
     assert_eq!(stock_results, vec![(0, 2, 0), (0, 1, 0), (0, 1 + 3 + 1 + 6, 0)]);
 
     // A han value (tanyao worth 3 closed / 2 open) and a local yaku (daisharin-style seven simple
@@ -192,7 +192,7 @@ fn a_new_option_is_its_toml_line_and_the_kernel_code_that_reads_it() {
     let mut with_sticks = win("234567m234p456s66s", "6s", &[], false);
     with_sticks.context.sticks = 2;
     let inputs: Vec<u32> = hand::score_input(&with_sticks).expect("consistent").to_vec();
-    let gain = |gpu: &mut rinshan::gpu::Gpu, wgsl: &str| {
+    let gain = |gpu: &mut rinshan_engine::gpu::Gpu, wgsl: &str| {
         outputs(&gpu.run_wgsl(wgsl, Kernel::Score, &inputs).expect("gpu run"))[0].gain
     };
     // tanyao pinfu ron, 2 han 30 fu: 2000, plus 2000 in sticks when the winner takes them.

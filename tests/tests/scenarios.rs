@@ -49,7 +49,7 @@ fn close(a: f64, b: f64) -> bool {
 macro_rules! runner {
     ($fn_name:ident, $v:ident) => {
         fn $fn_name(sc: &Scenario) -> Result<(), String> {
-            use rinshan::generated::$v as k;
+            use rinshan_engine::generated::$v as k;
             let acts = Actions {
                 blocks: k::host::ACTION_BLOCKS.to_vec(),
                 red: k::host::ACTION_BLOCKS.iter().any(|b| b.0 == "pon_red"),
@@ -61,7 +61,7 @@ macro_rules! runner {
                 m => return Err(format!("unknown mode `{m}` (single, east, half)")),
             };
             let wall = build_wall(sc, acts.red)?;
-            let mut s = k::game_new(rinshan::generated::kernel::ResetInput {
+            let mut s = k::game_new(rinshan_engine::generated::kernel::ResetInput {
                 seed: sc.seed.unwrap_or([7, 11]),
                 mode,
                 dealer: sc.dealer,
@@ -85,7 +85,7 @@ macro_rules! runner {
                     s.sticks = x;
                 }
             }
-            let legal_of = |view: &rinshan::generated::kernel::StepView| -> Vec<u32> {
+            let legal_of = |view: &rinshan_engine::generated::kernel::StepView| -> Vec<u32> {
                 (0..k::NUM_ACTIONS)
                     .filter(|a| view.mask[(a / 32) as usize] >> (a % 32) & 1 == 1)
                     .collect()

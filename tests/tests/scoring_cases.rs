@@ -2,9 +2,9 @@
 
 use std::collections::BTreeMap;
 
-use rinshan::hand::{score, Payment, Win, WinContext};
-use rinshan::notation::{parse_meld, parse_tile, parse_tiles, parse_wind};
-use rinshan::{TileType, Variant};
+use rinshan_engine::hand::{score, Payment, Win, WinContext};
+use rinshan_engine::notation::{parse_meld, parse_tile, parse_tiles, parse_wind};
+use rinshan_engine::{TileType, Variant};
 use rinshan_tests::test_data;
 use serde::Deserialize;
 
@@ -166,7 +166,7 @@ fn cases_cover_every_yaku_of_the_spec() {
     let cases = load_cases();
     let covered: std::collections::BTreeSet<&str> =
         cases.iter().flat_map(|c| c.yaku.keys().map(String::as_str)).collect();
-    let names = rinshan::generated::red::host::YAKU_NAMES;
+    let names = rinshan_engine::generated::red::host::YAKU_NAMES;
     let missing: Vec<&&str> = names.iter().filter(|n| !covered.contains(**n)).collect();
     assert!(missing.is_empty(), "yaku without a scoring case: {missing:?}");
 }
@@ -189,11 +189,13 @@ fn every_case_is_identical_on_the_gpu() {
         }
         let inputs: Vec<u32> = chosen
             .iter()
-            .flat_map(|w| rinshan::hand::score_input(w).expect("consistent"))
+            .flat_map(|w| rinshan_engine::hand::score_input(w).expect("consistent"))
             .collect();
-        let mut cpu = vec![0u32; chosen.len() * rinshan::hand::SCORE_OUT_WORDS];
-        rinshan::hand::score_batch(variant, &inputs, &mut cpu);
-        let out = gpu.run(variant, rinshan::gpu::Kernel::Score, &inputs).expect("gpu run");
+        let mut cpu = vec![0u32; chosen.len() * rinshan_engine::hand::SCORE_OUT_WORDS];
+        rinshan_engine::hand::score_batch(variant, &inputs, &mut cpu);
+        let out = gpu
+            .run(variant, rinshan_engine::gpu::Kernel::Score, &inputs)
+            .expect("gpu run");
         assert_eq!(out, cpu, "{variant}");
     }
 }

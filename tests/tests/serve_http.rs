@@ -7,7 +7,7 @@ use std::time::Duration;
 use axum::body::Body;
 use axum::http::{Method, Request, StatusCode};
 use axum::Router;
-use rinshan::serve::{app, Limits};
+use rinshan_serve::{app, Limits};
 use serde_json::{json, Value};
 use tower::ServiceExt;
 
@@ -134,9 +134,9 @@ async fn a_whole_game_through_the_api_replays_from_its_log() {
     // The downloaded log replays through the engine and agrees with it everywhere.
     let (status, text) = get(&app, &format!("/api/games/{id}/log")).await;
     assert_eq!(status, StatusCode::OK, "{text}");
-    let game = rinshan::tenhou::log::parse_game("download", &text).expect("a Tenhou log");
+    let game = rinshan_logs::tenhou::log::parse_game("download", &text).expect("a Tenhou log");
     assert_eq!(game.names[2], "You");
-    let report = rinshan::tenhou::replay::replay(&[game], rinshan::env::Backend::Cpu).expect("it replays");
+    let report = rinshan_logs::tenhou::replay::replay(&[game], rinshan_engine::env::Backend::Cpu).expect("it replays");
     assert!(report.all_agree(), "the log replays exactly");
     // The replay page of that log.
     let (status, page) = send(&app, Method::POST, "/api/replay", Some(&text), false).await;

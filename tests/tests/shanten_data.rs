@@ -1,7 +1,7 @@
 //! Exact shanten against the 40,000 published cases and against the xiangting crate.
 
-use rinshan::hand::shanten;
-use rinshan::random::{random_hand, Rng};
+use rinshan_engine::hand::shanten;
+use rinshan_engine::random::{random_hand, Rng};
 use rinshan_tests::test_data;
 
 /// Each line: 14 tile ids 0..33, then the expected normal, kokushi and chiitoitsu shanten.

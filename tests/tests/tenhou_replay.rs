@@ -4,10 +4,10 @@
 
 use std::path::PathBuf;
 
-use rinshan::env::Backend;
-use rinshan::tenhou::log::{collect_files, parse_game, read_game, Game};
-use rinshan::tenhou::plan::plan;
-use rinshan::tenhou::replay::{replay, replay_on_gpu, Report};
+use rinshan_engine::env::Backend;
+use rinshan_logs::tenhou::log::{collect_files, parse_game, read_game, Game};
+use rinshan_logs::tenhou::plan::plan;
+use rinshan_logs::tenhou::replay::{replay, replay_on_gpu, Report};
 use rinshan_tests::test_data;
 
 fn data_dir() -> PathBuf {

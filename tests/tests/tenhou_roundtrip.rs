@@ -9,16 +9,16 @@
 
 use std::collections::BTreeMap;
 
-use rinshan::env::{Backend, Config, Env, Mode};
-use rinshan::generated::kernel::GameState;
-use rinshan::generated::red as k;
-use rinshan::hand::YakuHan;
-use rinshan::random::Rng;
-use rinshan::tenhou::log::{collect_files, parse_game, read_game, Discard, Draw, Game, Outcome, Round};
-use rinshan::tenhou::plan::plan;
-use rinshan::tenhou::replay::replay;
-use rinshan::tenhou::write::{game_text, GameRecorder, Recorder, WriteError};
-use rinshan::{Tile, Variant};
+use rinshan_engine::env::{Backend, Config, Env, Mode};
+use rinshan_engine::generated::kernel::GameState;
+use rinshan_engine::generated::red as k;
+use rinshan_engine::hand::YakuHan;
+use rinshan_engine::random::Rng;
+use rinshan_engine::{Tile, Variant};
+use rinshan_logs::tenhou::log::{collect_files, parse_game, read_game, Discard, Draw, Game, Outcome, Round};
+use rinshan_logs::tenhou::plan::plan;
+use rinshan_logs::tenhou::replay::replay;
+use rinshan_logs::tenhou::write::{game_text, GameRecorder, Recorder, WriteError};
 use rinshan_tests::policy::{legal, Policy};
 use rinshan_tests::scenario::{build_wall, load, Actions};
 use rinshan_tests::test_data;
@@ -283,7 +283,7 @@ fn record_logged(r: &Round) -> Round {
     let p = plan(r).unwrap_or_else(|e| panic!("{r}: {e}"));
     let wall = p.wall.map(|t| u32::from(t.value()));
     let dealer = r.dealer() as u32;
-    let mut s = k::game_new(rinshan::generated::kernel::ResetInput {
+    let mut s = k::game_new(rinshan_engine::generated::kernel::ResetInput {
         seed: [1, 2],
         mode: 2,
         dealer,
@@ -296,7 +296,7 @@ fn record_logged(r: &Round) -> Round {
     let (round, honba, sticks, scores) = (r.kyoku, r.honba, r.sticks, r.scores);
     k::game_deal(
         &mut s,
-        rinshan::generated::kernel::DealInput {
+        rinshan_engine::generated::kernel::DealInput {
             deal: 1,
             round,
             dealer,

@@ -9,8 +9,8 @@
 //!   (three or more before a discard) and fewer than twelve kinds of terminals and honors has no
 //!   wait.
 
-use rinshan::hand::shanten;
-use rinshan::random::Rng;
+use rinshan_engine::hand::shanten;
+use rinshan_engine::random::Rng;
 
 fn is_orphan(t: usize) -> bool {
     t >= 27 || t.is_multiple_of(9) || t % 9 == 8

@@ -1,0 +1,81 @@
+//! `rinshan`: the command-line front end over the engine, logs, render and serve crates: self-play,
+//! the hand calculator, log replay, pictures, the web page, the arena and benchmarks. Each
+//! subcommand lives in its own module; nothing here plays a rule.
+
+mod arena;
+mod args;
+mod bench;
+mod error;
+mod observe;
+mod render;
+mod replay;
+mod score;
+mod selfplay;
+mod serve;
+mod shanten;
+
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+
+use error::CliError;
+
+#[derive(Parser)]
+#[command(
+    name = "rinshan",
+    version,
+    about = "Vectorized Riichi Mahjong whose rules are data: self-play of the built-in agents, hand calculator, log replay, pictures, a web page, an arena and benchmarks"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Shanten of a concealed hand (-1 = complete), e.g. `rinshan shanten 123m456p789s1122z`
+    Shanten(shanten::Args),
+    /// Score a winning hand, e.g. `rinshan score 234567m234p4566s --win 6s --tsumo`
+    Score(score::Args),
+    /// Self-play of the built-in agents (or a uniformly random policy): speed, game statistics and how each agent did, e.g. `rinshan selfplay --games 1000`
+    Selfplay(selfplay::Args),
+    /// Replay tenhou.net/6 logs through the red variant and compare every round, e.g. `rinshan replay logs/`
+    Replay(replay::Args),
+    /// A seat's observation at a position of a tenhou.net/6 log, e.g. `rinshan observe game.json --round 2 --step 10`
+    Observe(observe::Args),
+    /// Draw a table as SVG or PNG, or a whole logged game as an HTML replay, e.g. `rinshan render game.json --round 1 --step 20 --png -o board.png`
+    Render(render::Args),
+    /// A web page to play against the agents, watch them or replay a log, e.g. `rinshan serve --port 8000`
+    Serve(serve::Args),
+    /// Rate built-in agents by duplicate play, e.g. `rinshan arena --agents greedy,rule,rule,rule --games 4000`
+    Arena(arena::Args),
+    /// Benchmarks: `bench hands` (shanten, scoring), `bench env` (environment steps by batch size)
+    Bench {
+        #[command(subcommand)]
+        what: bench::What,
+    },
+}
+
+fn run(cli: Cli) -> Result<(), CliError> {
+    match cli.command {
+        Command::Shanten(a) => shanten::run(a),
+        Command::Score(a) => score::run(a),
+        Command::Selfplay(a) => selfplay::run(a),
+        Command::Replay(a) => replay::run(a),
+        Command::Arena(a) => arena::run(a),
+        Command::Observe(a) => observe::run(a),
+        Command::Render(a) => render::run(a),
+        Command::Serve(a) => serve::run(a),
+        Command::Bench { what } => bench::run(what),
+    }
+}
+
+fn main() -> ExitCode {
+    match run(Cli::parse()) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {}", e.message);
+            ExitCode::from(e.code)
+        }
+    }
+}

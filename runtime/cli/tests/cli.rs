@@ -1,0 +1,381 @@
+//! The `rinshan` binary as a user calls it: output shapes, exit codes and error messages.
+
+use std::process::{Command, Output};
+
+fn rinshan(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_rinshan"))
+        .args(args)
+        .output()
+        .expect("run rinshan")
+}
+
+fn json(out: &Output) -> serde_json::Value {
+    assert!(out.status.success(), "stderr: {}", String::from_utf8_lossy(&out.stderr));
+    serde_json::from_slice(&out.stdout).expect("JSON on stdout")
+}
+
+#[test]
+fn shanten_json_reports_every_form() {
+    let v = json(&rinshan(&["shanten", "19m19p19s1234567z", "--json"]));
+    assert_eq!(
+        v,
+        serde_json::json!({"shanten": 0, "normal": 8, "chiitoitsu": 6, "kokushi": 0})
+    );
+    let v = json(&rinshan(&["shanten", "123m456p789s11222z", "--json"]));
+    assert_eq!(v["shanten"], -1);
+}
+
+#[test]
+fn shanten_plain_prints_the_number() {
+    let out = rinshan(&["shanten", "123m456p789s1122z"]);
+    assert!(out.status.success());
+    assert_eq!(String::from_utf8_lossy(&out.stdout).trim(), "0");
+}
+
+#[test]
+fn score_tsumo_json_has_yaku_and_payments() {
+    // riichi, menzen tsumo, pinfu, tanyao + dora 4m (indicator 3m): 5 han mangan, 2000/4000.
+    let v = json(&rinshan(&[
+        "score",
+        "234567m234p456s66s",
+        "--win",
+        "6s",
+        "--tsumo",
+        "--riichi",
+        "--dora",
+        "3m",
+        "--json",
+    ]));
+    assert_eq!(v["han"], 5);
+    assert_eq!(v["fu"], 20);
+    assert_eq!(v["yakuman"], 0);
+    let names: Vec<&str> = v["yaku"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|y| y["name"].as_str().unwrap())
+        .collect();
+    assert_eq!(names, ["riichi", "menzen_tsumo", "pinfu", "tanyao", "dora"]);
+    assert_eq!(
+        v["points"],
+        serde_json::json!({"dealer_pays": 4000, "others_pay": 2000, "total": 8000})
+    );
+}
+
+#[test]
+fn score_ron_with_melds_honba_and_sticks() {
+    // Dealer, hatsu pon + chi 123m, 123p 789s, tanki on haku: yakuhai 1 + open chanta 1 = 2 han;
+    // fu 20 + 4 (open honor triplet) + 2 (dragon pair) + 2 (tanki) = 28 -> 30; 2 han 30 fu dealer
+    // ron 2900 + 300 honba; the winner also takes 2 sticks.
+    let v = json(&rinshan(&[
+        "score",
+        "123p789s5z",
+        "--win",
+        "5z",
+        "--meld",
+        "chi:123m",
+        "--meld",
+        "pon:666z",
+        "--dealer",
+        "--honba",
+        "1",
+        "--sticks",
+        "2",
+        "--json",
+    ]));
+    assert_eq!(v["han"], 2);
+    assert_eq!(v["fu"], 30);
+    assert_eq!(
+        v["yaku"],
+        serde_json::json!([{"name": "yakuhai_green", "han": 1}, {"name": "chanta", "han": 1}])
+    );
+    assert_eq!(v["points"], serde_json::json!({"ron": 3200, "total": 5200}));
+}
+
+#[test]
+fn variant_changes_red_five_value() {
+    let args = ["score", "234067m234p456s66s", "--win", "6s", "--tsumo", "--json"];
+    let red = json(&rinshan(&args));
+    let mut no_red_args = args.to_vec();
+    no_red_args.extend(["--variant", "no-red"]);
+    let no_red = json(&rinshan(&no_red_args));
+    assert_eq!(
+        red["han"].as_u64().unwrap(),
+        no_red["han"].as_u64().unwrap() + 1,
+        "aka counts only with red fives"
+    );
+}
+
+#[test]
+fn malformed_hands_exit_with_2_and_say_why() {
+    for (args, needle) in [
+        (vec!["shanten", "123x"], "unexpected `x`"),
+        (vec!["shanten", "123"], "suit letter"),
+        (vec!["shanten", "11111m"], "only 4"),
+        (vec!["score", "123m", "--win", "1m"], "concealed tiles"),
+        (vec!["score", "234567m234p456s66s", "--win", "9z"], "1z-7z"),
+        (
+            vec!["score", "234567m234p456s66s", "--win", "6s", "--meld", "pon:123m"],
+            "identical",
+        ),
+        (
+            vec!["score", "234567m234p456s66s", "--win", "6s", "--variant", "mystery"],
+            "unknown variant",
+        ),
+        (
+            vec!["score", "234567m234p456s66s", "--win", "6s", "--houtei", "--tsumo"],
+            "houtei",
+        ),
+    ] {
+        let out = rinshan(&args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(needle), "{args:?}: {err}");
+    }
+}
+
+#[test]
+fn hands_that_do_not_win_exit_with_1() {
+    let out = rinshan(&["score", "123456m123p456s1z", "--win", "2z"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("not a winning hand"));
+    // Complete but open without a yaku.
+    let out = rinshan(&[
+        "score", "22m123s", "--win", "3s", "--meld", "chi:789m", "--meld", "chi:456p", "--meld", "pon:666p",
+    ]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("no yaku"));
+}
+
+#[test]
+fn selfplay_with_the_same_seed_gives_the_same_summary() {
+    let args = ["selfplay", "--games", "20", "--batch", "8", "--json", "--seed", "5"];
+    let strip = |mut v: serde_json::Value| {
+        let map = v.as_object_mut().expect("an object");
+        for timing in ["seconds", "steps_per_second"] {
+            assert!(map.remove(timing).is_some(), "{timing} reported");
+        }
+        v
+    };
+    let a = strip(json(&rinshan(&args)));
+    let b = strip(json(&rinshan(&args)));
+    assert_eq!(a, b);
+    assert_eq!(a["games"], 20);
+    assert_eq!(a["variant"], "red");
+    assert!(a["avg_steps_per_game"].as_f64().unwrap() > 100.0, "{a}");
+    assert!(a["rounds"].as_u64().unwrap() >= 20, "{a}");
+    let scores: f64 = a["avg_final_score"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .sum();
+    // Points are conserved; uma adds up to 0 and leftover sticks go to the winner.
+    assert!((scores - 100_000.0).abs() < 1e-6, "{a}");
+    let c = strip(json(&rinshan(&[
+        "selfplay", "--games", "20", "--batch", "8", "--json", "--seed", "6",
+    ])));
+    assert_ne!(a, c, "another seed plays other games");
+}
+
+#[test]
+fn selfplay_reports_each_agent_over_the_seats_it_played() {
+    let v = json(&rinshan(&[
+        "selfplay",
+        "--games",
+        "24",
+        "--batch",
+        "8",
+        "--json",
+        "--seed",
+        "3",
+        "--agents",
+        "rule,greedy,rule,random",
+    ]));
+    let agents = v["per_agent"].as_array().expect("per_agent");
+    let names: Vec<&str> = agents.iter().map(|a| a["agent"].as_str().unwrap()).collect();
+    assert_eq!(
+        names,
+        ["rule", "greedy", "random"],
+        "one row per distinct agent, in --agents order"
+    );
+    let games: Vec<u64> = agents.iter().map(|a| a["games"].as_u64().unwrap()).collect();
+    // rule sits in two of the four seats of every game.
+    assert_eq!(games, [48, 24, 24]);
+    // Every game hands out each place once.
+    for place in 0..4 {
+        let n: u64 = agents.iter().map(|a| a["ranks"][place].as_u64().unwrap()).sum();
+        assert_eq!(n, 24, "place {place}: {v}");
+    }
+    for a in agents {
+        let ranks: Vec<f64> = (0..4).map(|p| a["ranks"][p].as_f64().unwrap()).collect();
+        let mean = ranks.iter().enumerate().map(|(p, n)| (p as f64 + 1.0) * n).sum::<f64>() / ranks.iter().sum::<f64>();
+        assert!((a["mean_rank"].as_f64().unwrap() - mean).abs() < 1e-9, "{a}");
+    }
+    // The agents' scores and rates are the seats' ones regrouped: the same totals.
+    let seat_scores: f64 = v["avg_final_score"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap() * 24.0)
+        .sum();
+    let agent_scores: f64 = agents
+        .iter()
+        .map(|a| a["mean_score"].as_f64().unwrap() * a["games"].as_f64().unwrap())
+        .sum();
+    assert!((seat_scores - agent_scores).abs() < 1e-6, "{v}");
+    let rounds = v["rounds"].as_f64().unwrap();
+    let per_agent_sum = |key: &str| -> f64 {
+        agents
+            .iter()
+            .map(|a| a[key].as_f64().unwrap() * a["rounds"].as_f64().unwrap())
+            .sum()
+    };
+    // Each round has at most one ron victim and counts four seat-rounds.
+    let deal_ins = v["deal_in_rate"].as_f64().unwrap() * rounds;
+    assert!((per_agent_sum("deal_in_rate") - deal_ins).abs() < 1e-6, "{v}");
+    let seat_rounds: f64 = agents.iter().map(|a| a["rounds"].as_f64().unwrap()).sum();
+    assert!((seat_rounds - 4.0 * rounds).abs() < 1e-9, "{v}");
+    // A double ron has two winners in one round: at least as many seat wins as winning rounds.
+    let wins = v["win_rate"].as_f64().unwrap() * rounds;
+    assert!(per_agent_sum("win_rate") >= wins - 1e-6, "{v}");
+    // The text form has the table too.
+    let out = rinshan(&[
+        "selfplay",
+        "--games",
+        "8",
+        "--batch",
+        "8",
+        "--agents",
+        "rule,greedy,rule,random",
+    ]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("per agent") && text.contains("greedy"), "{text}");
+}
+
+#[test]
+fn selfplay_help_says_who_plays() {
+    for args in [&["--help"][..], &["selfplay", "--help"]] {
+        let out = rinshan(args);
+        let text = String::from_utf8_lossy(&out.stdout);
+        assert!(!text.contains("Random-policy"), "{text}");
+        assert!(text.contains("built-in agents"), "{text}");
+    }
+}
+
+#[test]
+fn selfplay_rejects_bad_options() {
+    for (args, needle) in [
+        (vec!["selfplay", "--mode", "long"], "unknown mode"),
+        (vec!["selfplay", "--backend", "tpu"], "unknown backend"),
+        (vec!["selfplay", "--batch", "0"], "batch size"),
+        (vec!["selfplay", "--variant", "blue"], "unknown variant"),
+    ] {
+        let out = rinshan(&args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(needle), "{args:?}: {err}");
+    }
+}
+
+#[test]
+fn selfplay_exports_games_that_replay() {
+    let dir = std::env::temp_dir().join(format!("rinshan-export-{}", std::process::id()));
+    let path = dir.to_str().expect("utf-8 path");
+    let args = ["selfplay", "--games", "6", "--batch", "4", "--json", "--seed", "9"];
+    let plain = json(&rinshan(&args));
+    let exported = json(&rinshan(&[&args[..], &["--export", path]].concat()));
+    // Exporting plays the same games.
+    assert_eq!(plain["rounds"], exported["rounds"]);
+    let mut files: Vec<String> = std::fs::read_dir(&dir)
+        .expect("the export folder")
+        .map(|e| e.expect("an entry").file_name().to_string_lossy().into_owned())
+        .collect();
+    files.sort();
+    let mut expected: Vec<String> = (1..=6).map(|n| format!("game-{n}.json")).collect();
+    expected.sort();
+    assert_eq!(files, expected);
+    let rounds: usize = files
+        .iter()
+        .map(|f| std::fs::read_to_string(dir.join(f)).expect("a game").lines().count())
+        .sum();
+    assert_eq!(serde_json::json!(rounds), plain["rounds"], "one line per round");
+    let v = json(&rinshan(&["replay", path, "--json"]));
+    assert_eq!(v["all_agree"], true, "{v}");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn selfplay_export_says_what_it_needs() {
+    for (option, value, needle) in [
+        ("--backend", "gpu", "--backend cpu"),
+        ("--variant", "no-red", "red variant"),
+        ("--mode", "single", "east or half"),
+    ] {
+        let out = rinshan(&["selfplay", "--games", "1", option, value, "--export", "/tmp/unused"]);
+        assert_eq!(out.status.code(), Some(2), "{option} {value}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(needle), "{option} {value}: {err}");
+    }
+}
+
+const LOGS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../tests/data/tenhou");
+
+#[test]
+fn replay_of_the_real_logs_agrees_everywhere() {
+    let out = rinshan(&["replay", LOGS]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{text}\n{}", String::from_utf8_lossy(&out.stderr));
+    assert!(text.contains("replayed 21 games"), "{text}");
+    assert!(
+        text.contains("every round and every win agrees with the logs"),
+        "{text}"
+    );
+    let v = json(&rinshan(&["replay", LOGS, "--json"]));
+    assert_eq!(v["all_agree"], true);
+    assert_eq!(v["report"]["rounds"], 232);
+    assert_eq!(v["report"]["rounds_replayed"], 232);
+    assert_eq!(v["report"]["mismatches"], serde_json::json!([]));
+}
+
+#[test]
+fn replay_lists_each_mismatch_with_file_round_and_step() {
+    let dir = std::env::temp_dir().join(format!("rinshan-replay-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let source = std::fs::read_to_string(format!("{LOGS}/2010081709gm-00a9-0000-fe3371ad.json")).expect("log");
+    // East 1: a 7700 ron from the seat whose riichi stick went too (-8700 in all); the edited
+    // result says 8700 for the ron, so the log has -9700 for that seat.
+    let edited = source.replacen("[0,8700,-7700,0]", "[0,8700,-8700,0]", 1);
+    let file = dir.join("edited.json");
+    std::fs::write(&file, edited).expect("write");
+    let out = rinshan(&["replay", file.to_str().expect("utf-8 path")]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{text}");
+    assert!(
+        text.contains(
+            "edited.json:1 (East 1, 0 honba), step 89: score changes: log says [0, 8700, -9700, 0]; rinshan says [0, 8700, -8700, 0]"
+        ),
+        "{text}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn replay_rejects_unreadable_logs_with_exit_2() {
+    let out = rinshan(&["replay", "/no/such/log.json"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("/no/such/log.json"));
+    let dir = std::env::temp_dir().join(format!("rinshan-replay-bad-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let file = dir.join("bad.json");
+    std::fs::write(&file, "{\"log\": [[[0,0,0]]]}\n").expect("write");
+    let out = rinshan(&["replay", file.to_str().expect("utf-8 path")]);
+    assert_eq!(out.status.code(), Some(2));
+    let text = format!(
+        "{}{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(text.contains("bad.json: line 1"), "{text}");
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -1,0 +1,31 @@
+//! The rule variants as users name them (`red`, `no-red`), and what the host reads of their spec.
+
+use crate::generated::Variant;
+use crate::names::UnknownName;
+
+impl Variant {
+    /// Parses a variant name as users write it: `red`, `no-red` or `no_red`.
+    pub fn from_name(name: &str) -> Option<Variant> {
+        let wanted = name.replace('-', "_");
+        Variant::ALL.iter().copied().find(|v| v.name() == wanted)
+    }
+
+    /// Each player's points at the start of a game (`[game] starting_points` of the spec).
+    pub fn starting_points(self) -> u32 {
+        with_variant!(self, v => v::STARTING_POINTS)
+    }
+}
+
+impl std::fmt::Display for Variant {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.name().replace('_', "-"))
+    }
+}
+
+impl std::str::FromStr for Variant {
+    type Err = UnknownName;
+
+    fn from_str(name: &str) -> Result<Variant, UnknownName> {
+        Variant::from_name(name).ok_or_else(|| UnknownName::new("variant", name, Variant::ALL))
+    }
+}

@@ -1,0 +1,110 @@
+//! The positions of a logged round: every decision the engine asks for while the round is
+//! replayed (the log's own moves, and the claim prompts it passes), each with the game state
+//! before it. `rinshan observe` and the observation snapshots look at a log through these.
+
+use super::log::{round_name, Game};
+use super::plan::plan;
+use rinshan_engine::env::{Config, Env};
+use rinshan_engine::generated::kernel::GameState;
+use rinshan_engine::generated::red as k;
+use rinshan_engine::Variant;
+
+/// One decision of a replayed round.
+#[derive(Clone)]
+pub struct Position {
+    /// 0-based decision index within the round (claim prompts included).
+    pub step: usize,
+    /// The seat deciding.
+    pub seat: u32,
+    /// The action played (the log's move, or a pass at a prompt the log does not take).
+    pub action: u32,
+    /// What the log says for this decision (`pass` at a prompt it does not list).
+    pub what: String,
+    /// The game state before the decision.
+    pub state: GameState,
+}
+
+/// How a replayed round ended: the step that ended it and the table after it.
+#[derive(Clone)]
+pub struct RoundEnd {
+    /// What the last decision's step reported (events, winners, rewards, ranks).
+    pub step: rinshan_engine::env::Step,
+    /// The table after it (the win records, the draw, the scores).
+    pub table: rinshan_engine::env::Table,
+    /// The uma the replaying env pays (none: replays compare the logged payments).
+    pub uma: [i32; 4],
+}
+
+/// The decisions of round `round` (0-based index into the game's rounds) in order of play.
+pub fn round_positions(game: &Game, round: usize) -> Result<Vec<Position>, String> {
+    round_replay(game, round).map(|(positions, _)| positions)
+}
+
+/// The decisions of round `round` and how the round ended (`None` if the log stops before the
+/// engine ends it).
+pub fn round_replay(game: &Game, round: usize) -> Result<(Vec<Position>, Option<RoundEnd>), String> {
+    let Some(r) = game.rounds.get(round) else {
+        return Err(format!(
+            "{}: no round {round} (the log has {})",
+            game.path,
+            game.rounds.len()
+        ));
+    };
+    let where_ = format!("{}: line {} ({})", game.path, r.line, round_name(r.kyoku, r.honba));
+    let p = plan(r).map_err(|e| format!("{where_}: {e}"))?;
+    let mut env = Env::new(Config {
+        mode: super::replay::mode_of(std::slice::from_ref(game)),
+        uma: Some([0; 4]),
+        threads: Some(1),
+        ..Config::new(Variant::Red, 1)
+    })
+    .map_err(|e| e.to_string())?;
+    env.reset().map_err(|e| e.to_string())?;
+    env.deal(&[Some(p.deal(r))]).map_err(|e| e.to_string())?;
+    let mut out = Vec::new();
+    let mut next = 0;
+    loop {
+        let step = env.last().clone();
+        let state: GameState = env.game_states().map_err(|e| e.to_string())?.remove(0);
+        let seat = step.current_player[0];
+        let claim = step.legal_actions(0).any(|a| a == k::ACTION_PASS);
+        let (action, what) = match p.moves.get(next) {
+            Some(m) if m.seat == seat as usize && m.claim == claim => {
+                next += 1;
+                (m.action, m.what.clone())
+            }
+            _ if claim => (k::ACTION_PASS, "pass".to_string()),
+            Some(m) => {
+                return Err(format!(
+                    "{where_}: step {}: the log has seat {} {}, the engine asks seat {seat}",
+                    out.len(),
+                    m.seat,
+                    m.what
+                ))
+            }
+            None => break,
+        };
+        out.push(Position {
+            step: out.len(),
+            seat,
+            action,
+            what,
+            state,
+        });
+        let after = env.step(&[action]).map_err(|e| e.to_string())?.clone();
+        use rinshan_engine::env::events as e;
+        if after.events[0] & e::ROUND_OVER != 0 || after.terminated[0] || after.illegal[0] {
+            let table = env.tables().map_err(|e| e.to_string())?.remove(0);
+            let uma = env.uma();
+            return Ok((
+                out,
+                Some(RoundEnd {
+                    step: after,
+                    table,
+                    uma,
+                }),
+            ));
+        }
+    }
+    Ok((out, None))
+}

@@ -1,0 +1,136 @@
+//! Replays logged games through the red variant and compares every round with the log.
+//!
+//! All games of a replay run side by side, one env each, on either backend: each logged round is
+//! dealt from the wall [`super::plan`] rebuilds ([`Env::deal`]), the logged decisions are played
+//! when the engine asks the logged seat (a claim prompt the log does not take is passed), and when
+//! the engine ends the round its outcome (winners, han, fu, yaku, draw kind), score changes and
+//! the table it moves on to (round, honba, sticks) are compared with the log.
+
+mod compare;
+mod report;
+mod run;
+
+use super::log::Game;
+use compare::finish_round;
+pub use report::{Mismatch, Report};
+use rinshan_engine::env::{events, Backend, Config, Deal, Env, EnvError, Mode};
+use rinshan_engine::generated::red as k;
+use rinshan_engine::gpu::Gpu;
+use rinshan_engine::Variant;
+use run::Run;
+
+/// The length of the games: East only when every log's rule says so (`東`, as in `鳳東喰赤`),
+/// else East and South. One replay plays one length: replay East and half games apart.
+pub(crate) fn mode_of(games: &[Game]) -> Mode {
+    if games.iter().all(|g| g.rule.contains('東')) {
+        Mode::East
+    } else {
+        Mode::Half
+    }
+}
+
+/// Replays `games` on `backend` (one env per game, all stepped together; the GPU backend opens
+/// the first adapter).
+pub fn replay(games: &[Game], backend: Backend) -> Result<Report, EnvError> {
+    replay_in(games, backend, Env::new)
+}
+
+/// As [`replay`], on an already opened GPU.
+pub fn replay_on_gpu(games: &[Game], gpu: Gpu) -> Result<Report, EnvError> {
+    replay_in(games, Backend::Gpu, |config| Env::with_gpu(config, gpu))
+}
+
+fn replay_in(
+    games: &[Game],
+    backend: Backend,
+    make_env: impl FnOnce(Config) -> Result<Env, EnvError>,
+) -> Result<Report, EnvError> {
+    let mut report = Report {
+        games: games.len(),
+        ..Report::default()
+    };
+    if games.is_empty() {
+        return Ok(report);
+    }
+    let n = games.len();
+    let mut env = make_env(Config {
+        variant: Variant::Red,
+        mode: mode_of(games),
+        batch: n,
+        backend,
+        seed: 0,
+        // Raw points at the end: logs have no uma.
+        uma: Some([0; 4]),
+        penalty: None,
+        auto_reset: false,
+        threads: Some(1),
+        observe: Vec::new(),
+        agents: Vec::new(),
+    })?;
+    env.reset()?;
+    let mut runs: Vec<Run> = games.iter().map(Run::new).collect();
+    let mut deals: Vec<Option<Deal>> = runs.iter_mut().map(|r| r.start_round(&mut report)).collect();
+    loop {
+        if deals.iter().any(Option::is_some) {
+            env.deal(&deals)?;
+            deals.iter_mut().for_each(|d| *d = None);
+        }
+        if runs.iter().all(|r| r.finished) {
+            break;
+        }
+        let step = env.last().clone();
+        let mut actions = vec![k::ACTION_PASS; n];
+        let mut redealt = false;
+        for (i, run) in runs.iter_mut().enumerate() {
+            actions[i] = step.legal_actions(i).next().unwrap_or(k::ACTION_PASS);
+            if run.finished {
+                continue;
+            }
+            match run.decide(&step, i) {
+                Ok(a) => actions[i] = a,
+                Err(m) => {
+                    let m = *m;
+                    // The rest of this round cannot be replayed; the next logged round is dealt
+                    // from its own table, so one disagreement does not spoil the rest of the game.
+                    report.mismatches.push(m);
+                    run.round += 1;
+                    deals[i] = run.start_round(&mut report);
+                    redealt = true;
+                }
+            }
+        }
+        if redealt {
+            continue;
+        }
+        let after = env.step(&actions)?.clone();
+        let mut ended = Vec::new();
+        for (i, run) in runs.iter_mut().enumerate() {
+            if run.finished {
+                continue;
+            }
+            if run.consume(step.current_player[i] as usize, actions[i]) {
+                report.actions_accepted += 1;
+            }
+            run.steps += 1;
+            for p in 0..4 {
+                run.change[p] += (after.rewards[i][p] * 100.0).round() as i64;
+            }
+            if after.events[i] & events::ROUND_OVER != 0 || after.terminated[i] {
+                ended.push(i);
+            }
+        }
+        if ended.is_empty() {
+            continue;
+        }
+        let tables = env.tables()?;
+        for i in ended {
+            let run = &mut runs[i];
+            finish_round(run, &after, i, &tables[i], &mut report);
+            if !run.finished {
+                run.round += 1;
+                deals[i] = run.start_round(&mut report);
+            }
+        }
+    }
+    Ok(report)
+}

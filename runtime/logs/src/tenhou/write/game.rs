@@ -1,0 +1,258 @@
+//! One game followed on the kernel's states: each step is read from the state before it, the
+//! action and the state after it, and becomes the entries Tenhou writes.
+//!
+//! The state after a step that ends a round already holds the next round (the kernel deals it in
+//! the same step), so a round's end is read from the step's events, the win records and the
+//! state before; the next round's wall and table from the state after.
+
+use crate::tenhou::log::{round_name, Discard, Game, LoggedDraw, LoggedWin, Outcome, Round};
+use crate::tenhou::plan::wall::{DORA, RINSHAN, URA};
+use rinshan_engine::env::{events, DrawRecord, WinRecord};
+use rinshan_engine::generated::kernel::{self, GameState};
+use rinshan_engine::generated::red as k;
+
+use super::outcome::{
+    base_points, draw_outcome, limit_of, outcome_deltas, payment, points_text, win_deltas, yaku_list,
+};
+use super::round::{meld_count, Current};
+
+use events::ROUND_OVER;
+
+/// Follows one game (and, with auto-reset, the games after it) and hands out each finished game.
+#[derive(Debug, Clone)]
+pub struct GameRecorder {
+    /// Player names written in every record.
+    pub names: [String; 4],
+    /// Tenhou's name of the rule: `鳳南喰赤` for half games, `鳳東喰赤` for east games.
+    rule: &'static str,
+    rounds: Vec<Round>,
+    current: Option<Current>,
+    dropped: usize,
+}
+
+impl GameRecorder {
+    /// Follows the game of `state`, which must have just dealt a round: right after
+    /// [`rinshan_engine::env::Env::reset`] or [`rinshan_engine::env::Env::deal`], or the kernel's `game_new`.
+    pub fn new(state: &GameState) -> Result<GameRecorder, String> {
+        let rule = match state.mode {
+            kernel::MODE_HALF => "鳳南喰赤",
+            kernel::MODE_EAST => "鳳東喰赤",
+            _ => return Err("Tenhou logs are east or half games: a one-hand game has no Tenhou rule".into()),
+        };
+        Ok(GameRecorder {
+            names: ["A", "B", "C", "D"].map(String::from),
+            rule,
+            rounds: Vec::new(),
+            current: Some(Current::start(state)?),
+            dropped: 0,
+        })
+    }
+
+    /// The rounds of the current game finished so far.
+    pub fn rounds(&self) -> &[Round] {
+        &self.rounds
+    }
+
+    /// Games that ended with an illegal action, left out (they have no Tenhou ending).
+    pub fn dropped(&self) -> usize {
+        self.dropped
+    }
+
+    /// Records the step that took the game from `before` to `after` with `action` (of
+    /// `before.current`); returns the game when the step ended it. With auto-reset, `after`
+    /// already holds the next game, which is followed from there.
+    pub fn record(&mut self, before: &GameState, action: u32, after: &GameState) -> Result<Option<Game>, String> {
+        if before.terminated != 0 && before.auto_reset == 0 {
+            // A finished game without auto-reset repeats its last view.
+            return Ok(None);
+        }
+        let Some(cur) = self.current.as_mut() else {
+            return Ok(None);
+        };
+        let name = round_name(cur.round.kyoku, cur.round.honba);
+        if after.illegal != 0 {
+            self.dropped += 1;
+            self.rounds.clear();
+            self.current = None;
+            self.next_game(after)?;
+            return Ok(None);
+        }
+        self.step(before, action, after).map_err(|e| format!("{name}: {e}"))
+    }
+
+    fn next_game(&mut self, after: &GameState) -> Result<(), String> {
+        if after.auto_reset != 0 {
+            self.current = Some(Current::start(after)?);
+        }
+        Ok(())
+    }
+
+    fn step(&mut self, b: &GameState, action: u32, a: &GameState) -> Result<Option<Game>, String> {
+        let Some(cur) = self.current.as_mut() else {
+            return Ok(None);
+        };
+        if a.steps != b.steps + 1 {
+            return Err(format!(
+                "the state after the step has taken {} steps, the one before {}: the game was stepped or reset without the recorder",
+                a.steps, b.steps
+            ));
+        }
+        let p = b.current;
+        let seat = cur.at(p);
+        let discards = k::ACTION_DISCARD..k::ACTION_DISCARD + k::ACTION_DISCARD_COUNT;
+        let discard = discards.contains(&action) || action == k::ACTION_TSUMOGIRI;
+        match action {
+            _ if discards.contains(&action) => cur.discard(seat, Some(action - k::ACTION_DISCARD))?,
+            k::ACTION_TSUMOGIRI => cur.discard(seat, None)?,
+            k::ACTION_RIICHI => cur.riichi_next[seat] = true,
+            _ if (k::ACTION_SELF_KAN..k::ACTION_SELF_KAN + k::ACTION_SELF_KAN_COUNT).contains(&action) => {
+                cur.self_kan(b, p, action - k::ACTION_SELF_KAN)?
+            }
+            _ => {}
+        }
+        if a.events & ROUND_OVER == 0 {
+            if (k::ACTION_RON..=k::ACTION_PASS).contains(&action) {
+                for q in (0..4).filter(|&q| meld_count(a, q) > meld_count(b, q)) {
+                    let choice = if q == p { action } else { b.claim_choices[q as usize] };
+                    cur.call(b, q, choice)?;
+                }
+            }
+            let drawn = if a.kans > b.kans {
+                Some(RINSHAN + b.kans as usize)
+            } else {
+                (a.next_draw > b.next_draw).then_some(b.next_draw as usize)
+            };
+            if let Some(i) = drawn {
+                cur.draw(a.current, i, a.drawn)?;
+            }
+            cur.dora = a.dora_revealed as usize;
+            return Ok(None);
+        }
+        // The kan dora of an open or added kan turns up with the next discard, which may end the
+        // round in the same step (an exhaustive or abortive draw).
+        cur.dora = (b.dora_revealed + if discard { b.dora_pending } else { 0 }) as usize;
+        let ronned_riichi = self.finish_round(b, a)?;
+        if a.terminated != 0 {
+            self.current = None;
+            let game = Game {
+                path: String::new(),
+                rule: self.rule.to_string(),
+                red_fives: true,
+                names: self.names.clone(),
+                rounds: std::mem::take(&mut self.rounds),
+            };
+            self.next_game(a)?;
+            return Ok(Some(game));
+        }
+        let next = Current::start(a)?;
+        self.check_next_table(&next, ronned_riichi)?;
+        self.current = Some(next);
+        Ok(None)
+    }
+
+    /// Writes the result of the round that ended between `b` and `a` and files the round;
+    /// returns the seat whose riichi discard was ronned (its stick was never paid).
+    fn finish_round(&mut self, b: &GameState, a: &GameState) -> Result<Option<usize>, String> {
+        let Some(cur) = self.current.as_mut() else {
+            return Ok(None);
+        };
+        let dealer = b.dealer as usize;
+        let round_wind = (b.round / 4 % 4) as usize;
+        let mut ronned_riichi = None;
+        let outcome = if a.events & (events::RON | events::TSUMO) != 0 {
+            let tsumo = a.events & events::TSUMO != 0;
+            let from = if tsumo { b.current } else { b.claim_from };
+            // Nearest the discarder first: Tenhou's order, and the one who takes honba and sticks.
+            let winners: Vec<u32> = (1..5)
+                .map(|j| (from + j) % 4)
+                .filter(|&w| a.winners >> w & 1 == 1)
+                .collect();
+            let mut wins = Vec::new();
+            for (n, &w) in winners.iter().enumerate() {
+                let rec = WinRecord::decode(&a.win_yaku, &a.win_score, w as usize);
+                let liable = kernel::byte_of(b.pao, w)
+                    .checked_sub(1)
+                    .filter(|_| k::PAO && rec.yaku_ids().any(|y| y == k::YAKU_DAISANGEN || y == k::YAKU_DAISUUSHI));
+                let base = base_points(rec.han, rec.fu, rec.yakuman);
+                let limit = limit_of(base);
+                let pay = payment(base, w as usize == dealer, tsumo);
+                let (honba, sticks) = if n == 0 { (b.honba, b.sticks) } else { (0, 0) };
+                let d = win_deltas(
+                    w as usize,
+                    Some(from as usize),
+                    dealer,
+                    pay,
+                    honba,
+                    sticks,
+                    liable.map(|l| l as usize),
+                );
+                let seat_wind = (w as usize + 4 - dealer) % 4;
+                wins.push(LoggedWin {
+                    deltas: std::array::from_fn(|i| d[(i + cur.first as usize) % 4]),
+                    winner: cur.at(w),
+                    from: cur.at(from),
+                    pao: cur.at(liable.unwrap_or(w)),
+                    tsumo,
+                    fu: limit.is_none().then_some(rec.fu),
+                    han: limit.is_none().then_some(rec.han),
+                    limit,
+                    points: points_text(rec.fu, rec.han, limit, pay),
+                    yaku: yaku_list(&rec, seat_wind, round_wind),
+                });
+            }
+            if !tsumo {
+                ronned_riichi = Some(cur.at(from));
+            }
+            let riichi = |w: &LoggedWin| w.yaku.iter().any(|y| y.name == "riichi" || y.name == "double_riichi");
+            if wins.iter().any(riichi) {
+                cur.round.ura = (0..cur.dora)
+                    .map(|i| cur.wall_tile(URA + i))
+                    .collect::<Result<_, _>>()?;
+            }
+            Outcome::Wins(wins)
+        } else {
+            let rec = DrawRecord::decode(a.draw_kind);
+            let (kind, deltas) =
+                draw_outcome(&rec, dealer).ok_or("the round ended in a draw the state does not name")?;
+            let deltas = deltas.map(|d| std::array::from_fn(|i| d[(i + cur.first as usize) % 4]));
+            if kind == LoggedDraw::TripleRon {
+                ronned_riichi = Some(cur.at(b.claim_from));
+            }
+            Outcome::Draw { kind, deltas }
+        };
+        cur.round.dora = (0..cur.dora)
+            .map(|i| cur.wall_tile(DORA + i))
+            .collect::<Result<_, _>>()?;
+        cur.round.outcome = outcome;
+        cur.round.line = self.rounds.len() + 1;
+        // A riichi discard that was ronned was the last discard of its seat.
+        let ronned_riichi = ronned_riichi.filter(|&s| matches!(cur.round.discards[s].last(), Some(Discard::Riichi(_))));
+        self.rounds.push(cur.round.clone());
+        Ok(ronned_riichi)
+    }
+
+    /// The scores and sticks the engine starts the next round with must be the last round's
+    /// plus its result, less the riichi sticks paid: what a reader of the log will assume.
+    fn check_next_table(&self, next: &Current, ronned_riichi: Option<usize>) -> Result<(), String> {
+        let (Some(last), Some(cur)) = (self.rounds.last(), self.current.as_ref()) else {
+            return Ok(());
+        };
+        let paid: [bool; 4] = std::array::from_fn(|s| cur.riichi_made[s] && ronned_riichi != Some(s));
+        let deltas = outcome_deltas(&last.outcome);
+        let scores: [i32; 4] =
+            std::array::from_fn(|s| last.scores[s] + deltas[s] - k::RIICHI_STICK_POINTS as i32 * i32::from(paid[s]));
+        let won = matches!(last.outcome, Outcome::Wins(_));
+        let sticks = if won {
+            0
+        } else {
+            last.sticks + paid.iter().filter(|&&x| x).count() as u32
+        };
+        if (scores, sticks) != (next.round.scores, next.round.sticks) {
+            return Err(format!(
+                "the result gives scores {scores:?} and {sticks} sticks for the next round, but the engine has {:?} and {}",
+                next.round.scores, next.round.sticks
+            ));
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,358 @@
+//! The HTTP routes: pages, the game API and the replay upload. Errors are JSON `{"error": ...}`
+//! with a 4xx status; axum's own extractors answer malformed bodies (400, 415, 422) and the body
+//! limit (413).
+
+use std::convert::Infallible;
+use std::str::FromStr;
+use std::time::Duration;
+
+use axum::extract::{DefaultBodyLimit, Path, Query, State};
+use axum::http::{header, StatusCode};
+use axum::response::sse::{Event, KeepAlive, Sse};
+use axum::response::{IntoResponse, Response};
+use axum::routing::{get, post};
+use axum::{Json, Router};
+use futures_util::Stream;
+use serde::Deserialize;
+use serde_json::{json, Value};
+
+use super::pages;
+use super::session::{Refusal, Session, Setup};
+use super::store::{Limits, Store};
+use rinshan_engine::agents::Agent;
+use rinshan_engine::env::Mode;
+use rinshan_engine::Variant;
+use rinshan_render::{sprite, TileMode};
+
+/// A request the server refuses: its status and what to tell the user.
+pub struct ApiError(StatusCode, String);
+
+impl IntoResponse for ApiError {
+    fn into_response(self) -> Response {
+        (self.0, Json(json!({ "error": self.1 }))).into_response()
+    }
+}
+
+fn unprocessable(m: impl std::fmt::Display) -> ApiError {
+    ApiError(StatusCode::UNPROCESSABLE_ENTITY, m.to_string())
+}
+
+fn not_found(id: &str) -> ApiError {
+    ApiError(
+        StatusCode::NOT_FOUND,
+        format!("no game {id} (it ended, idled out or never existed)"),
+    )
+}
+
+/// The app with default limits.
+pub fn app(limits: Limits) -> Router {
+    app_with_store(limits).0
+}
+
+pub(super) fn app_with_store(limits: Limits) -> (Router, Store) {
+    let store = Store::new(limits);
+    let api = Router::new()
+        .route("/api/agents", get(agents))
+        .route("/api/games", post(create))
+        .route("/api/games/{id}", get(view).delete(remove))
+        .route("/api/games/{id}/actions", post(act))
+        .route("/api/games/{id}/next", post(next))
+        .route("/api/games/{id}/events", get(events))
+        .route("/api/games/{id}/log", get(log))
+        .route("/api/sprite/{mode}", get(tiles_sprite))
+        .layer(DefaultBodyLimit::max(16 * 1024));
+    // A tenhou.net/6 log of a long game is a few tens of kilobytes; a megabyte bounds the upload.
+    let replay = Router::new()
+        .route("/api/replay", post(replay))
+        .layer(DefaultBodyLimit::max(1024 * 1024));
+    let router = pages::routes()
+        .merge(api)
+        .merge(replay)
+        .fallback(|| async { ApiError(StatusCode::NOT_FOUND, "no such page".into()) })
+        .with_state(store.clone());
+    (router, store)
+}
+
+async fn agents() -> Json<Value> {
+    Json(json!({
+        "agents": Agent::ALL.iter().map(|a| a.name()).collect::<Vec<_>>(),
+        "variants": Variant::ALL.iter().map(|v| v.to_string()).collect::<Vec<_>>(),
+        "modes": Mode::ALL.iter().map(|m| m.name()).collect::<Vec<_>>(),
+        "tiles": TileMode::ALL.iter().map(|m| m.name()).collect::<Vec<_>>(),
+    }))
+}
+
+/// `POST /api/games`.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct NewGame {
+    #[serde(default = "default_variant")]
+    variant: String,
+    #[serde(default = "default_mode")]
+    mode: String,
+    /// The person's seat; absent or null: four agents (spectating).
+    seat: Option<u32>,
+    /// Three agents (the other seats in seat order) with a seat, four without.
+    agents: Vec<String>,
+    seed: Option<u64>,
+    /// Milliseconds before each agent move.
+    #[serde(default = "default_delay")]
+    delay_ms: u64,
+}
+
+fn default_variant() -> String {
+    "red".into()
+}
+fn default_mode() -> String {
+    "half".into()
+}
+fn default_delay() -> u64 {
+    400
+}
+
+fn parse<T: FromStr>(what: &str, s: &str) -> Result<T, ApiError>
+where
+    T::Err: std::fmt::Display,
+{
+    s.parse().map_err(|e| unprocessable(format!("{what}: {e}")))
+}
+
+fn setup(g: NewGame) -> Result<Setup, ApiError> {
+    let variant: Variant = parse("variant", &g.variant)?;
+    let mode: Mode = parse("mode", &g.mode)?;
+    let agents: Vec<Agent> = g.agents.iter().map(|a| parse("agent", a)).collect::<Result<_, _>>()?;
+    let want = if g.seat.is_some() { 3 } else { 4 };
+    if agents.len() != want {
+        return Err(unprocessable(format!(
+            "{} agents given: a game {} needs {want}",
+            agents.len(),
+            if g.seat.is_some() {
+                "with a person"
+            } else {
+                "to spectate"
+            }
+        )));
+    }
+    let mut seats = [None; 4];
+    let mut rest = agents.into_iter();
+    for (p, s) in seats.iter_mut().enumerate() {
+        match g.seat {
+            Some(h) if h > 3 => return Err(unprocessable(format!("seat {h}: seats are 0..3"))),
+            Some(h) if h as usize == p => {}
+            _ => *s = rest.next(),
+        }
+    }
+    if g.delay_ms > 10_000 {
+        return Err(unprocessable(format!("delay_ms {}: at most 10000", g.delay_ms)));
+    }
+    Ok(Setup {
+        variant,
+        mode,
+        seats,
+        seed: g.seed.unwrap_or_else(|| {
+            std::time::SystemTime::now()
+                .duration_since(std::time::UNIX_EPOCH)
+                .map_or(0, |d| d.as_nanos() as u64)
+        }),
+        delay: Duration::from_millis(g.delay_ms),
+    })
+}
+
+/// `?tiles=ja&board=0`: the tile mode of the board, or no board (light polling).
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ViewQuery {
+    tiles: Option<String>,
+    board: Option<u8>,
+}
+
+fn view_json(id: u64, s: &Session, tiles: TileMode, board: bool) -> Result<Value, ApiError> {
+    let b = s.board().map_err(|e| ApiError(StatusCode::INTERNAL_SERVER_ERROR, e))?;
+    let svg = board.then(|| s.svg(&b, tiles));
+    let setup = s.setup();
+    Ok(json!({
+        "id": id.to_string(),
+        "step": s.step,
+        "phase": s.phase(),
+        "current": b.current,
+        "seat": s.human(),
+        "variant": setup.variant.to_string(),
+        "mode": setup.mode.name(),
+        "names": s.names(),
+        "scores": b.scores,
+        "round": rinshan_render::round_name(b.round),
+        "honba": b.honba,
+        "legal": s.choices(),
+        "result": b.result.as_ref().map(|r| json!({
+            "deltas": r.deltas,
+            "uma": r.uma,
+            "wins": r.wins.iter().map(|w| json!({"seat": w.seat, "from": w.from, "yaku": w.yaku, "han": w.han, "fu": w.fu, "yakuman": w.yakuman})).collect::<Vec<_>>(),
+            "draw": r.draw.map(|d| format!("{d:?}")),
+            "ranks": r.ranks,
+            "final_scores": r.final_scores,
+        })),
+        "events": s.events(),
+        "log": s.log().is_ok(),
+        "svg": svg,
+    }))
+}
+
+fn game_id(id: &str) -> Result<u64, ApiError> {
+    id.parse().map_err(|_| not_found(id))
+}
+
+async fn create(State(store): State<Store>, Json(g): Json<NewGame>) -> Result<impl IntoResponse, ApiError> {
+    let setup = setup(g)?;
+    let (id, held) = store.create(setup).map_err(|e| match e {
+        Some(m) => unprocessable(m),
+        None => ApiError(
+            StatusCode::SERVICE_UNAVAILABLE,
+            "the server is holding as many games as it may: try again later".into(),
+        ),
+    })?;
+    let body = {
+        let s = held.lock();
+        view_json(id, &s, TileMode::En, false)?
+    };
+    held.changed();
+    Ok((StatusCode::CREATED, Json(body)))
+}
+
+fn tiles_of(q: &ViewQuery) -> Result<TileMode, ApiError> {
+    q.tiles.as_deref().map_or(Ok(TileMode::En), |t| parse("tiles", t))
+}
+
+async fn view(
+    State(store): State<Store>,
+    Path(id): Path<String>,
+    Query(q): Query<ViewQuery>,
+) -> Result<Json<Value>, ApiError> {
+    let held = store.get(game_id(&id)?).ok_or_else(|| not_found(&id))?;
+    let tiles = tiles_of(&q)?;
+    let s = held.lock();
+    Ok(Json(view_json(game_id(&id)?, &s, tiles, q.board != Some(0))?))
+}
+
+/// `POST /api/games/{id}/actions`: the person's move at decision `step`.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Move {
+    action: u32,
+    step: u64,
+}
+
+async fn act(State(store): State<Store>, Path(id): Path<String>, Json(m): Json<Move>) -> Result<Json<Value>, ApiError> {
+    let held = store.get(game_id(&id)?).ok_or_else(|| not_found(&id))?;
+    let body = {
+        let mut s = held.lock();
+        s.play(m.action, m.step).map_err(refusal)?;
+        view_json(game_id(&id)?, &s, TileMode::En, false)?
+    };
+    held.changed();
+    Ok(Json(body))
+}
+
+fn refusal(r: Refusal) -> ApiError {
+    match r {
+        Refusal::Stale(m) => ApiError(StatusCode::CONFLICT, m),
+        Refusal::Illegal(m) => unprocessable(m),
+    }
+}
+
+async fn next(State(store): State<Store>, Path(id): Path<String>) -> Result<Json<Value>, ApiError> {
+    let held = store.get(game_id(&id)?).ok_or_else(|| not_found(&id))?;
+    let body = {
+        let mut s = held.lock();
+        s.next_round().map_err(refusal)?;
+        view_json(game_id(&id)?, &s, TileMode::En, false)?
+    };
+    held.changed();
+    Ok(Json(body))
+}
+
+async fn remove(State(store): State<Store>, Path(id): Path<String>) -> Result<StatusCode, ApiError> {
+    if store.remove(game_id(&id)?) {
+        Ok(StatusCode::NO_CONTENT)
+    } else {
+        Err(not_found(&id))
+    }
+}
+
+/// Server-sent events: `data: <change count>` after every move; the page then reads the view.
+async fn events(
+    State(store): State<Store>,
+    Path(id): Path<String>,
+) -> Result<Sse<impl Stream<Item = Result<Event, Infallible>>>, ApiError> {
+    let held = store.get(game_id(&id)?).ok_or_else(|| not_found(&id))?;
+    let rx = held.subscribe();
+    drop(held);
+    let stream = futures_util::stream::unfold((rx, true), |(mut rx, first)| async move {
+        // The first event tells a new listener where the game is; a dropped game ends the stream.
+        if !first && rx.changed().await.is_err() {
+            return None;
+        }
+        let n = *rx.borrow_and_update();
+        Some((Ok(Event::default().event("change").data(n.to_string())), (rx, false)))
+    });
+    Ok(Sse::new(stream).keep_alive(KeepAlive::default()))
+}
+
+async fn log(State(store): State<Store>, Path(id): Path<String>) -> Result<Response, ApiError> {
+    let held = store.get(game_id(&id)?).ok_or_else(|| not_found(&id))?;
+    let s = held.lock();
+    let text = s.log().map_err(|m| ApiError(StatusCode::CONFLICT, m))?.to_string();
+    Ok((
+        [
+            (header::CONTENT_TYPE, "application/json"),
+            (
+                header::CONTENT_DISPOSITION,
+                "attachment; filename=\"rinshan-game.json\"",
+            ),
+        ],
+        text,
+    )
+        .into_response())
+}
+
+async fn tiles_sprite(Path(mode): Path<String>) -> Result<Response, ApiError> {
+    let mode = mode.trim_end_matches(".svg");
+    let mode: TileMode = mode
+        .parse()
+        .map_err(|e| ApiError(StatusCode::NOT_FOUND, format!("{e}")))?;
+    Ok((
+        [
+            (header::CONTENT_TYPE, "image/svg+xml"),
+            (header::CACHE_CONTROL, "max-age=3600"),
+        ],
+        sprite(mode),
+    )
+        .into_response())
+}
+
+/// The most rounds an uploaded log may have (a long half game has about 20).
+const MAX_REPLAY_ROUNDS: usize = 32;
+static REPLAYS: tokio::sync::Semaphore = tokio::sync::Semaphore::const_new(1);
+
+/// `POST /api/replay` with a tenhou.net/6 log as the body: the replay page of that game.
+async fn replay(body: String) -> Result<Response, ApiError> {
+    let game = rinshan_logs::tenhou::log::parse_game("upload", &body).map_err(unprocessable)?;
+    if game.rounds.is_empty() || game.rounds.len() > MAX_REPLAY_ROUNDS {
+        return Err(unprocessable(format!(
+            "the log has {} rounds: a game of 1 to {MAX_REPLAY_ROUNDS} is replayed",
+            game.rounds.len()
+        )));
+    }
+    // Drawing a game holds its frames in memory (a few tens of MB): one at a time.
+    let Ok(_permit) = REPLAYS.try_acquire() else {
+        return Err(ApiError(
+            StatusCode::SERVICE_UNAVAILABLE,
+            "another replay is being drawn: try again in a moment".into(),
+        ));
+    };
+    // Drawing every decision of a long game takes a while: keep it off the async threads.
+    let page = tokio::task::spawn_blocking(move || rinshan_render::html::replay_html(&game, 0))
+        .await
+        .map_err(|e| ApiError(StatusCode::INTERNAL_SERVER_ERROR, e.to_string()))?
+        .map_err(unprocessable)?;
+    Ok(([(header::CONTENT_TYPE, "text/html; charset=utf-8")], page).into_response())
+}

@@ -1,0 +1,510 @@
+//! One game on the web page: an env of one game, who plays each seat, the counter that makes a
+//! repeated click stale, and the picture of a round's end held until the player moves on. Pure
+//! and synchronous: the HTTP layer locks it, the driver task calls [`Session::agent_move`].
+
+use std::time::{Duration, Instant};
+
+use bytemuck::Zeroable as _;
+use serde::Serialize;
+
+use rinshan_engine::agents::Agent;
+use rinshan_engine::env::{events as ev, Config, Env, Mode};
+use rinshan_engine::generated::kernel::{self, GameState};
+use rinshan_engine::{Tile, Variant};
+use rinshan_logs::tenhou::write::Recorder;
+use rinshan_render::{Board, Options, RoundEndInput, TileMode};
+
+/// What a new game is: who sits where, and how fast the agents move.
+#[derive(Debug, Clone)]
+pub struct Setup {
+    /// The rules.
+    pub variant: Variant,
+    /// The game's length.
+    pub mode: Mode,
+    /// Each seat's agent; `None` = the person (at most one seat; none = spectating).
+    pub seats: [Option<Agent>; 4],
+    /// Seeds the walls.
+    pub seed: u64,
+    /// Pause before each agent's turn (its calls are decided at once: who may call is hidden);
+    /// a spectated game moves past a round's end after four times this and half a second.
+    pub delay: Duration,
+}
+
+/// Where a game stands, as the page shows it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Phase {
+    /// The person decides.
+    Human,
+    /// An agent decides (it moves after the delay).
+    Agent,
+    /// A round has ended: its result is shown until `next`.
+    Result,
+    /// The game has ended.
+    Over,
+}
+
+/// Why a request cannot change a game.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Refusal {
+    /// The game moved on since the page last saw it, or it is not the person's turn (409).
+    Stale(String),
+    /// The action is not legal here (422).
+    Illegal(String),
+}
+
+/// A legal action as a button or a clickable tile.
+#[derive(Debug, Clone, Serialize)]
+pub struct Choice {
+    /// The action id.
+    pub id: u32,
+    /// Its name in the variant's layout (`discard_5m`, `riichi`, `pass`).
+    pub name: String,
+    /// What a button says.
+    pub label: String,
+    /// For a discard: the tile (`5m`, `0m` for a red five), matching the board's `data-tile`.
+    pub tile: Option<String>,
+}
+
+/// One game in play.
+pub struct Session {
+    setup: Setup,
+    env: Env,
+    names: [String; 4],
+    /// Decisions played so far: a move must name the current count.
+    pub step: u64,
+    /// The board of the round that just ended, shown until the next round starts.
+    ended: Option<Board>,
+    recorder: Option<Recorder>,
+    log: Option<String>,
+    events: Vec<String>,
+    /// Entries of the round's public log already in `events`.
+    told: u32,
+    /// The pass action's id (claim prompts offer it).
+    pass: u32,
+    /// When a request or a move last touched the game.
+    pub touched: Instant,
+}
+
+fn err(e: impl std::fmt::Display) -> String {
+    e.to_string()
+}
+
+impl Session {
+    /// A new game, dealt.
+    pub fn new(setup: Setup) -> Result<Session, String> {
+        if setup.seats.iter().filter(|s| s.is_none()).count() > 1 {
+            return Err("at most one seat can be played by a person".into());
+        }
+        let mut env = Env::new(Config {
+            mode: setup.mode,
+            seed: setup.seed,
+            threads: Some(1),
+            ..Config::new(setup.variant, 1)
+        })
+        .map_err(err)?;
+        env.reset().map_err(err)?;
+        // Tenhou logs exist for red-rule east and half games only.
+        let logged = setup.variant == Variant::Red && setup.mode != Mode::Single;
+        let recorder = logged.then(|| Recorder::new(&env)).transpose().map_err(err)?;
+        let names: [String; 4] =
+            std::array::from_fn(|p| setup.seats[p].map_or_else(|| "You".to_string(), |a| format!("{a} {p}")));
+        let pass = rinshan_engine::env::action_names(setup.variant)
+            .iter()
+            .position(|n| n == "pass")
+            .ok_or("the variant has no pass action")? as u32;
+        let mut s = Session {
+            setup,
+            env,
+            names,
+            step: 0,
+            ended: None,
+            recorder,
+            log: None,
+            events: Vec::new(),
+            told: 0,
+            pass,
+            touched: Instant::now(),
+        };
+        if let Some(r) = &mut s.recorder {
+            r.set_names(s.names.clone());
+        }
+        s.events.push(format!("{} begins", rinshan_render::round_name(0)));
+        Ok(s)
+    }
+
+    /// The game's setup.
+    pub fn setup(&self) -> &Setup {
+        &self.setup
+    }
+
+    /// The seat the person plays.
+    pub fn human(&self) -> Option<u32> {
+        self.setup.seats.iter().position(Option::is_none).map(|p| p as u32)
+    }
+
+    fn current(&self) -> u32 {
+        self.env.last().current_player[0]
+    }
+
+    /// Where the game stands.
+    pub fn phase(&self) -> Phase {
+        if self.ended.as_ref().is_some_and(|b| !b.over) {
+            Phase::Result
+        } else if self.env.last().terminated[0] || self.ended.is_some() {
+            Phase::Over
+        } else if Some(self.current()) == self.human() {
+            Phase::Human
+        } else {
+            Phase::Agent
+        }
+    }
+
+    fn state(&self) -> Result<GameState, String> {
+        let mut states = self.env.game_states().map_err(err)?;
+        states.pop().ok_or_else(|| "the env holds no game".to_string())
+    }
+
+    /// The board as the person may see it (a spectator sees every hand).
+    pub fn board(&self) -> Result<Board, String> {
+        let mut board = match &self.ended {
+            Some(b) => b.clone(),
+            None => Board::from_state(&self.state()?),
+        };
+        board.names = self.names.clone();
+        Ok(board)
+    }
+
+    /// `board` (this game's [`Session::board`]) drawn for the page (faces from the page's sprite).
+    pub fn svg(&self, board: &Board, tiles: TileMode) -> String {
+        let opts = Options {
+            tiles,
+            pov: self.human().unwrap_or(0),
+            reveal: self.human().is_none() || self.phase() == Phase::Over,
+            defs: false,
+        };
+        rinshan_render::svg(board, &opts)
+    }
+
+    /// The person's legal actions (none when it is not their turn).
+    pub fn choices(&self) -> Vec<Choice> {
+        if self.phase() != Phase::Human {
+            return Vec::new();
+        }
+        let names = rinshan_engine::env::action_names(self.setup.variant);
+        let claim = self.board().ok().and_then(|b| b.claim);
+        self.env
+            .last()
+            .legal_actions(0)
+            .map(|id| {
+                let name = names
+                    .get(id as usize)
+                    .cloned()
+                    .unwrap_or_else(|| format!("action {id}"));
+                let tile = name.strip_prefix("discard_").map(str::to_string);
+                Choice {
+                    id,
+                    label: label(&name, claim),
+                    name,
+                    tile,
+                }
+            })
+            .collect()
+    }
+
+    /// The last lines of the game's story.
+    pub fn events(&self) -> &[String] {
+        let n = self.events.len();
+        &self.events[n.saturating_sub(12)..]
+    }
+
+    /// Names by seat.
+    pub fn names(&self) -> &[String; 4] {
+        &self.names
+    }
+
+    /// The game's Tenhou log, once it is over (red rules only).
+    pub fn log(&self) -> Result<&str, String> {
+        if self.recorder.is_none() {
+            return Err("Tenhou logs are written for red-rule east and half games only".into());
+        }
+        self.log
+            .as_deref()
+            .ok_or_else(|| "the log is ready when the game is over".to_string())
+    }
+
+    /// The person plays `action`, named at decision `step` of the game.
+    pub fn play(&mut self, action: u32, step: u64) -> Result<(), Refusal> {
+        if step != self.step {
+            return Err(Refusal::Stale(format!(
+                "the move was made at decision {step}, the game is at decision {}",
+                self.step
+            )));
+        }
+        if self.phase() != Phase::Human {
+            return Err(Refusal::Stale(
+                format!("it is not your turn ({:?})", self.phase()).to_lowercase(),
+            ));
+        }
+        if !self.env.last().legal_actions(0).any(|a| a == action) {
+            let names = rinshan_engine::env::action_names(self.setup.variant);
+            let what = names.get(action as usize).map_or_else(
+                || format!("action {action} does not exist"),
+                |n| format!("{n} ({action}) is not legal now"),
+            );
+            let legal: Vec<String> = self.choices().iter().map(|c| c.name.clone()).collect();
+            return Err(Refusal::Illegal(format!("{what}; legal: {}", legal.join(", "))));
+        }
+        self.apply(action).map_err(Refusal::Illegal)
+    }
+
+    /// The agent to move plays, if one is to move; `true` if it did.
+    pub fn agent_move(&mut self) -> Result<bool, String> {
+        if self.phase() != Phase::Agent {
+            return Ok(false);
+        }
+        let action = self.agent_action()?;
+        self.apply(action)?;
+        Ok(true)
+    }
+
+    fn agent_action(&mut self) -> Result<u32, String> {
+        let current = self.current() as usize;
+        let agent = self.setup.seats[current].ok_or("no agent sits there")?;
+        // Every seat gets the deciding seat's agent; only the current player's entry is read.
+        let action = self.env.agent_actions(&[[agent; 4]]).map_err(err)?;
+        Ok(action[0])
+    }
+
+    /// The current decision is a claim prompt (whether to call a discard or an added kan).
+    fn claim_prompt(&self) -> bool {
+        self.env.last().legal_actions(0).any(|a| a == self.pass)
+    }
+
+    /// Ends the game where it stands (the engine failed), telling the page why.
+    pub fn stop(&mut self, why: &str) {
+        self.events.push(format!("the game stopped: {why}"));
+        let mut board = self.board().unwrap_or_else(|_| Board::from_state(&GameState::zeroed()));
+        board.over = true;
+        self.ended = Some(board);
+    }
+
+    /// Leaves a round's result for the next round.
+    pub fn next_round(&mut self) -> Result<(), Refusal> {
+        if self.phase() != Phase::Result {
+            return Err(Refusal::Stale("no round result is waiting".into()));
+        }
+        self.ended = None;
+        self.step += 1;
+        let b = self.board().map_err(Refusal::Illegal)?;
+        self.events
+            .push(format!("{} begins", rinshan_render::round_name(b.round)));
+        Ok(())
+    }
+
+    /// Plays `action`, then every agent's claim prompt that follows at once: who may call a
+    /// discard is hidden information, so the page never sees an agent considering a call (no
+    /// delay, no `current`, no decision counted); it sees the call, if one is made, on the table.
+    fn apply(&mut self, action: u32) -> Result<(), String> {
+        self.step_once(action)?;
+        self.step += 1;
+        while self.phase() == Phase::Agent && self.claim_prompt() {
+            let a = self.agent_action()?;
+            self.step_once(a)?;
+        }
+        self.touched = Instant::now();
+        Ok(())
+    }
+
+    fn step_once(&mut self, action: u32) -> Result<(), String> {
+        let before = self.state()?;
+        let step = self.env.step(&[action]).map_err(err)?.clone();
+        if let Some(r) = &mut self.recorder {
+            r.observe(&self.env, &[action]).map_err(err)?;
+            if let Some(done) = r.take_finished().pop() {
+                self.log = Some(rinshan_logs::tenhou::write::game_text(&done.game));
+            }
+        }
+        let e = step.events[0];
+        if e & ev::ROUND_OVER == 0 {
+            self.tell(&self.state()?);
+        }
+        if e & ev::ROUND_OVER != 0 {
+            let table = self.env.tables().map_err(err)?.remove(0);
+            let end = RoundEndInput {
+                action,
+                step: &step,
+                env: 0,
+                table: &table,
+                variant: self.setup.variant,
+                uma: self.env.uma(),
+            };
+            let mut board = Board::round_end(&before, &end).ok_or("a round ended without a result")?;
+            board.names = self.names.clone();
+            let deltas: Vec<String> = board
+                .result
+                .iter()
+                .flat_map(|r| {
+                    r.deltas
+                        .iter()
+                        .enumerate()
+                        .map(|(p, d)| format!("{} {d:+}", self.names[p]))
+                })
+                .collect();
+            self.events.push(format!(
+                "{} ends: {}",
+                rinshan_render::round_name(board.round),
+                deltas.join(", ")
+            ));
+            self.ended = Some(board);
+            // The next round's record starts afresh.
+            self.told = 0;
+        }
+        if step.terminated[0] && self.ended.is_none() {
+            self.ended = Some(Board::from_state(&self.state()?));
+        }
+        Ok(())
+    }
+
+    /// Adds the table's new public events (discards, calls, kans, riichi) to the story: what every
+    /// seat saw, never a decision that changed nothing on the table.
+    fn tell(&mut self, state: &GameState) {
+        let mut s = *state;
+        let n = kernel::log_count(&mut s);
+        for i in self.told.min(n)..n {
+            let e = kernel::log_entry(&mut s, i);
+            let tile = u8::try_from(kernel::log_tile(e))
+                .ok()
+                .and_then(Tile::from_value)
+                .map_or_else(String::new, |t| spoken(&t.name()));
+            let what = match kernel::log_kind(e) {
+                kernel::EV_DISCARD if kernel::log_flags(e) & kernel::LOG_TSUMOGIRI != 0 => {
+                    format!("discards {tile} (just drawn)")
+                }
+                kernel::EV_DISCARD => format!("discards {tile}"),
+                kernel::EV_CHI => format!("chi {tile}"),
+                kernel::EV_PON => format!("pon {tile}"),
+                kernel::EV_OPEN_KAN => format!("kan {tile}"),
+                kernel::EV_CLOSED_KAN => format!("closed kan {tile}"),
+                kernel::EV_ADDED_KAN => format!("added kan {tile}"),
+                kernel::EV_RIICHI => "riichi".to_string(),
+                _ => continue,
+            };
+            let who = &self.names[kernel::log_actor(e) as usize];
+            self.events.push(format!("{who}: {what}"));
+        }
+        self.told = n;
+    }
+}
+
+/// A button's words for an action named `name` (chi says which run it makes with `claim`).
+pub fn label(name: &str, claim: Option<Tile>) -> String {
+    if let Some(t) = name.strip_prefix("discard_") {
+        return format!("Discard {}", spoken(t));
+    }
+    if let Some(t) = name.strip_prefix("self_kan_") {
+        return format!("Kan {}", spoken(t));
+    }
+    let run = |offsets: [i8; 3]| -> String {
+        let Some(t) = claim else { return String::new() };
+        let k = t.kind();
+        let (Some(n), Some(suit)) = (k.number(), k.name().chars().last()) else {
+            return String::new();
+        };
+        let digits: String = offsets.iter().map(|o| char::from(b'0' + (n as i8 + o) as u8)).collect();
+        format!(" {digits}{suit}")
+    };
+    let red = if name.ends_with("_red") { " (red 5)" } else { "" };
+    let base = name.trim_end_matches("_red");
+    match base {
+        "chi_left" => format!("Chi{}{red}", run([0, 1, 2])),
+        "chi_middle" => format!("Chi{}{red}", run([-1, 0, 1])),
+        "chi_right" => format!("Chi{}{red}", run([-2, -1, 0])),
+        "pon" => format!("Pon{}{red}", on(claim)),
+        "open_kan" => format!("Kan{}", on(claim)),
+        "tsumogiri" => "Discard drawn tile".into(),
+        "riichi" => "Riichi".into(),
+        "tsumo" => "Tsumo".into(),
+        "ron" => format!("Ron{}", on(claim)),
+        "pass" => "Pass".into(),
+        "kyuushu" => "Nine terminals (draw)".into(),
+        "dummy" => "Continue".into(),
+        other => other.replace('_', " "),
+    }
+}
+
+/// ` 7s`: the claimed tile, after a call's name.
+fn on(claim: Option<Tile>) -> String {
+    claim.map_or_else(String::new, |t| format!(" {}", spoken(&t.name())))
+}
+
+/// A tile name as the board's labels read: `E`, `Rd`, `red 5m`.
+fn spoken(name: &str) -> String {
+    match rinshan_engine::notation::parse_tile(name) {
+        Ok(t) if t.is_red() => format!("red {}", rinshan_render::tile_label(t)),
+        Ok(t) => rinshan_render::tile_label(t),
+        Err(_) => name.to_string(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn setup(seats: [Option<Agent>; 4]) -> Setup {
+        Setup {
+            variant: Variant::Red,
+            mode: Mode::East,
+            seats,
+            seed: 5,
+            delay: Duration::ZERO,
+        }
+    }
+
+    #[test]
+    fn a_stopped_game_is_over_and_says_why() {
+        let mut s =
+            Session::new(setup([None, Some(Agent::Rule), Some(Agent::Rule), Some(Agent::Rule)])).expect("a game");
+        s.stop("the device was lost");
+        assert_eq!(s.phase(), Phase::Over);
+        assert!(s.events().last().is_some_and(|e| e.contains("the device was lost")));
+        assert!(s.choices().is_empty());
+    }
+
+    #[test]
+    fn two_people_cannot_share_a_game() {
+        let e = Session::new(setup([None, None, Some(Agent::Rule), Some(Agent::Rule)])).err();
+        assert_eq!(e.as_deref(), Some("at most one seat can be played by a person"));
+    }
+
+    #[test]
+    fn buttons_name_the_tiles() {
+        let t = rinshan_engine::notation::parse_tile("4p").ok();
+        assert_eq!(label("chi_left", t), "Chi 456p");
+        assert_eq!(label("chi_middle_red", t), "Chi 345p (red 5)");
+        assert_eq!(label("chi_right", t), "Chi 234p");
+        assert_eq!(label("pon", rinshan_engine::notation::parse_tile("7z").ok()), "Pon Rd");
+        assert_eq!(label("discard_0s", None), "Discard red 5s");
+        assert_eq!(label("self_kan_1z", None), "Kan E");
+    }
+
+    #[test]
+    fn agents_decide_their_calls_out_of_sight() {
+        // Four agents, played to the end: the page never finds an agent at a claim prompt.
+        let mut s = Session::new(setup([Some(Agent::Rule); 4])).expect("a game");
+        let mut moves = 0;
+        while s.phase() != Phase::Over {
+            match s.phase() {
+                Phase::Agent => {
+                    assert!(!s.claim_prompt(), "an agent's claim prompt was left open");
+                    s.agent_move().expect("a move");
+                    moves += 1;
+                }
+                Phase::Result => s.next_round().expect("the next round"),
+                _ => unreachable!(),
+            }
+            assert!(moves < 20_000);
+        }
+        assert!(moves > 100 && u64::try_from(moves).is_ok_and(|m| s.step >= m));
+    }
+}
