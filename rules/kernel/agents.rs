@@ -13,9 +13,6 @@
 //   tenpai, discarding by danger (genbutsu, suji, kabe, visible honors, dora).
 
 
-// The random stream of an agent's choices: seeded per game, one stream per decision.
-const AGENT_STREAM: u32 = 0xa6000000;
-
 fn pl(o: ObsPlanes, row: u32, t: u32) -> u32 {
     let i: u32 = row * 34u32 + t;
     (o.planes[(i / 4u32) as usize] >> ((i % 4u32) * 8u32)) & 255u32
@@ -202,8 +199,8 @@ fn random_legal(mask: [u32; 3], seed: [u32; 2], nonce: u32) -> u32 {
     if n == 0u32 {
         return ACTION_PASS;
     }
-    let mut counter: u32 = 0u32;
-    let mut k: u32 = random_below(seed, AGENT_STREAM ^ nonce, &mut counter, n);
+    let mut rng: Rng = rng_new(seed, RNG_AGENT, nonce, 0u32);
+    let mut k: u32 = random_below(&mut rng, n);
     for a in 0u32..NUM_ACTIONS {
         if mask_has(mask, a) {
             if k == 0u32 {
@@ -340,8 +337,8 @@ pub fn agent_act(agent: u32, o: ObsPlanes, mask: [u32; 3], seed: [u32; 2], nonce
         if !fold && can_pon && target < 34u32 && pl(o, P_YAKUHAI, target) > 0u32 {
             let mut take: bool = agent == AGENT_RULE;
             if agent == AGENT_RULE {
-                let mut counter: u32 = 0u32;
-                take = random_below(seed, AGENT_STREAM ^ nonce, &mut counter, 10u32) < 7u32;
+                let mut rng: Rng = rng_new(seed, RNG_AGENT, nonce, 0u32);
+                take = random_below(&mut rng, 10u32) < 7u32;
             } else if pon_keeps_shanten(hand, target) {
                 take = true;
             }

@@ -63,8 +63,9 @@ fn empty_state() -> GameState {
     }
 }
 
-// The 136 tiles in a uniformly random order (Fisher-Yates over the counter-based stream).
-fn shuffled_wall(seed: [u32; 2], stream: u32) -> [u32; 136] {
+// The 136 tiles in a uniformly random order (Fisher-Yates over the wall stream of the game's
+// round).
+pub fn shuffled_wall(seed: [u32; 2], game: u32, round: u32) -> [u32; 136] {
     let mut w: [u32; 136] = [0u32; 136];
     for i in 0u32..136u32 {
         let t: u32 = i / 4u32;
@@ -74,10 +75,10 @@ fn shuffled_wall(seed: [u32; 2], stream: u32) -> [u32; 136] {
         }
         w[i as usize] = v;
     }
-    let mut counter: u32 = 0u32;
+    let mut rng: Rng = rng_new(seed, RNG_WALL, game, round);
     let mut i: u32 = 135u32;
     while i > 0u32 {
-        let j: u32 = random_below(seed, stream, &mut counter, i + 1u32);
+        let j: u32 = random_below(&mut rng, i + 1u32);
         let x: u32 = w[i as usize];
         w[i as usize] = w[j as usize];
         w[j as usize] = x;
@@ -275,6 +276,6 @@ fn end_round(s: &mut GameState, flags: u32) {
         s.round += 1u32;
         s.dealer = (s.dealer + 1u32) % 4u32;
     }
-    let wall: [u32; 136] = shuffled_wall(s.seed, (s.games << 8u32) | (s.rounds & 255u32));
+    let wall: [u32; 136] = shuffled_wall(s.seed, s.games, s.rounds);
     start_round(s, wall);
 }

@@ -68,8 +68,8 @@ fn first_dealer(seed: [u32; 2], games: u32, requested: u32) -> u32 {
     if requested < 4u32 {
         return requested;
     }
-    let mut counter: u32 = 0u32;
-    random_below(seed, 0xff000000u32 | games, &mut counter, 4u32)
+    let mut rng: Rng = rng_new(seed, RNG_DEALER, games, 0u32);
+    random_below(&mut rng, 4u32)
 }
 
 pub fn game_new(inp: ResetInput) -> GameState {
@@ -82,7 +82,7 @@ pub fn game_new(inp: ResetInput) -> GameState {
     let dealer: u32 = first_dealer(inp.seed, 0u32, inp.dealer);
     let mut wall: [u32; 136] = inp.wall;
     if inp.use_wall == 0u32 {
-        wall = shuffled_wall(inp.seed, 0u32);
+        wall = shuffled_wall(inp.seed, 0u32, 0u32);
     }
     begin_game(&mut s, dealer, wall);
     s.mask = compute_mask(&mut s);
@@ -130,7 +130,7 @@ pub fn game_step(s: &mut GameState, action: u32) {
         // Pgx-style auto-reset: the next game starts in this step; the view still reports the end.
         s.games += 1u32;
         let dealer: u32 = first_dealer(s.seed, s.games, 4u32);
-        let wall: [u32; 136] = shuffled_wall(s.seed, s.games << 8u32);
+        let wall: [u32; 136] = shuffled_wall(s.seed, s.games, 0u32);
         let finished_rounds: u32 = s.rounds;
         begin_game(s, dealer, wall);
         s.terminated = 1u32;

@@ -209,7 +209,7 @@ fn main() {
     write(&out.join("generated.rs"), modules);
 
     // Included at the crate root before the modules that use it (textual macro scope).
-    let mut dispatch = String::from("/// Runs `$body` with `$m` bound to the generated module of variant `$v`.\nmacro_rules! with_variant {\n    ($v:expr, $m:ident => $body:expr) => {\n        match $v {\n");
+    let mut dispatch = String::from("/// Runs `$body` with `$m` bound to the generated module of variant `$v` (exported: the\n/// crates that play the kernels directly, as the soak, dispatch on the variant the same way).\n#[macro_export]\nmacro_rules! with_variant {\n    ($v:expr, $m:ident => $body:expr) => {\n        match $v {\n");
     for v in &variants {
         let _ = writeln!(
             dispatch,

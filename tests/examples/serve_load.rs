@@ -31,7 +31,7 @@ async fn call(http: &Http, method: &str, url: &str, body: Option<Value>) -> (u16
 }
 
 /// One person's session: returns the latencies of the agents' answers, in microseconds.
-async fn person(http: Http, base: String, seed: u64, until: Instant) -> (Vec<u64>, u64) {
+async fn person(http: Http, base: String, until: Instant) -> (Vec<u64>, u64) {
     let mut latencies = Vec::new();
     let mut requests = 0u64;
     'games: while Instant::now() < until {
@@ -39,7 +39,7 @@ async fn person(http: Http, base: String, seed: u64, until: Instant) -> (Vec<u64
             &http,
             "POST",
             &format!("{base}/api/games"),
-            Some(json!({"seat": 0, "agents": ["rule", "rule", "rule"], "seed": seed, "delay_ms": 0})),
+            Some(json!({"seat": 0, "agents": ["rule", "rule", "rule"], "delay_ms": 0})),
         )
         .await;
         requests += 1;
@@ -105,8 +105,10 @@ fn main() {
     rt.block_on(async move {
         let listener = tokio::net::TcpListener::bind("127.0.0.1:0").await.expect("a port");
         let base = format!("http://{}", listener.local_addr().expect("an address"));
+        // Every person here is one client (localhost): the per-client cap is the server's.
         let limits = Limits {
             max_games: people as usize + 16,
+            games_per_client: people as usize + 16,
             ..Limits::default()
         };
         tokio::spawn(async move { axum::serve(listener, app(limits)).await });
@@ -116,7 +118,7 @@ fn main() {
         let until = Instant::now() + Duration::from_secs(seconds);
         let started = Instant::now();
         let tasks: Vec<_> = (0..people)
-            .map(|i| tokio::spawn(person(http.clone(), base.clone(), i, until)))
+            .map(|_| tokio::spawn(person(http.clone(), base.clone(), until)))
             .collect();
         let mut all = Vec::new();
         let mut requests = 0;

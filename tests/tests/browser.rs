@@ -46,7 +46,13 @@ fn shots() -> PathBuf {
 async fn start(chromium: &Path, driver: &Path) -> (Client, Driver, String) {
     let listener = tokio::net::TcpListener::bind("127.0.0.1:0").await.expect("a port");
     let addr = listener.local_addr().expect("an address");
-    tokio::spawn(async move { axum::serve(listener, app(Limits::default())).await });
+    // The person's game repeats run to run: the server deals every game from one seed (a
+    // person cannot choose one).
+    let limits = Limits {
+        fixed_seed: Some(7),
+        ..Limits::default()
+    };
+    tokio::spawn(async move { axum::serve(listener, app(limits)).await });
     let port = std::net::TcpListener::bind("127.0.0.1:0")
         .and_then(|l| l.local_addr())
         .expect("a free port")
@@ -150,14 +156,18 @@ async fn play_a_round(c: &Client, base: &str) {
     let c = c.clone();
     c.goto(&format!("{base}/")).await.expect("the page opens");
     until(&c, "return document.body.dataset.ready === '1'", 20).await;
-    js(
+    let no_seed_box = js(
         &c,
         "document.querySelector('[name=mode]').value = 'single';
          document.querySelector('[name=delay]').value = '0';
-         document.querySelector('[name=seed]').value = '7';
-         return true;",
+         return !document.querySelector('[name=seed]');",
     )
     .await;
+    assert_eq!(
+        no_seed_box,
+        Value::Bool(true),
+        "a person cannot choose their game's seed"
+    );
     c.find(Locator::Id("start"))
         .await
         .expect("a start button")

@@ -8,10 +8,10 @@
 //!   observer with its tile).
 
 use rinshan_engine::generated::kernel::{
-    self, GameState, ObsAnalysis, ObsPlanes, ObsTokens, ResetInput, MODE_HALF, OBSERVE_CURRENT, SEAT_FURITEN_RIICHI,
-    SEAT_FURITEN_TEMP, WALL_DORA, WALL_LIVE_END, WALL_LIVE_START, WALL_RINSHAN, WALL_URA,
+    self, GameState, ObsAnalysis, ObsPlanes, ObsTokens, ResetInput, MODE_HALF, OBSERVE_CURRENT,
 };
 use rinshan_engine::generated::{no_red, red};
+use rinshan_engine::observe::{resample_hidden, OwnDraws};
 use rinshan_engine::random::Rng;
 use rinshan_engine::Variant;
 
@@ -65,136 +65,6 @@ fn both(k: &Kernels, s: &GameState, seat: u32) -> (Vec<u32>, Vec<u32>) {
     (bytemuck::cast_slice(&[(k.planes)(*s, seat)]).to_vec(), tokens)
 }
 
-fn wall_set(s: &mut GameState, i: u32, v: u32) {
-    let w = &mut s.wall[(i / 4) as usize];
-    *w = (*w & !(255 << ((i % 4) * 8))) | (v << ((i % 4) * 8));
-}
-
-/// The wall positions the observer drew from this round, kept up to date step by step from the
-/// engine's counters (not from the event log under test).
-#[derive(Default)]
-struct OwnDraws {
-    round_key: Option<(u32, u32, u32)>,
-    positions: Vec<u32>,
-}
-
-impl OwnDraws {
-    fn update(&mut self, before: &GameState, after: &mut GameState, observer: u32) {
-        let key = Some((after.games, after.rounds, after.round * 64 + after.honba));
-        let drew_now = after.drawn != kernel::NO_TILE_VALUE && after.current == observer;
-        if key != self.round_key || after.next_draw < before.next_draw {
-            self.round_key = key;
-            self.positions.clear();
-            if after.dealer == observer {
-                self.positions.push(WALL_LIVE_START);
-            }
-            return;
-        }
-        if after.next_draw == before.next_draw + 1 && drew_now {
-            self.positions.push(after.next_draw - 1);
-        }
-        if after.kans == before.kans + 1 && drew_now && after.rinshan == 1 {
-            self.positions.push(WALL_RINSHAN + after.kans - 1);
-        }
-    }
-}
-
-/// A copy of `s` in which everything `observer` cannot see is reshuffled or scrambled.
-fn resample(s: &GameState, observer: u32, own_draws: &[u32], rng: &mut Rng) -> GameState {
-    let mut r = *s;
-    let mut pool: Vec<u32> = Vec::new();
-    let mut hidden_positions: Vec<u32> = Vec::new();
-    for i in s.next_draw..WALL_LIVE_END {
-        hidden_positions.push(i);
-    }
-    for i in WALL_DORA + s.dora_revealed..WALL_DORA + 5 {
-        hidden_positions.push(i);
-    }
-    for i in WALL_URA..WALL_URA + 5 {
-        hidden_positions.push(i);
-    }
-    for i in WALL_RINSHAN + s.kans..WALL_RINSHAN + 4 {
-        hidden_positions.push(i);
-    }
-    for &i in &hidden_positions {
-        pool.push(kernel::wall_tile(&mut r, i));
-    }
-    let mut sizes = [0usize; 4];
-    for q in (0..4).filter(|&q| q != observer) {
-        let counts = kernel::hand_counts(&mut r, q);
-        for t in 0..34u32 {
-            let mut n = counts[t as usize];
-            if t < 27 && t % 9 == 4 && kernel::holds_red(&mut r, q, t / 9) {
-                pool.push(34 + t / 9);
-                n -= 1;
-            }
-            for _ in 0..n {
-                pool.push(t);
-            }
-            sizes[q as usize] += counts[t as usize] as usize;
-        }
-    }
-    for i in (1..pool.len()).rev() {
-        pool.swap(i, rng.below(i as u32 + 1) as usize);
-    }
-    let mut next = pool.into_iter();
-    for &i in &hidden_positions {
-        wall_set(&mut r, i, next.next().expect("pool"));
-    }
-    for q in (0..4).filter(|&q| q != observer) {
-        for w in 0..5 {
-            r.hands[(q * 5 + w) as usize] = 0;
-        }
-        r.red &= !(7 << (q * 3));
-        let mut given = Vec::new();
-        for _ in 0..sizes[q as usize] {
-            let v = next.next().expect("pool");
-            let t = kernel::value_type(v);
-            r.hands[(q * 5 + t / 8) as usize] += 1 << ((t % 8) * 4);
-            if v >= 34 {
-                r.red |= 1 << (q * 3 + v - 34);
-            }
-            given.push(v);
-        }
-        if s.current == q && s.drawn != kernel::NO_TILE_VALUE && !given.is_empty() {
-            r.drawn = given[rng.below(given.len() as u32) as usize];
-        }
-        // Waits, furiten and claim prompts of another seat follow from its hand.
-        r.waits[(q * 2) as usize] = rng.next_u64() as u32;
-        r.waits[(q * 2 + 1) as usize] = (rng.next_u64() as u32) & 3;
-        r.seat_flags[q as usize] ^= (SEAT_FURITEN_TEMP | SEAT_FURITEN_RIICHI) & rng.next_u64() as u32;
-        r.claim_options[q as usize] = (rng.next_u64() as u32) & 1023;
-        r.claim_choices[q as usize] = rng.below(256);
-    }
-    // Tiles that left the wall into other hands: their positions tell nothing now.
-    let dealt_by = |i: u32| (s.dealer + i / 13) % 4;
-    for i in 0..WALL_LIVE_START {
-        if dealt_by(i) != observer {
-            wall_set(&mut r, i, rng.below(37));
-        }
-    }
-    for i in WALL_LIVE_START..s.next_draw {
-        if !own_draws.contains(&i) {
-            wall_set(&mut r, i, rng.below(37));
-        }
-    }
-    for i in WALL_RINSHAN..WALL_RINSHAN + s.kans {
-        if !own_draws.contains(&i) {
-            wall_set(&mut r, i, rng.below(37));
-        }
-    }
-    if s.current != observer {
-        r.mask = [
-            (rng.next_u64() as u32),
-            (rng.next_u64() as u32),
-            (rng.next_u64() as u32),
-        ];
-    }
-    r.seed = [(rng.next_u64() as u32), (rng.next_u64() as u32)];
-    r.steps = rng.next_u64() as u32;
-    r
-}
-
 fn hidden_resampling(k: Kernels) {
     let variant = k.variant;
     let mut rng = Rng::new(77);
@@ -210,7 +80,7 @@ fn hidden_resampling(k: Kernels) {
         while s.terminated == 0 {
             let observer = rng.below(4);
             let (p, t) = both(&k, &s, observer);
-            let r = resample(&s, observer, &draws[observer as usize].positions, &mut rng);
+            let r = resample_hidden(&s, observer, &draws[observer as usize].positions, &mut rng);
             let (rp, rt) = both(&k, &r, observer);
             assert!(
                 p == rp,

@@ -1,10 +1,14 @@
-//! The web server in process (no socket): every refusal has its status and a message, nothing
-//! answers 5xx to anything a visitor sends, and a whole game played through the API ends with a
-//! Tenhou log that replays through the engine exactly.
+//! The web server in process (no socket): every refusal has its status and a JSON message, nothing
+//! answers 5xx to anything a visitor sends, a whole game played through the API ends with a
+//! Tenhou log that replays through the engine exactly and is kept in the data directory, a person
+//! never chooses their game's seed, and no client can hold the server (games and event streams per
+//! client, idle and total time). Over a real socket: the header read timeout and the connection cap.
 
-use std::time::Duration;
+use std::net::SocketAddr;
+use std::time::{Duration, Instant};
 
 use axum::body::Body;
+use axum::extract::ConnectInfo;
 use axum::http::{Method, Request, StatusCode};
 use axum::Router;
 use rinshan_serve::{app, Limits};
@@ -12,7 +16,20 @@ use serde_json::{json, Value};
 use tower::ServiceExt;
 
 async fn send(app: &Router, method: Method, uri: &str, body: Option<&str>, json_type: bool) -> (StatusCode, String) {
-    let mut req = Request::builder().method(method).uri(uri);
+    send_from(app, "127.0.0.1:1", method, uri, body, json_type).await
+}
+
+/// As [`send`], from the client at `from` (what the listener tells the app).
+async fn send_from(
+    app: &Router,
+    from: &str,
+    method: Method,
+    uri: &str,
+    body: Option<&str>,
+    json_type: bool,
+) -> (StatusCode, String) {
+    let from: SocketAddr = from.parse().expect("an address");
+    let mut req = Request::builder().method(method).uri(uri).extension(ConnectInfo(from));
     if json_type {
         req = req.header("content-type", "application/json");
     }
@@ -59,12 +76,21 @@ async fn settled(app: &Router, id: &str) -> Value {
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn a_whole_game_through_the_api_replays_from_its_log() {
-    let app = app(Limits::default());
+    let data = std::env::temp_dir().join(format!("rinshan-serve-data-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&data);
+    let limits = Limits {
+        data_dir: Some(data.clone()),
+        fixed_seed: Some(11),
+        ..Limits::default()
+    };
+    let app = app(limits.clone());
     let v = new_game(
         &app,
-        json!({"mode": "east", "seat": 2, "agents": ["rule", "greedy", "defensive"], "seed": 11, "delay_ms": 0}),
+        json!({"mode": "east", "seat": 2, "agents": ["rule", "greedy", "defensive"], "delay_ms": 0}),
     )
     .await;
+    // A game with a person shows no seed while it runs.
+    assert_eq!(v["seed"], Value::Null, "{v}");
     let id = v["id"].as_str().expect("an id").to_string();
     let (mut moves, mut rounds) = (0, 0);
     let last = loop {
@@ -114,6 +140,8 @@ async fn a_whole_game_through_the_api_replays_from_its_log() {
             other => panic!("phase {other:?}"),
         }
     };
+    // Over, the game shows the seed it was dealt from, as a string.
+    assert_eq!(last["seed"], "11", "{last}");
     assert!(moves > 20 && rounds >= 3, "{moves} moves, {rounds} rounds");
     let r = &last["result"];
     let scores: Vec<i64> = r["final_scores"]
@@ -142,6 +170,33 @@ async fn a_whole_game_through_the_api_replays_from_its_log() {
     let (status, page) = send(&app, Method::POST, "/api/replay", Some(&text), false).await;
     assert_eq!(status, StatusCode::OK);
     assert!(page.starts_with("<!doctype html>") && page.contains("DecompressionStream"));
+    // The finished game was written to the data directory; a restarted server lists it too.
+    let deadline = Instant::now() + Duration::from_secs(20);
+    let saved = loop {
+        let (status, list) = get(&app, "/api/saved").await;
+        assert_eq!(status, StatusCode::OK, "{list}");
+        let games = parsed(&list)["games"].as_array().cloned().unwrap_or_default();
+        if let Some(g) = games.first() {
+            assert_eq!(games.len(), 1, "{list}");
+            break g["name"].as_str().expect("a name").to_string();
+        }
+        assert!(Instant::now() < deadline, "the game was not saved");
+        tokio::time::sleep(Duration::from_millis(20)).await;
+    };
+    let restarted = rinshan_serve::app(limits);
+    for server in [&app, &restarted] {
+        let (status, kept) = get(server, &format!("/api/saved/{saved}")).await;
+        assert_eq!((status, kept.as_str()), (StatusCode::OK, text.as_str()));
+        let (status, page) = get(server, &format!("/api/saved/{saved}/replay")).await;
+        assert_eq!(status, StatusCode::OK);
+        assert!(page.starts_with("<!doctype html>"));
+    }
+    for bad in ["..%2F..%2FCargo.toml", "1-2.json", "x"] {
+        let (status, text) = get(&restarted, &format!("/api/saved/{bad}")).await;
+        assert_eq!(status, StatusCode::NOT_FOUND, "{bad}: {text}");
+        assert!(parsed(&text)["error"].is_string(), "{text}");
+    }
+    let _ = std::fs::remove_dir_all(&data);
     let (status, _) = send(&app, Method::DELETE, &format!("/api/games/{id}"), None, false).await;
     assert_eq!(status, StatusCode::NO_CONTENT);
     let (status, _) = get(&app, &format!("/api/games/{id}")).await;
@@ -153,6 +208,8 @@ async fn every_refusal_has_its_status_and_a_message() {
     let app = app(Limits {
         max_games: 3,
         idle: Duration::from_secs(600),
+        fixed_seed: Some(1),
+        ..Limits::default()
     });
     let error = |text: &str| parsed(text)["error"].as_str().map(str::to_string).unwrap_or_default();
     // Bad setups: 422 with what is wrong.
@@ -180,25 +237,45 @@ async fn every_refusal_has_its_status_and_a_message() {
         assert_eq!(status, StatusCode::UNPROCESSABLE_ENTITY, "{body}: {text}");
         assert!(error(&text).contains(words), "{body}: {text}");
     }
-    // Malformed bodies, from axum's extractors.
-    let (status, _) = send(&app, Method::POST, "/api/games", Some("{not json"), true).await;
-    assert_eq!(status, StatusCode::BAD_REQUEST);
-    let (status, _) = send(&app, Method::POST, "/api/games", Some("{}"), false).await;
-    assert_eq!(status, StatusCode::UNSUPPORTED_MEDIA_TYPE);
-    let (status, _) = send(&app, Method::POST, "/api/games", Some(r#"{"agents": 3}"#), true).await;
-    assert_eq!(status, StatusCode::UNPROCESSABLE_ENTITY);
-    let (status, _) = send(
-        &app,
-        Method::POST,
-        "/api/games",
-        Some(r#"{"agents": [], "extra": 1}"#),
-        true,
-    )
-    .await;
-    assert_eq!(status, StatusCode::UNPROCESSABLE_ENTITY);
+    // Malformed bodies, rejected by axum's extractors, answered in JSON like everything else.
     let big = format!(r#"{{"agents": ["{}"]}}"#, "r".repeat(64 * 1024));
-    let (status, _) = send(&app, Method::POST, "/api/games", Some(&big), true).await;
-    assert_eq!(status, StatusCode::PAYLOAD_TOO_LARGE);
+    for (body, json_type, want) in [
+        ("{not json", true, StatusCode::BAD_REQUEST),
+        ("{}", false, StatusCode::UNSUPPORTED_MEDIA_TYPE),
+        (r#"{"agents": 3}"#, true, StatusCode::UNPROCESSABLE_ENTITY),
+        (r#"{"agents": [], "extra": 1}"#, true, StatusCode::UNPROCESSABLE_ENTITY),
+        // A seed is a string: a JSON number would lose digits in a JavaScript client.
+        (
+            r#"{"agents": ["rule","rule","rule","rule"], "seed": 5}"#,
+            true,
+            StatusCode::UNPROCESSABLE_ENTITY,
+        ),
+        (&big, true, StatusCode::PAYLOAD_TOO_LARGE),
+    ] {
+        let (status, text) = send(&app, Method::POST, "/api/games", Some(body), json_type).await;
+        assert_eq!(status, want, "{body:.60}: {text}");
+        assert!(!error(&text).is_empty(), "{body:.60}: not JSON: {text}");
+    }
+    for (body, words) in [
+        (
+            json!({"seat": 0, "agents": ["rule", "rule", "rule"], "seed": "5"}),
+            "takes no seed",
+        ),
+        (
+            json!({"agents": ["rule", "rule", "rule", "rule"], "seed": "five"}),
+            "a whole number",
+        ),
+        (
+            json!({"agents": ["rule", "rule", "rule", "rule"], "seed": "18446744073709551616"}),
+            "a whole number",
+        ),
+    ] {
+        let (status, text) = post(&app, "/api/games", &body).await;
+        assert_eq!(status, StatusCode::UNPROCESSABLE_ENTITY, "{body}: {text}");
+        assert!(error(&text).contains(words), "{body}: {text}");
+    }
+    let (status, text) = send(&app, Method::POST, "/api/replay", Some("\u{ff}"), false).await;
+    assert!(status.is_client_error() && !error(&text).is_empty(), "{status}: {text}");
     // Unknown games and routes.
     for uri in [
         "/api/games/123",
@@ -213,16 +290,23 @@ async fn every_refusal_has_its_status_and_a_message() {
     }
     let (status, _) = post(&app, "/api/games/123/actions", &json!({"action": 0, "step": 0})).await;
     assert_eq!(status, StatusCode::NOT_FOUND);
-    let (status, _) = send(&app, Method::PUT, "/api/games", Some("{}"), true).await;
+    let (status, text) = send(&app, Method::PUT, "/api/games", Some("{}"), true).await;
     assert_eq!(status, StatusCode::METHOD_NOT_ALLOWED);
+    assert!(!error(&text).is_empty(), "{text}");
+    let (status, text) = get(&app, "/api/games/1?board=x").await;
+    assert_eq!(status, StatusCode::BAD_REQUEST);
+    assert!(!error(&text).is_empty(), "{text}");
     // A game where the agents never move (10 s each): seat 3 waits for the dealer.
     let v = new_game(
         &app,
-        json!({"mode": "east", "seat": 3, "agents": ["rule", "rule", "rule"], "seed": 1, "delay_ms": 10000}),
+        json!({"mode": "east", "seat": 3, "agents": ["rule", "rule", "rule"], "delay_ms": 10000}),
     )
     .await;
     let slow = v["id"].as_str().expect("an id").to_string();
-    assert_eq!(v["phase"], "agent");
+    assert_eq!(
+        v["phase"], "agent",
+        "the server's seed 1 deals seat 3 no first turn: {v}"
+    );
     let (status, text) = post(
         &app,
         &format!("/api/games/{slow}/actions"),
@@ -245,7 +329,7 @@ async fn every_refusal_has_its_status_and_a_message() {
     // A game where the person moves first (the dealer's seat 0): illegal and stale moves.
     let v = new_game(
         &app,
-        json!({"mode": "single", "seat": 0, "agents": ["rule", "rule", "rule"], "seed": 1, "delay_ms": 0}),
+        json!({"mode": "single", "seat": 0, "agents": ["rule", "rule", "rule"], "delay_ms": 0}),
     )
     .await;
     let id = v["id"].as_str().expect("an id").to_string();
@@ -343,6 +427,7 @@ async fn idle_games_are_dropped() {
     let app = app(Limits {
         max_games: 1,
         idle: Duration::from_millis(200),
+        ..Limits::default()
     });
     new_game(
         &app,
@@ -364,7 +449,7 @@ async fn no_request_gets_a_server_error() {
     let app = app(Limits::default());
     let v = new_game(
         &app,
-        json!({"mode": "single", "seat": 0, "agents": ["random", "random", "random"], "seed": 3, "delay_ms": 0}),
+        json!({"mode": "single", "seat": 0, "agents": ["random", "random", "random"], "delay_ms": 0}),
     )
     .await;
     let id = v["id"].as_str().expect("an id").to_string();
@@ -397,9 +482,9 @@ async fn no_request_gets_a_server_error() {
         r#"{"action": -1, "step": 0}"#,
         r#"{"action": 4294967295, "step": 18446744073709551615}"#,
         r#"{"action": 1.5, "step": "x"}"#,
-        r#"{"seat": null, "agents": ["rule","rule","rule","rule"], "seed": -4}"#,
+        r#"{"seat": null, "agents": ["rule","rule","rule","rule"], "seed": "-4"}"#,
         "\u{0}\u{1}garbage",
-        r#"{"mode": "single", "agents": ["rule","rule","rule","rule"], "delay_ms": 0, "seed": 18446744073709551615}"#,
+        r#"{"mode": "single", "agents": ["rule","rule","rule","rule"], "delay_ms": 0, "seed": "18446744073709551615"}"#,
     ];
     let methods = [Method::GET, Method::POST, Method::DELETE, Method::PATCH];
     for _ in 0..300 {
@@ -409,4 +494,171 @@ async fn no_request_gets_a_server_error() {
         let (status, text) = send(&app, method.clone(), path, Some(body), next() % 2 == 0).await;
         assert!(!status.is_server_error(), "{method} {path} {body:?}: {status} {text}");
     }
+}
+
+/// Finding 3 of the audit: slow spectated games, their agents moving, held a `--max-games 5`
+/// server for minutes. Now one client gets at most its share, the agents' moves keep no game
+/// alive, and no game outlives the longest game.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn one_client_cannot_hold_the_server() {
+    let app = app(Limits {
+        max_games: 5,
+        games_per_client: 2,
+        idle: Duration::from_millis(400),
+        ..Limits::default()
+    });
+    let spectate = json!({"agents": ["rule", "rule", "rule", "rule"], "delay_ms": 20}).to_string();
+    let create = |from: &'static str| {
+        let app = app.clone();
+        let body = spectate.clone();
+        async move { send_from(&app, from, Method::POST, "/api/games", Some(&body), true).await }
+    };
+    for _ in 0..2 {
+        let (status, text) = create("10.0.0.1:5000").await;
+        assert_eq!(status, StatusCode::CREATED, "{text}");
+    }
+    // The same client from another port is the same client.
+    let (status, text) = create("10.0.0.1:6000").await;
+    assert_eq!(status, StatusCode::TOO_MANY_REQUESTS, "{text}");
+    assert!(
+        parsed(&text)["error"].as_str().is_some_and(|e| e.contains("2 games")),
+        "{text}"
+    );
+    // Everyone else still gets games.
+    let (status, text) = create("10.0.0.2:5000").await;
+    assert_eq!(status, StatusCode::CREATED, "{text}");
+    let watched = parsed(&text)["id"].as_str().expect("an id").to_string();
+    // Nobody asks about the first client's games while their agents play on: they are dropped
+    // once idle, and the client may start new ones.
+    let deadline = Instant::now() + Duration::from_secs(10);
+    loop {
+        // The second client keeps watching its game: its requests keep it.
+        let (status, _) = send_from(
+            &app,
+            "10.0.0.2:5000",
+            Method::GET,
+            &format!("/api/games/{watched}?board=0"),
+            None,
+            false,
+        )
+        .await;
+        assert_eq!(status, StatusCode::OK, "a watched game is kept");
+        let (status, _) = create("10.0.0.1:5000").await;
+        if status == StatusCode::CREATED {
+            break;
+        }
+        assert_eq!(status, StatusCode::TOO_MANY_REQUESTS);
+        assert!(Instant::now() < deadline, "the idle games were never dropped");
+        tokio::time::sleep(Duration::from_millis(100)).await;
+    }
+
+    // A game watched all along still ends at the longest game's time.
+    let app = rinshan_serve::app(Limits {
+        max_duration: Duration::from_millis(500),
+        ..Limits::default()
+    });
+    let v = new_game(
+        &app,
+        json!({"agents": ["rule", "rule", "rule", "rule"], "delay_ms": 20}),
+    )
+    .await;
+    let id = v["id"].as_str().expect("an id").to_string();
+    let deadline = Instant::now() + Duration::from_secs(10);
+    loop {
+        // A new game's creation sweeps the store.
+        new_game(
+            &app,
+            json!({"agents": ["rule", "rule", "rule", "rule"], "delay_ms": 10000}),
+        )
+        .await;
+        let (status, _) = get(&app, &format!("/api/games/{id}?board=0")).await;
+        if status == StatusCode::NOT_FOUND {
+            break;
+        }
+        assert!(Instant::now() < deadline, "the game outlived its longest time");
+        tokio::time::sleep(Duration::from_millis(100)).await;
+    }
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn event_streams_are_counted_per_client() {
+    let app = app(Limits {
+        streams_per_client: 2,
+        ..Limits::default()
+    });
+    let v = new_game(
+        &app,
+        json!({"agents": ["rule", "rule", "rule", "rule"], "delay_ms": 10000}),
+    )
+    .await;
+    let uri = format!("/api/games/{}/events", v["id"].as_str().expect("an id"));
+    let open = |from: &str| {
+        let req = Request::builder()
+            .uri(&uri)
+            .extension(ConnectInfo(from.parse::<SocketAddr>().expect("an address")))
+            .body(Body::empty())
+            .expect("a request");
+        app.clone().oneshot(req)
+    };
+    let first = open("10.0.0.1:1").await.expect("an answer");
+    let second = open("10.0.0.1:2").await.expect("an answer");
+    assert_eq!((first.status(), second.status()), (StatusCode::OK, StatusCode::OK));
+    let third = open("10.0.0.1:3").await.expect("an answer");
+    assert_eq!(third.status(), StatusCode::TOO_MANY_REQUESTS);
+    let body = axum::body::to_bytes(third.into_body(), 1 << 16).await.expect("a body");
+    assert!(String::from_utf8_lossy(&body).contains("event streams"));
+    // Another client is not affected; a closed stream frees its place.
+    assert_eq!(open("10.0.0.9:1").await.expect("an answer").status(), StatusCode::OK);
+    drop(first);
+    assert_eq!(open("10.0.0.1:4").await.expect("an answer").status(), StatusCode::OK);
+}
+
+/// Over a real socket: a connection that sends no request is closed once the header timeout
+/// passes, and past the connection cap a new connection is served only when one closes.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn slow_connections_are_closed_and_counted() {
+    use tokio::io::{AsyncReadExt, AsyncWriteExt};
+    let listener = tokio::net::TcpListener::bind("127.0.0.1:0").await.expect("a port");
+    let addr = listener.local_addr().expect("an address");
+    tokio::spawn(rinshan_serve::serve_on(
+        listener,
+        Limits {
+            max_connections: 2,
+            header_timeout: Duration::from_millis(1500),
+            ..Limits::default()
+        },
+    ));
+    // Half a request line, then nothing: the server closes the connection.
+    let mut silent = tokio::net::TcpStream::connect(addr).await.expect("a connection");
+    silent.write_all(b"GET / HT").await.expect("written");
+    let mut buf = [0u8; 256];
+    let closed = tokio::time::timeout(Duration::from_secs(20), silent.read(&mut buf)).await;
+    assert!(
+        matches!(closed, Ok(Ok(0)) | Ok(Err(_))),
+        "the silent connection was not closed: {closed:?}"
+    );
+    // Two held connections fill the cap; a third is served only after they close.
+    let mut held = Vec::new();
+    for _ in 0..2 {
+        let mut c = tokio::net::TcpStream::connect(addr).await.expect("a connection");
+        c.write_all(b"GET / HT").await.expect("written");
+        held.push(c);
+    }
+    let mut third = tokio::net::TcpStream::connect(addr)
+        .await
+        .expect("the kernel queues it");
+    third
+        .write_all(b"GET /api/agents HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n")
+        .await
+        .expect("written");
+    let early = tokio::time::timeout(Duration::from_millis(500), third.read(&mut buf)).await;
+    assert!(early.is_err(), "served past the connection cap: {early:?}");
+    drop(held);
+    let mut answer = Vec::new();
+    tokio::time::timeout(Duration::from_secs(20), third.read_to_end(&mut answer))
+        .await
+        .expect("served once a place is free")
+        .expect("read");
+    let text = String::from_utf8_lossy(&answer);
+    assert!(text.starts_with("HTTP/1.1 200"), "{text}");
 }

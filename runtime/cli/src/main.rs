@@ -13,6 +13,7 @@ mod score;
 mod selfplay;
 mod serve;
 mod shanten;
+mod soak;
 
 use std::process::ExitCode;
 
@@ -49,6 +50,8 @@ enum Command {
     Serve(serve::Args),
     /// Rate built-in agents by duplicate play, e.g. `rinshan arena --agents greedy,rule,rule,rule --games 4000`
     Arena(arena::Args),
+    /// Many whole games with every invariant checked after every step, e.g. `rinshan soak --games 10000`
+    Soak(soak::Args),
     /// Benchmarks: `bench hands` (shanten, scoring), `bench env` (environment steps by batch size)
     Bench {
         #[command(subcommand)]
@@ -66,6 +69,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Observe(a) => observe::run(a),
         Command::Render(a) => render::run(a),
         Command::Serve(a) => serve::run(a),
+        Command::Soak(a) => soak::run(a),
         Command::Bench { what } => bench::run(what),
     }
 }

@@ -1,6 +1,7 @@
 //! `rinshan serve`: the web page to play against the agents, watch them, or replay a log.
 
 use std::net::SocketAddr;
+use std::path::PathBuf;
 use std::time::Duration;
 
 use rinshan_serve::Limits;
@@ -18,19 +19,67 @@ pub struct Args {
     /// Games held at once; past it new games are refused (503)
     #[arg(long, default_value_t = 256)]
     max_games: usize,
-    /// Minutes after which an untouched game is dropped
+    /// Games one client (IP address) may hold at once; past it its new games are refused (429)
+    #[arg(long, default_value_t = 8)]
+    games_per_client: usize,
+    /// Minutes after which a game no client request touched is dropped
     #[arg(long, default_value_t = 30)]
     idle_minutes: u64,
+    /// Minutes after which any game is dropped
+    #[arg(long, default_value_t = 240)]
+    max_game_minutes: u64,
+    /// Event streams (open pages) one client may hold at once
+    #[arg(long, default_value_t = 16)]
+    streams_per_client: usize,
+    /// Connections served at once; more wait to be accepted
+    #[arg(long, default_value_t = 1024)]
+    max_connections: usize,
+    /// Seconds a connection has to send a request's headers before it is closed
+    #[arg(long, default_value_t = 10)]
+    header_timeout_seconds: u64,
+    /// Where finished games are kept as Tenhou logs (the replay page lists them); default: rinshan
+    /// in the user's data directory (~/.local/share/rinshan on Linux)
+    #[arg(long, value_name = "DIR", conflicts_with = "no_data_dir")]
+    data_dir: Option<PathBuf>,
+    /// Keep no finished games
+    #[arg(long)]
+    no_data_dir: bool,
 }
 
 pub fn run(args: Args) -> Result<(), CliError> {
-    if args.max_games == 0 || args.idle_minutes == 0 {
-        return Err(CliError::input("--max-games and --idle-minutes must be at least 1"));
+    let counts = [
+        ("--max-games", args.max_games as u64),
+        ("--games-per-client", args.games_per_client as u64),
+        ("--idle-minutes", args.idle_minutes),
+        ("--max-game-minutes", args.max_game_minutes),
+        ("--streams-per-client", args.streams_per_client as u64),
+        ("--max-connections", args.max_connections as u64),
+        ("--header-timeout-seconds", args.header_timeout_seconds),
+    ];
+    if let Some((name, _)) = counts.iter().find(|(_, n)| *n == 0) {
+        return Err(CliError::input(format!("{name} must be at least 1")));
     }
+    let data_dir = match (args.no_data_dir, args.data_dir) {
+        (true, _) => None,
+        (false, Some(dir)) => Some(dir),
+        (false, None) => dirs::data_dir().map(|d| d.join("rinshan")),
+    };
+    let minutes = |m: u64| Duration::from_secs(m.saturating_mul(60));
     let limits = Limits {
         max_games: args.max_games,
-        idle: Duration::from_secs(args.idle_minutes.saturating_mul(60)),
+        games_per_client: args.games_per_client,
+        idle: minutes(args.idle_minutes),
+        max_duration: minutes(args.max_game_minutes),
+        streams_per_client: args.streams_per_client,
+        max_connections: args.max_connections,
+        header_timeout: Duration::from_secs(args.header_timeout_seconds),
+        data_dir,
+        fixed_seed: None,
     };
+    match &limits.data_dir {
+        Some(dir) => println!("finished games are kept in {}", dir.join("games").display()),
+        None => println!("finished games are not kept (no data directory)"),
+    }
     let runtime = tokio::runtime::Builder::new_multi_thread()
         .enable_all()
         .build()

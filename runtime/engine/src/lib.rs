@@ -17,6 +17,7 @@
 //! * [`observe`]  — what an agent sees: the observation forms and the table documenting their fields
 //! * [`agents`]   — the built-in baseline agents (random, rule, greedy, defensive)
 //! * [`arena`]    — rating agents by duplicate play
+//! * [`invariants`] — what holds of every game state (tiles and points conserved, one seat to act)
 //! * [`random`]   — deterministic random hands and legal actions for tests, benchmarks and self-play
 //! * [`names`]    — the names users write for variants, modes and the rest, and their error
 
@@ -38,6 +39,7 @@ mod entries;
 pub mod env;
 pub mod gpu;
 pub mod hand;
+pub mod invariants;
 pub mod names;
 pub mod notation;
 pub mod observe;

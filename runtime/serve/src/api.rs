@@ -1,37 +1,29 @@
-//! The HTTP routes: pages, the game API and the replay upload. Errors are JSON `{"error": ...}`
-//! with a 4xx status; axum's own extractors answer malformed bodies (400, 415, 422) and the body
-//! limit (413).
+//! The HTTP routes: pages, the game API, the replay upload and the saved games. Every error is
+//! JSON `{"error": ...}` with its status: axum's own extractors' rejections too (malformed bodies
+//! 400/415/422, the body limit 413; see `extract`), an unknown path 404 and a wrong method 405.
 
 use std::convert::Infallible;
 use std::str::FromStr;
 use std::time::Duration;
 
-use axum::extract::{DefaultBodyLimit, Path, Query, State};
+use axum::extract::{DefaultBodyLimit, State};
 use axum::http::{header, StatusCode};
 use axum::response::sse::{Event, KeepAlive, Sse};
 use axum::response::{IntoResponse, Response};
 use axum::routing::{get, post};
-use axum::{Json, Router};
+use axum::Router;
 use futures_util::Stream;
 use serde::Deserialize;
 use serde_json::{json, Value};
 
+use super::extract::{ApiError, Client, Json, Path, Query, Text};
 use super::pages;
 use super::session::{Refusal, Session, Setup};
-use super::store::{Limits, Store};
+use super::store::{Limits, Refused, Store};
 use rinshan_engine::agents::Agent;
 use rinshan_engine::env::Mode;
 use rinshan_engine::Variant;
 use rinshan_render::{sprite, TileMode};
-
-/// A request the server refuses: its status and what to tell the user.
-pub struct ApiError(StatusCode, String);
-
-impl IntoResponse for ApiError {
-    fn into_response(self) -> Response {
-        (self.0, Json(json!({ "error": self.1 }))).into_response()
-    }
-}
 
 fn unprocessable(m: impl std::fmt::Display) -> ApiError {
     ApiError(StatusCode::UNPROCESSABLE_ENTITY, m.to_string())
@@ -60,6 +52,9 @@ pub(super) fn app_with_store(limits: Limits) -> (Router, Store) {
         .route("/api/games/{id}/events", get(events))
         .route("/api/games/{id}/log", get(log))
         .route("/api/sprite/{mode}", get(tiles_sprite))
+        .route("/api/saved", get(saved_list))
+        .route("/api/saved/{name}", get(saved_log))
+        .route("/api/saved/{name}/replay", get(saved_replay))
         .layer(DefaultBodyLimit::max(16 * 1024));
     // A tenhou.net/6 log of a long game is a few tens of kilobytes; a megabyte bounds the upload.
     let replay = Router::new()
@@ -69,12 +64,18 @@ pub(super) fn app_with_store(limits: Limits) -> (Router, Store) {
         .merge(api)
         .merge(replay)
         .fallback(|| async { ApiError(StatusCode::NOT_FOUND, "no such page".into()) })
+        .method_not_allowed_fallback(|| async {
+            ApiError(
+                StatusCode::METHOD_NOT_ALLOWED,
+                "this path does not take that method".into(),
+            )
+        })
         .with_state(store.clone());
     (router, store)
 }
 
-async fn agents() -> Json<Value> {
-    Json(json!({
+async fn agents() -> axum::Json<Value> {
+    axum::Json(json!({
         "agents": Agent::ALL.iter().map(|a| a.name()).collect::<Vec<_>>(),
         "variants": Variant::ALL.iter().map(|v| v.to_string()).collect::<Vec<_>>(),
         "modes": Mode::ALL.iter().map(|m| m.name()).collect::<Vec<_>>(),
@@ -94,7 +95,9 @@ struct NewGame {
     seat: Option<u32>,
     /// Three agents (the other seats in seat order) with a seat, four without.
     agents: Vec<String>,
-    seed: Option<u64>,
+    /// A spectated game's seed, as a string (a JavaScript number loses digits above 2^53); a game
+    /// with a person takes none: the server draws it from the OS.
+    seed: Option<String>,
     /// Milliseconds before each agent move.
     #[serde(default = "default_delay")]
     delay_ms: u64,
@@ -117,7 +120,25 @@ where
     s.parse().map_err(|e| unprocessable(format!("{what}: {e}")))
 }
 
-fn setup(g: NewGame) -> Result<Setup, ApiError> {
+/// The seed of a new game: the server's fixed one (tests), the spectator's, or the OS's.
+fn seed_of(g: &NewGame, limits: &Limits) -> Result<u64, ApiError> {
+    match (&g.seed, g.seat, limits.fixed_seed) {
+        (Some(_), Some(_), _) => Err(unprocessable(
+            "a game with a person takes no seed (anyone who knew it would know every hand); the game \
+             shows its seed once it is over",
+        )),
+        (Some(text), None, _) => text
+            .trim()
+            .parse()
+            .map_err(|_| unprocessable(format!("seed {text:?}: a whole number 0..2^64, as a string"))),
+        (None, _, Some(fixed)) => Ok(fixed),
+        (None, _, None) => {
+            getrandom::u64().map_err(|e| ApiError(StatusCode::SERVICE_UNAVAILABLE, format!("no OS randomness: {e}")))
+        }
+    }
+}
+
+fn setup(g: NewGame, limits: &Limits) -> Result<Setup, ApiError> {
     let variant: Variant = parse("variant", &g.variant)?;
     let mode: Mode = parse("mode", &g.mode)?;
     let agents: Vec<Agent> = g.agents.iter().map(|a| parse("agent", a)).collect::<Result<_, _>>()?;
@@ -149,11 +170,7 @@ fn setup(g: NewGame) -> Result<Setup, ApiError> {
         variant,
         mode,
         seats,
-        seed: g.seed.unwrap_or_else(|| {
-            std::time::SystemTime::now()
-                .duration_since(std::time::UNIX_EPOCH)
-                .map_or(0, |d| d.as_nanos() as u64)
-        }),
+        seed: seed_of(&g, limits)?,
         delay: Duration::from_millis(g.delay_ms),
     })
 }
@@ -192,6 +209,7 @@ fn view_json(id: u64, s: &Session, tiles: TileMode, board: bool) -> Result<Value
             "final_scores": r.final_scores,
         })),
         "events": s.events(),
+        "seed": s.shown_seed().map(|x| x.to_string()),
         "log": s.log().is_ok(),
         "svg": svg,
     }))
@@ -201,13 +219,21 @@ fn game_id(id: &str) -> Result<u64, ApiError> {
     id.parse().map_err(|_| not_found(id))
 }
 
-async fn create(State(store): State<Store>, Json(g): Json<NewGame>) -> Result<impl IntoResponse, ApiError> {
-    let setup = setup(g)?;
-    let (id, held) = store.create(setup).map_err(|e| match e {
-        Some(m) => unprocessable(m),
-        None => ApiError(
+async fn create(
+    State(store): State<Store>,
+    Client(client): Client,
+    Json(g): Json<NewGame>,
+) -> Result<impl IntoResponse, ApiError> {
+    let setup = setup(g, store.limits())?;
+    let (id, held) = store.create(setup, client).map_err(|e| match e {
+        Refused::Invalid(m) => unprocessable(m),
+        Refused::Full => ApiError(
             StatusCode::SERVICE_UNAVAILABLE,
             "the server is holding as many games as it may: try again later".into(),
+        ),
+        Refused::ClientFull(n) => ApiError(
+            StatusCode::TOO_MANY_REQUESTS,
+            format!("you hold {n} games, as many as one client may: leave one first"),
         ),
     })?;
     let body = {
@@ -215,7 +241,7 @@ async fn create(State(store): State<Store>, Json(g): Json<NewGame>) -> Result<im
         view_json(id, &s, TileMode::En, false)?
     };
     held.changed();
-    Ok((StatusCode::CREATED, Json(body)))
+    Ok((StatusCode::CREATED, axum::Json(body)))
 }
 
 fn tiles_of(q: &ViewQuery) -> Result<TileMode, ApiError> {
@@ -226,11 +252,11 @@ async fn view(
     State(store): State<Store>,
     Path(id): Path<String>,
     Query(q): Query<ViewQuery>,
-) -> Result<Json<Value>, ApiError> {
+) -> Result<axum::Json<Value>, ApiError> {
     let held = store.get(game_id(&id)?).ok_or_else(|| not_found(&id))?;
     let tiles = tiles_of(&q)?;
     let s = held.lock();
-    Ok(Json(view_json(game_id(&id)?, &s, tiles, q.board != Some(0))?))
+    Ok(axum::Json(view_json(game_id(&id)?, &s, tiles, q.board != Some(0))?))
 }
 
 /// `POST /api/games/{id}/actions`: the person's move at decision `step`.
@@ -241,7 +267,11 @@ struct Move {
     step: u64,
 }
 
-async fn act(State(store): State<Store>, Path(id): Path<String>, Json(m): Json<Move>) -> Result<Json<Value>, ApiError> {
+async fn act(
+    State(store): State<Store>,
+    Path(id): Path<String>,
+    Json(m): Json<Move>,
+) -> Result<axum::Json<Value>, ApiError> {
     let held = store.get(game_id(&id)?).ok_or_else(|| not_found(&id))?;
     let body = {
         let mut s = held.lock();
@@ -249,7 +279,7 @@ async fn act(State(store): State<Store>, Path(id): Path<String>, Json(m): Json<M
         view_json(game_id(&id)?, &s, TileMode::En, false)?
     };
     held.changed();
-    Ok(Json(body))
+    Ok(axum::Json(body))
 }
 
 fn refusal(r: Refusal) -> ApiError {
@@ -259,7 +289,7 @@ fn refusal(r: Refusal) -> ApiError {
     }
 }
 
-async fn next(State(store): State<Store>, Path(id): Path<String>) -> Result<Json<Value>, ApiError> {
+async fn next(State(store): State<Store>, Path(id): Path<String>) -> Result<axum::Json<Value>, ApiError> {
     let held = store.get(game_id(&id)?).ok_or_else(|| not_found(&id))?;
     let body = {
         let mut s = held.lock();
@@ -267,7 +297,7 @@ async fn next(State(store): State<Store>, Path(id): Path<String>) -> Result<Json
         view_json(game_id(&id)?, &s, TileMode::En, false)?
     };
     held.changed();
-    Ok(Json(body))
+    Ok(axum::Json(body))
 }
 
 async fn remove(State(store): State<Store>, Path(id): Path<String>) -> Result<StatusCode, ApiError> {
@@ -279,20 +309,35 @@ async fn remove(State(store): State<Store>, Path(id): Path<String>) -> Result<St
 }
 
 /// Server-sent events: `data: <change count>` after every move; the page then reads the view.
+/// Each stream counts against its client until it closes.
 async fn events(
     State(store): State<Store>,
+    Client(client): Client,
     Path(id): Path<String>,
 ) -> Result<Sse<impl Stream<Item = Result<Event, Infallible>>>, ApiError> {
     let held = store.get(game_id(&id)?).ok_or_else(|| not_found(&id))?;
+    let permit = store.open_stream(client).ok_or_else(|| {
+        ApiError(
+            StatusCode::TOO_MANY_REQUESTS,
+            format!(
+                "you have {} event streams open, as many as one client may: close one first",
+                store.limits().streams_per_client
+            ),
+        )
+    })?;
     let rx = held.subscribe();
     drop(held);
-    let stream = futures_util::stream::unfold((rx, true), |(mut rx, first)| async move {
-        // The first event tells a new listener where the game is; a dropped game ends the stream.
+    let stream = futures_util::stream::unfold((rx, true, permit), |(mut rx, first, permit)| async move {
+        // The first event tells a new listener where the game is; a dropped game ends the stream
+        // (and drops the permit).
         if !first && rx.changed().await.is_err() {
             return None;
         }
         let n = *rx.borrow_and_update();
-        Some((Ok(Event::default().event("change").data(n.to_string())), (rx, false)))
+        Some((
+            Ok(Event::default().event("change").data(n.to_string())),
+            (rx, false, permit),
+        ))
     });
     Ok(Sse::new(stream).keep_alive(KeepAlive::default()))
 }
@@ -334,8 +379,13 @@ const MAX_REPLAY_ROUNDS: usize = 32;
 static REPLAYS: tokio::sync::Semaphore = tokio::sync::Semaphore::const_new(1);
 
 /// `POST /api/replay` with a tenhou.net/6 log as the body: the replay page of that game.
-async fn replay(body: String) -> Result<Response, ApiError> {
-    let game = rinshan_logs::tenhou::log::parse_game("upload", &body).map_err(unprocessable)?;
+async fn replay(Text(body): Text) -> Result<Response, ApiError> {
+    replay_page("upload", &body).await
+}
+
+/// The replay page of a log.
+async fn replay_page(name: &str, body: &str) -> Result<Response, ApiError> {
+    let game = rinshan_logs::tenhou::log::parse_game(name, body).map_err(unprocessable)?;
     if game.rounds.is_empty() || game.rounds.len() > MAX_REPLAY_ROUNDS {
         return Err(unprocessable(format!(
             "the log has {} rounds: a game of 1 to {MAX_REPLAY_ROUNDS} is replayed",
@@ -355,4 +405,41 @@ async fn replay(body: String) -> Result<Response, ApiError> {
         .map_err(|e| ApiError(StatusCode::INTERNAL_SERVER_ERROR, e.to_string()))?
         .map_err(unprocessable)?;
     Ok(([(header::CONTENT_TYPE, "text/html; charset=utf-8")], page).into_response())
+}
+
+fn no_archive() -> ApiError {
+    ApiError(
+        StatusCode::NOT_FOUND,
+        "this server keeps no games (it was started without a data directory)".into(),
+    )
+}
+
+/// `GET /api/saved`: the finished games in the data directory, newest first.
+async fn saved_list(State(store): State<Store>) -> Result<axum::Json<Value>, ApiError> {
+    let archive = store.archive().ok_or_else(no_archive)?.clone();
+    let list = tokio::task::spawn_blocking(move || archive.list())
+        .await
+        .map_err(|e| ApiError(StatusCode::INTERNAL_SERVER_ERROR, e.to_string()))?;
+    Ok(axum::Json(json!({ "games": list })))
+}
+
+async fn saved_text(store: &Store, name: String) -> Result<String, ApiError> {
+    let archive = store.archive().ok_or_else(no_archive)?.clone();
+    let missing = format!("no saved game {name}");
+    tokio::task::spawn_blocking(move || archive.read(&name))
+        .await
+        .map_err(|e| ApiError(StatusCode::INTERNAL_SERVER_ERROR, e.to_string()))?
+        .ok_or(ApiError(StatusCode::NOT_FOUND, missing))
+}
+
+/// `GET /api/saved/{name}`: a saved game's Tenhou log.
+async fn saved_log(State(store): State<Store>, Path(name): Path<String>) -> Result<Response, ApiError> {
+    let text = saved_text(&store, name).await?;
+    Ok(([(header::CONTENT_TYPE, "application/json")], text).into_response())
+}
+
+/// `GET /api/saved/{name}/replay`: a saved game's replay page.
+async fn saved_replay(State(store): State<Store>, Path(name): Path<String>) -> Result<Response, ApiError> {
+    let text = saved_text(&store, name.clone()).await?;
+    replay_page(&name, &text).await
 }

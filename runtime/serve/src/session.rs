@@ -82,7 +82,7 @@ pub struct Session {
     told: u32,
     /// The pass action's id (claim prompts offer it).
     pass: u32,
-    /// When a request or a move last touched the game.
+    /// When a client's request last touched the game (the agents' moves do not count).
     pub touched: Instant,
 }
 
@@ -281,6 +281,18 @@ impl Session {
         self.env.last().legal_actions(0).any(|a| a == self.pass)
     }
 
+    /// The seed the game deals from, where the page may see it: always for a spectated game, and
+    /// once it is over for a game with a person (for a replay; while it runs it would show every
+    /// hand and draw to whoever searched the seed's games).
+    pub fn shown_seed(&self) -> Option<u64> {
+        (self.human().is_none() || self.phase() == Phase::Over).then_some(self.setup.seed)
+    }
+
+    /// Tells the page something about the game that is not a move.
+    pub fn note(&mut self, what: &str) {
+        self.events.push(what.to_string());
+    }
+
     /// Ends the game where it stands (the engine failed), telling the page why.
     pub fn stop(&mut self, why: &str) {
         self.events.push(format!("the game stopped: {why}"));
@@ -312,7 +324,6 @@ impl Session {
             let a = self.agent_action()?;
             self.step_once(a)?;
         }
-        self.touched = Instant::now();
         Ok(())
     }
 

@@ -1,39 +1,80 @@
 //! The games the server holds: a bounded map from id to session, with each game's driver task
-//! (the agents' moves) and its change counter for the page's event stream.
+//! (the agents' moves) and its change counter for the page's event stream. Games are bounded in
+//! number, per client, in idle time (only a client's requests count as activity, not the agents'
+//! moves) and in total duration; event streams are bounded per client.
 
 use std::collections::HashMap;
 use std::hash::BuildHasher as _;
+use std::net::IpAddr;
+use std::path::PathBuf;
 use std::sync::{Arc, Mutex, MutexGuard};
 use std::time::{Duration, Instant};
 
 use tokio::sync::{watch, Notify};
 
+use super::archive::Archive;
 use super::session::{Phase, Session, Setup};
 
-/// How much the server keeps.
-#[derive(Debug, Clone, Copy)]
+/// How much the server keeps, and for whom.
+#[derive(Debug, Clone)]
 pub struct Limits {
     /// Games held at once; a new game past it is refused (503) once idle ones are dropped.
     pub max_games: usize,
-    /// A game nobody touched for this long is dropped.
+    /// Games one client (IP address) may hold at once; past it its new games are refused (429).
+    pub games_per_client: usize,
+    /// A game no client request touched for this long is dropped.
     pub idle: Duration,
+    /// A game is dropped this long after it started, touched or not.
+    pub max_duration: Duration,
+    /// Event streams one client may hold open at once (429 past it).
+    pub streams_per_client: usize,
+    /// Connections served at once; further ones wait to be accepted.
+    pub max_connections: usize,
+    /// A connection that has not sent a request's headers within this time is closed.
+    pub header_timeout: Duration,
+    /// Where finished games are written as Tenhou logs (`games/` inside); `None`: nowhere.
+    pub data_dir: Option<PathBuf>,
+    /// Every game deals from this seed instead of the OS random source: for tests and demos that
+    /// must repeat a game (clients never choose the seed of a game they play in).
+    pub fixed_seed: Option<u64>,
 }
 
 impl Default for Limits {
     fn default() -> Limits {
         Limits {
             max_games: 256,
+            games_per_client: 8,
             idle: Duration::from_secs(30 * 60),
+            max_duration: Duration::from_secs(4 * 60 * 60),
+            streams_per_client: 16,
+            max_connections: 1024,
+            header_timeout: Duration::from_secs(10),
+            data_dir: None,
+            fixed_seed: None,
         }
     }
 }
 
-/// One held game: the session, a wake-up for its driver, and a counter bumped on every change.
+/// Why a new game was refused.
+#[derive(Debug)]
+pub enum Refused {
+    /// The setup cannot be played.
+    Invalid(String),
+    /// The server holds as many games as it may.
+    Full,
+    /// This client holds as many games as it may.
+    ClientFull(usize),
+}
+
+/// One held game: the session, a wake-up for its driver, a counter bumped on every change, who
+/// made it and when.
 pub struct Held {
     session: Mutex<Session>,
     wake: Notify,
     changed: watch::Sender<u64>,
     closed: Mutex<bool>,
+    client: IpAddr,
+    created: Instant,
 }
 
 impl Held {
@@ -70,7 +111,29 @@ pub struct Store {
     games: Arc<Mutex<HashMap<u64, Arc<Held>>>>,
     next: Arc<Mutex<u64>>,
     keys: std::hash::RandomState,
-    limits: Limits,
+    limits: Arc<Limits>,
+    archive: Option<Archive>,
+    /// Open event streams per client.
+    streams: Arc<Mutex<HashMap<IpAddr, usize>>>,
+}
+
+/// An open event stream, counted against its client until dropped (the client went away or the
+/// game ended).
+pub struct StreamPermit {
+    streams: Arc<Mutex<HashMap<IpAddr, usize>>>,
+    client: IpAddr,
+}
+
+impl Drop for StreamPermit {
+    fn drop(&mut self) {
+        let mut map = self.streams.lock().unwrap_or_else(|p| p.into_inner());
+        if let Some(n) = map.get_mut(&self.client) {
+            *n -= 1;
+            if *n == 0 {
+                map.remove(&self.client);
+            }
+        }
+    }
 }
 
 impl Store {
@@ -79,21 +142,37 @@ impl Store {
             games: Arc::default(),
             next: Arc::new(Mutex::new(1)),
             keys: std::hash::RandomState::new(),
-            limits,
+            archive: limits.data_dir.as_deref().map(Archive::new),
+            limits: Arc::new(limits),
+            streams: Arc::default(),
         }
+    }
+
+    /// The limits the store keeps.
+    pub fn limits(&self) -> &Limits {
+        &self.limits
+    }
+
+    /// The saved games, where a data directory is set.
+    pub fn archive(&self) -> Option<&Archive> {
+        self.archive.as_ref()
     }
 
     fn map(&self) -> MutexGuard<'_, HashMap<u64, Arc<Held>>> {
         self.games.lock().unwrap_or_else(|p| p.into_inner())
     }
 
-    /// A new game, with its driver started; `Err(None)` when the server is full.
-    pub fn create(&self, setup: Setup) -> Result<(u64, Arc<Held>), Option<String>> {
+    /// A new game for `client`, with its driver started.
+    pub fn create(&self, setup: Setup, client: IpAddr) -> Result<(u64, Arc<Held>), Refused> {
         self.sweep();
-        let session = Session::new(setup).map_err(Some)?;
+        let session = Session::new(setup).map_err(Refused::Invalid)?;
         let mut map = self.map();
         if map.len() >= self.limits.max_games {
-            return Err(None);
+            return Err(Refused::Full);
+        }
+        let own = map.values().filter(|h| h.client == client).count();
+        if own >= self.limits.games_per_client {
+            return Err(Refused::ClientFull(own));
         }
         let id = loop {
             let mut n = self.next.lock().unwrap_or_else(|p| p.into_inner());
@@ -111,11 +190,27 @@ impl Store {
             wake: Notify::new(),
             changed,
             closed: Mutex::new(false),
+            client,
+            created: Instant::now(),
         });
         map.insert(id, held.clone());
         drop(map);
-        tokio::spawn(drive(held.clone()));
+        tokio::spawn(drive(held.clone(), id, self.archive.clone()));
         Ok((id, held))
+    }
+
+    /// Counts an event stream against `client`; `None` when it holds as many as it may.
+    pub fn open_stream(&self, client: IpAddr) -> Option<StreamPermit> {
+        let mut map = self.streams.lock().unwrap_or_else(|p| p.into_inner());
+        let n = map.entry(client).or_insert(0);
+        if *n >= self.limits.streams_per_client {
+            return None;
+        }
+        *n += 1;
+        Some(StreamPermit {
+            streams: self.streams.clone(),
+            client,
+        })
     }
 
     /// The game `id`, marked as touched.
@@ -131,12 +226,13 @@ impl Store {
         held.map(|h| h.close()).is_some()
     }
 
-    /// Drops the games idle for longer than the limit.
+    /// Drops the games idle for longer than the limit, and those held longer than the longest
+    /// game.
     pub fn sweep(&self) {
-        let idle = self.limits.idle;
+        let (idle, longest) = (self.limits.idle, self.limits.max_duration);
         let mut map = self.map();
         map.retain(|_, h| {
-            let keep = h.lock().touched.elapsed() < idle;
+            let keep = h.lock().touched.elapsed() < idle && h.created.elapsed() < longest;
             if !keep {
                 h.close();
             }
@@ -146,11 +242,25 @@ impl Store {
 }
 
 /// Plays a game's agent moves, each after the game's delay, until the game is dropped. A
-/// spectated game also moves on past each round's result.
-async fn drive(held: Arc<Held>) {
+/// spectated game also moves on past each round's result. Once the game is over its log is
+/// written to the archive.
+async fn drive(held: Arc<Held>, id: u64, archive: Option<Archive>) {
+    let mut saved = false;
     loop {
         if held.is_closed() {
             return;
+        }
+        if !saved {
+            let log = held.lock().log().ok().map(str::to_string);
+            if let (Some(log), Some(archive)) = (log, &archive) {
+                saved = true;
+                // Off the async threads: a slow disk must not stall other games.
+                let archive = archive.clone();
+                let written = tokio::task::spawn_blocking(move || archive.save(id, &log)).await;
+                if let Ok(Err(e)) | Err(e) = written.map_err(std::io::Error::other) {
+                    held.lock().note(&format!("the game could not be saved: {e}"));
+                }
+            }
         }
         let (phase, delay, spectating) = {
             let s = held.lock();

@@ -9,6 +9,7 @@
 
 mod fields;
 mod form;
+mod hidden;
 mod text;
 
 pub use fields::{
@@ -17,4 +18,5 @@ pub use fields::{
 };
 pub(crate) use form::observe_cpu;
 pub use form::{record, Form};
+pub use hidden::{resample_hidden, OwnDraws};
 pub use text::{describe, field_values, fields_markdown};

@@ -62,7 +62,8 @@ async function start(ev) {
     delay_ms: Number(f.get("delay")),
   };
   if (PAGE === "play") body.seat = Number(f.get("seat"));
-  if (f.get("seed")) body.seed = Number(f.get("seed"));
+  // A seed travels as a string: a JavaScript number loses digits above 2^53.
+  if (f.get("seed")) body.seed = String(f.get("seed")).trim();
   try {
     const v = await api("POST", "/api/games", body);
     game = v.id;
@@ -107,6 +108,12 @@ function draw() {
   const points = v.result && v.result.final_scores ? v.result.final_scores : v.scores;
   scores.textContent = v.names.map((n, p) => n + " " + points[p]).join(" · ");
   $("status").appendChild(scores);
+  if (v.seed !== null && v.seed !== undefined) {
+    const seed = document.createElement("p");
+    seed.className = "seed";
+    seed.textContent = "Seed " + v.seed;
+    $("status").appendChild(seed);
+  }
   if ($("actions")) drawActions(v);
   drawResult(v);
   const ev = $("events");
@@ -223,21 +230,52 @@ async function act(id) {
   refresh();
 }
 
+// Shows a replay page the server drew (from an upload or a saved game).
+async function showReplay(r) {
+  const text = await r.text();
+  if (!r.ok) { let m = text; try { m = JSON.parse(text).error; } catch (_) {} throw new Error(m); }
+  const frame = $("viewer");
+  // The page is ours, but it holds names from the log: keep it in a sandbox.
+  frame.setAttribute("sandbox", "allow-scripts");
+  frame.srcdoc = text;
+  frame.hidden = false;
+}
+
 async function openReplay(ev) {
   ev.preventDefault();
   showError(null);
   const file = $("file").files[0];
   if (!file) { showError("choose a log file first"); return; }
   try {
-    const r = await fetch("/api/replay", { method: "POST", body: await file.text() });
-    const text = await r.text();
-    if (!r.ok) { let m = text; try { m = JSON.parse(text).error; } catch (_) {} throw new Error(m); }
-    const frame = $("viewer");
-    // The page is ours, but it holds names from the uploaded log: keep it in a sandbox.
-    frame.setAttribute("sandbox", "allow-scripts");
-    frame.srcdoc = text;
-    frame.hidden = false;
+    await showReplay(await fetch("/api/replay", { method: "POST", body: await file.text() }));
   } catch (e) { showError(e); }
+}
+
+// The games this server finished and kept, newest first (none where it keeps none).
+async function listSaved() {
+  const r = await fetch("/api/saved");
+  if (!r.ok) return;
+  const games = (await r.json()).games;
+  if (!games.length) return;
+  const list = $("saved-list");
+  for (const g of games) {
+    const li = document.createElement("li");
+    const b = document.createElement("button");
+    b.type = "button";
+    b.className = "saved-game";
+    b.textContent = new Date(g.written * 1000).toLocaleString() + " (" + Math.round(g.bytes / 1024) + " KB)";
+    b.addEventListener("click", async () => {
+      showError(null);
+      try { await showReplay(await fetch("/api/saved/" + encodeURIComponent(g.name) + "/replay")); } catch (e) { showError(e); }
+    });
+    const a = document.createElement("a");
+    a.href = "/api/saved/" + encodeURIComponent(g.name);
+    a.download = g.name;
+    a.textContent = "log";
+    li.append(b, " ", a);
+    list.appendChild(li);
+  }
+  $("saved").hidden = false;
 }
 
 async function init() {
@@ -252,6 +290,8 @@ async function init() {
   await loadSprite();
   if (PAGE === "replay") {
     $("upload").addEventListener("submit", openReplay);
+    await listSaved();
+    document.body.dataset.ready = "1";
     return;
   }
   const info = await api("GET", "/api/agents");

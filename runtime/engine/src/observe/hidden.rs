@@ -1,0 +1,148 @@
+//! The oracle of what a seat may not see: a state with everything hidden from one seat
+//! reshuffled or scrambled. An observation that changes under it leaks; the tests and the soak
+//! check every observation form against it.
+
+use crate::generated::kernel::{
+    self, GameState, SEAT_FURITEN_RIICHI, SEAT_FURITEN_TEMP, WALL_DORA, WALL_LIVE_END, WALL_LIVE_START, WALL_RINSHAN,
+    WALL_URA,
+};
+use crate::random::Rng;
+
+fn wall_set(s: &mut GameState, i: u32, v: u32) {
+    let w = &mut s.wall[(i / 4) as usize];
+    *w = (*w & !(255 << ((i % 4) * 8))) | (v << ((i % 4) * 8));
+}
+
+/// The wall positions the observer drew from this round, kept up to date step by step from the
+/// engine's counters (not from the event log under test).
+#[derive(Debug, Clone, Default)]
+pub struct OwnDraws {
+    round_key: Option<(u32, u32, u32)>,
+    /// The positions, in the order drawn.
+    pub positions: Vec<u32>,
+}
+
+impl OwnDraws {
+    /// Follows one step of the game from `before` to `after` for `observer`.
+    pub fn update(&mut self, before: &GameState, after: &mut GameState, observer: u32) {
+        let key = Some((after.games, after.rounds, after.round * 64 + after.honba));
+        let drew_now = after.drawn != kernel::NO_TILE_VALUE && after.current == observer;
+        if key != self.round_key || after.next_draw < before.next_draw {
+            self.round_key = key;
+            self.positions.clear();
+            if after.dealer == observer {
+                self.positions.push(WALL_LIVE_START);
+            }
+            return;
+        }
+        if after.next_draw == before.next_draw + 1 && drew_now {
+            self.positions.push(after.next_draw - 1);
+        }
+        if after.kans == before.kans + 1 && drew_now && after.rinshan == 1 {
+            self.positions.push(WALL_RINSHAN + after.kans - 1);
+        }
+    }
+}
+
+/// A copy of `s` in which everything `observer` cannot see is reshuffled or scrambled: the tiles
+/// of the other hands, the live wall and the hidden dead wall permuted among themselves, the wall
+/// places of tiles that left it unseen scrambled, the other seats' waits, furiten, claim options
+/// and choices, and the seeds and the step counter. `own_draws` are the wall places the observer
+/// drew from this round ([`OwnDraws`]).
+pub fn resample_hidden(s: &GameState, observer: u32, own_draws: &[u32], rng: &mut Rng) -> GameState {
+    let mut r = *s;
+    let mut pool: Vec<u32> = Vec::new();
+    let mut hidden_positions: Vec<u32> = Vec::new();
+    for i in s.next_draw..WALL_LIVE_END {
+        hidden_positions.push(i);
+    }
+    for i in WALL_DORA + s.dora_revealed..WALL_DORA + 5 {
+        hidden_positions.push(i);
+    }
+    for i in WALL_URA..WALL_URA + 5 {
+        hidden_positions.push(i);
+    }
+    for i in WALL_RINSHAN + s.kans..WALL_RINSHAN + 4 {
+        hidden_positions.push(i);
+    }
+    for &i in &hidden_positions {
+        pool.push(kernel::wall_tile(&mut r, i));
+    }
+    let mut sizes = [0usize; 4];
+    for q in (0..4).filter(|&q| q != observer) {
+        let counts = kernel::hand_counts(&mut r, q);
+        for t in 0..34u32 {
+            let mut n = counts[t as usize];
+            if t < 27 && t % 9 == 4 && kernel::holds_red(&mut r, q, t / 9) {
+                pool.push(34 + t / 9);
+                n -= 1;
+            }
+            for _ in 0..n {
+                pool.push(t);
+            }
+            sizes[q as usize] += counts[t as usize] as usize;
+        }
+    }
+    for i in (1..pool.len()).rev() {
+        pool.swap(i, rng.below(i as u32 + 1) as usize);
+    }
+    let mut next = pool.into_iter();
+    for &i in &hidden_positions {
+        if let Some(v) = next.next() {
+            wall_set(&mut r, i, v);
+        }
+    }
+    for q in (0..4).filter(|&q| q != observer) {
+        for w in 0..5 {
+            r.hands[(q * 5 + w) as usize] = 0;
+        }
+        r.red &= !(7 << (q * 3));
+        let mut given = Vec::new();
+        for _ in 0..sizes[q as usize] {
+            // The pool holds exactly the hidden tiles; a state that is not a game's runs short.
+            let Some(v) = next.next() else { break };
+            let t = kernel::value_type(v);
+            r.hands[(q * 5 + t / 8) as usize] += 1 << ((t % 8) * 4);
+            if v >= 34 {
+                r.red |= 1 << (q * 3 + v - 34);
+            }
+            given.push(v);
+        }
+        if s.current == q && s.drawn != kernel::NO_TILE_VALUE && !given.is_empty() {
+            r.drawn = given[rng.below(given.len() as u32) as usize];
+        }
+        // Waits, furiten and claim prompts of another seat follow from its hand.
+        r.waits[(q * 2) as usize] = rng.next_u64() as u32;
+        r.waits[(q * 2 + 1) as usize] = (rng.next_u64() as u32) & 3;
+        r.seat_flags[q as usize] ^= (SEAT_FURITEN_TEMP | SEAT_FURITEN_RIICHI) & rng.next_u64() as u32;
+        r.claim_options[q as usize] = (rng.next_u64() as u32) & 1023;
+        r.claim_choices[q as usize] = rng.below(256);
+    }
+    // Tiles that left the wall into other hands: their positions tell nothing now.
+    let dealt_by = |i: u32| (s.dealer + i / 13) % 4;
+    for i in 0..WALL_LIVE_START {
+        if dealt_by(i) != observer {
+            wall_set(&mut r, i, rng.below(37));
+        }
+    }
+    for i in WALL_LIVE_START..s.next_draw {
+        if !own_draws.contains(&i) {
+            wall_set(&mut r, i, rng.below(37));
+        }
+    }
+    for i in WALL_RINSHAN..WALL_RINSHAN + s.kans {
+        if !own_draws.contains(&i) {
+            wall_set(&mut r, i, rng.below(37));
+        }
+    }
+    if s.current != observer {
+        r.mask = [
+            (rng.next_u64() as u32),
+            (rng.next_u64() as u32),
+            (rng.next_u64() as u32),
+        ];
+    }
+    r.seed = [(rng.next_u64() as u32), (rng.next_u64() as u32)];
+    r.steps = rng.next_u64() as u32;
+    r
+}
