@@ -173,9 +173,10 @@ fn random_east_games_round_trip() {
 }
 
 /// The first round of each of these scenarios, then the rest of a half game by the policy.
-const PREPARED: [(&str, &str); 11] = [
+const PREPARED: [(&str, &str); 12] = [
     ("triple_ron_aborts", "三家和了"),
     ("triple_ron_after_a_go_around", "三家和了"),
+    ("triple_ron_keeps_an_accepted_riichi_stick", "三家和了"),
     ("nagashi_mangan", "流し満貫"),
     ("pao_daisangen_ron_split", "pao"),
     ("pao_daisangen_tsumo_liable_pays_all", "pao"),

@@ -1,5 +1,5 @@
 //! `rinshan`: the command-line front end over the engine, logs, render and serve crates: self-play,
-//! the hand calculator, log replay, pictures, the web page, the arena and benchmarks. Each
+//! the hand calculator, log replay, pictures, the web page, the arena, benchmarks and the soak. Each
 //! subcommand lives in its own module; nothing here plays a rule.
 
 mod arena;

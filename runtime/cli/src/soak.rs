@@ -1,6 +1,7 @@
 //! `rinshan soak`: many whole games of every variant, by the built-in agents and by a uniformly
 //! random policy, with every invariant checked after every step (see `rinshan-soak`); prints
-//! games, steps and violations per run, and writes each violation (seed and actions) to `--out`.
+//! games, steps and violations per run, and writes each violation (seed and actions, and the
+//! game's Tenhou log when that is what failed) to `--out`.
 
 use std::io::IsTerminal;
 use std::path::PathBuf;
@@ -129,7 +130,14 @@ pub fn run(args: Args) -> Result<(), CliError> {
             ));
             let text = serde_json::to_string_pretty(v).map_err(CliError::failure)?;
             std::fs::write(&path, text).map_err(|e| CliError::failure(format!("{}: {e}", path.display())))?;
-            written.push(path);
+            written.push(path.clone());
+            if let Some(log) = &v.log {
+                // Beside the violation, the log `rinshan replay` and the replay page read.
+                let log_path = path.with_extension("tenhou.json");
+                std::fs::write(&log_path, log)
+                    .map_err(|e| CliError::failure(format!("{}: {e}", log_path.display())))?;
+                written.push(log_path);
+            }
         }
     }
     let violations: usize = results.iter().map(|r| r.1.violations.len()).sum();

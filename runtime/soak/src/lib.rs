@@ -5,7 +5,7 @@
 //! seat's observation does not change when everything it cannot see is resampled. At the end the
 //! rewards add up to each seat's score change, and a red east or half game, written as a Tenhou
 //! log, reads back and replays through the engine exactly. A violation is reported with the
-//! game's seed and every action played, which repeat it.
+//! game's seed and every action played, which repeat it, and its log when the log is what failed.
 //!
 //! Depends on `rinshan-engine` and `rinshan-logs` (the Tenhou log round trip).
 
@@ -76,6 +76,9 @@ pub struct Violation {
     pub what: String,
     /// Every action played, in order: with the seed, the game again.
     pub actions: Vec<u32>,
+    /// The game as a tenhou.net/6 log, when the check that failed was on its log.
+    #[serde(skip)]
+    pub log: Option<String>,
 }
 
 /// What a soak did.
@@ -150,6 +153,7 @@ fn violation(soak: &Soak, game: u64, seed: u64, step: u64, what: String, actions
         step,
         what,
         actions,
+        log: None,
     }
 }
 
@@ -158,6 +162,10 @@ fn violation(soak: &Soak, game: u64, seed: u64, step: u64, what: String, actions
 fn round_trip(soak: &Soak, logs: Vec<(u64, u64, Vec<u32>, Game)>, out: &mut Outcome) {
     let mut read = Vec::new();
     let mut kept = Vec::new();
+    let with_log = |v: Violation, text: &str| Violation {
+        log: Some(text.to_string()),
+        ..v
+    };
     for (g, seed, actions, game) in logs {
         let path = format!("game-{g}.json");
         let text = game_text(&game);
@@ -170,23 +178,29 @@ fn round_trip(soak: &Soak, logs: Vec<(u64, u64, Vec<u32>, Game)>, out: &mut Outc
                     } =>
             {
                 read.push(back);
-                kept.push((g, seed, actions));
+                kept.push((g, seed, actions, text));
             }
-            Ok(_) => out.violations.push(violation(
-                soak,
-                g,
-                seed,
-                actions.len() as u64,
-                "the Tenhou log reads back as another game".into(),
-                actions,
+            Ok(_) => out.violations.push(with_log(
+                violation(
+                    soak,
+                    g,
+                    seed,
+                    actions.len() as u64,
+                    "the Tenhou log reads back as another game".into(),
+                    actions,
+                ),
+                &text,
             )),
-            Err(e) => out.violations.push(violation(
-                soak,
-                g,
-                seed,
-                actions.len() as u64,
-                format!("the Tenhou log does not read back: {e}"),
-                actions,
+            Err(e) => out.violations.push(with_log(
+                violation(
+                    soak,
+                    g,
+                    seed,
+                    actions.len() as u64,
+                    format!("the Tenhou log does not read back: {e}"),
+                    actions,
+                ),
+                &text,
             )),
         }
     }
@@ -196,30 +210,36 @@ fn round_trip(soak: &Soak, logs: Vec<(u64, u64, Vec<u32>, Game)>, out: &mut Outc
     let report = match rinshan_logs::tenhou::replay::replay(&read, Backend::Cpu) {
         Ok(r) => r,
         Err(e) => {
-            for (g, seed, actions) in kept {
-                out.violations.push(violation(
-                    soak,
-                    g,
-                    seed,
-                    actions.len() as u64,
-                    format!("the replay failed: {e}"),
-                    actions,
+            for (g, seed, actions, text) in kept {
+                out.violations.push(with_log(
+                    violation(
+                        soak,
+                        g,
+                        seed,
+                        actions.len() as u64,
+                        format!("the replay failed: {e}"),
+                        actions,
+                    ),
+                    &text,
                 ));
             }
             return;
         }
     };
     out.replayed += read.len() as u64;
-    for (g, seed, actions) in kept {
+    for (g, seed, actions, text) in kept {
         let path = format!("game-{g}.json");
         if let Some(m) = report.mismatches.iter().find(|m| m.file == path) {
-            out.violations.push(violation(
-                soak,
-                g,
-                seed,
-                actions.len() as u64,
-                format!("the Tenhou log does not replay: {m}"),
-                actions,
+            out.violations.push(with_log(
+                violation(
+                    soak,
+                    g,
+                    seed,
+                    actions.len() as u64,
+                    format!("the Tenhou log does not replay: {m}"),
+                    actions,
+                ),
+                &text,
             ));
         }
     }

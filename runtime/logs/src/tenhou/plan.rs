@@ -75,6 +75,8 @@ struct Walker<'a> {
     rinshan: Vec<Tile>,
     moves: Vec<Move>,
     riichi: [Option<usize>; 4],
+    /// The seat whose discard (or kan) the round's rons took, once the walk meets it.
+    ronned: Option<usize>,
 }
 
 impl<'a> Walker<'a> {
@@ -200,6 +202,7 @@ impl<'a> Walker<'a> {
                     );
                     let rons = self.rons_on(p);
                     if !rons.is_empty() {
+                        self.ronned = Some(p);
                         for q in rons {
                             self.push(q, k::ACTION_RON, true, format!("ron (chankan) on {}", added.name()));
                         }
@@ -237,6 +240,7 @@ impl<'a> Walker<'a> {
             };
             let rons = self.rons_on(p);
             if !rons.is_empty() {
+                self.ronned = Some(p);
                 for q in rons {
                     self.push(q, k::ACTION_RON, true, format!("ron on {}", discarded.name()));
                 }
@@ -359,6 +363,7 @@ pub fn plan(round: &Round) -> Result<Plan, String> {
             rinshan: Vec::new(),
             moves: Vec::new(),
             riichi: [None; 4],
+            ronned: None,
         };
         match w.walk() {
             Ok(()) => return finish(w),
@@ -388,7 +393,9 @@ pub fn plan(round: &Round) -> Result<Plan, String> {
 fn finish(w: Walker) -> Result<Plan, String> {
     let round = w.round;
     let riichi_paid: [u32; 4] = std::array::from_fn(|p| match w.riichi[p] {
-        Some(at) => u32::from(at != round.discards[p].len() || w.rons_on(p).is_empty()),
+        // Asking `rons_on` here would be wrong for a triple ron: once the walk is over every
+        // seat's entries are used up, so each seat would look like the one ronned.
+        Some(at) => u32::from(at != round.discards[p].len() || w.ronned != Some(p)),
         None => 0,
     });
     Ok(Plan {
