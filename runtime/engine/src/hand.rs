@@ -29,6 +29,8 @@ pub const SHANTEN_OUT_WORDS: usize = words::<kernel::ShantenOutput>();
 pub const SCORE_IN_WORDS: usize = words::<kernel::ScoreInput>();
 /// Words of one scoring kernel output (`ScoreOutput`).
 pub const SCORE_OUT_WORDS: usize = words::<kernel::ScoreOutput>();
+/// The most honba, and the most riichi sticks, a hand to score may carry.
+pub const MAX_STICKS: u32 = 10_000;
 
 /// 32-bit words of a kernel record.
 pub(crate) const fn words<T>() -> usize {
@@ -272,6 +274,13 @@ pub fn score_input(win: &Win) -> Result<[u32; SCORE_IN_WORDS], ScoreError> {
     }
     if c.dealer != (c.seat_wind == 0) {
         return Err(bad("the dealer's seat wind is East, and only the dealer's"));
+    }
+    // The kernel pays in u32 points: far more sticks than any table holds would wrap around.
+    if c.honba > MAX_STICKS || c.sticks > MAX_STICKS {
+        return Err(bad(format!(
+            "{} honba and {} riichi sticks: at most {MAX_STICKS} of each",
+            c.honba, c.sticks
+        )));
     }
     if win.hand[win.win.index()] == 0 {
         return Err(bad("the winning tile must be among the concealed tiles"));

@@ -40,11 +40,13 @@ pub struct Tiles {
 }
 
 impl Tiles {
-    /// Counts per type, red fives folded into their type.
+    /// Counts per type, red fives folded into their type (at most 255: a longer run of one tile
+    /// is still too many, and the callers refuse more than 4).
     pub fn counts(&self) -> [u8; 34] {
         let mut c = [0u8; 34];
         for t in &self.tiles {
-            c[t.kind().index()] += 1;
+            let n = &mut c[t.kind().index()];
+            *n = n.saturating_add(1);
         }
         c
     }

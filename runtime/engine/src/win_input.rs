@@ -143,17 +143,20 @@ fn build_win(args: &WinInput) -> Result<Win, WinInputError> {
         .iter()
         .map(|m| parse_meld(m).map_err(WinInputError::from))
         .collect::<Result<Vec<_>, _>>()?;
-    let mut hand = tiles.counts();
-    let mut red = tiles.red() + melds.iter().map(|m| m.red).sum::<u8>();
+    // The size first: past it every count below is at most 14.
     let concealed = tiles.tiles.len();
-    if concealed + 3 * melds.len() == 13 {
-        hand[win.index()] += 1;
-        red += u8::from(win_tile.is_red());
-    } else if concealed + 3 * melds.len() != 14 {
+    let size = concealed.saturating_add(melds.len().saturating_mul(3));
+    if size != 13 && size != 14 {
         return Err(WinInputError::from(format!(
             "{concealed} concealed tiles with {} meld(s): give 13 - 3 x melds tiles (the winning tile then comes from --win) or 14 - 3 x melds including it",
             melds.len()
         )));
+    }
+    let mut hand = tiles.counts();
+    let mut red = tiles.red() + melds.iter().map(|m| m.red).sum::<u8>();
+    if size == 13 {
+        hand[win.index()] += 1;
+        red += u8::from(win_tile.is_red());
     } else if hand[win.index()] == 0 {
         return Err(WinInputError::from(format!(
             "the hand has 14 tiles but not the winning tile {}",
@@ -227,5 +230,51 @@ fn check_context(c: &WinContext, melds: &[crate::notation::Meld]) -> Result<(), 
     match rules.iter().find(|(bad, _)| *bad) {
         Some((_, message)) => Err(WinInputError::from(message)),
         None => Ok(()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Variant;
+
+    fn input(hand: &str, win: &str) -> WinInput {
+        WinInput {
+            hand: hand.into(),
+            win: win.into(),
+            round_wind: "E".into(),
+            ..WinInput::default()
+        }
+    }
+
+    // Found by the hand_text fuzz target: counting 256 copies of a tile overflowed a u8.
+    #[test]
+    fn a_run_of_hundreds_of_one_tile_is_an_error() {
+        let hand = format!("{}m", "1".repeat(300));
+        assert!(crate::hand::shanten_of_notation(&hand)
+            .unwrap_err()
+            .contains("copies of 1m"));
+        assert!(input(&hand, "1m").win().is_err());
+    }
+
+    #[test]
+    fn hundreds_of_red_melds_are_an_error() {
+        let mut i = input("11z", "1z");
+        i.melds = vec!["chi:340m".to_string(); 300];
+        assert!(i.win().unwrap_err().0.contains("300 meld(s)"));
+    }
+
+    #[test]
+    fn more_sticks_than_points_can_hold_are_an_error() {
+        let mut i = input("234567m234p456s6s", "6s");
+        i.tsumo = true;
+        i.honba = 10_000;
+        i.sticks = 10_000;
+        let win = i.win().expect("a winning hand");
+        assert!(crate::hand::score(Variant::Red, &win).is_ok());
+        i.honba = u32::MAX;
+        let win = i.win().expect("a winning hand");
+        let e = crate::hand::score(Variant::Red, &win).unwrap_err().to_string();
+        assert!(e.contains("at most 10000"), "{e}");
     }
 }
