@@ -157,15 +157,19 @@ fn violation(soak: &Soak, game: u64, seed: u64, step: u64, what: String, actions
     }
 }
 
+/// A check on a finished game's log failed: the game, all its actions, and the log.
+fn log_violation(soak: &Soak, game: u64, seed: u64, actions: Vec<u32>, log: String, what: String) -> Violation {
+    Violation {
+        log: Some(log),
+        ..violation(soak, game, seed, actions.len() as u64, what, actions)
+    }
+}
+
 /// Writes each finished game as a Tenhou log, reads it back (it must read as written) and replays
 /// them all through the engine (every round must agree with the log).
 fn round_trip(soak: &Soak, logs: Vec<(u64, u64, Vec<u32>, Game)>, out: &mut Outcome) {
     let mut read = Vec::new();
     let mut kept = Vec::new();
-    let with_log = |v: Violation, text: &str| Violation {
-        log: Some(text.to_string()),
-        ..v
-    };
     for (g, seed, actions, game) in logs {
         let path = format!("game-{g}.json");
         let text = game_text(&game);
@@ -180,27 +184,21 @@ fn round_trip(soak: &Soak, logs: Vec<(u64, u64, Vec<u32>, Game)>, out: &mut Outc
                 read.push(back);
                 kept.push((g, seed, actions, text));
             }
-            Ok(_) => out.violations.push(with_log(
-                violation(
-                    soak,
-                    g,
-                    seed,
-                    actions.len() as u64,
-                    "the Tenhou log reads back as another game".into(),
-                    actions,
-                ),
-                &text,
+            Ok(_) => out.violations.push(log_violation(
+                soak,
+                g,
+                seed,
+                actions,
+                text,
+                "the Tenhou log reads back as another game".into(),
             )),
-            Err(e) => out.violations.push(with_log(
-                violation(
-                    soak,
-                    g,
-                    seed,
-                    actions.len() as u64,
-                    format!("the Tenhou log does not read back: {e}"),
-                    actions,
-                ),
-                &text,
+            Err(e) => out.violations.push(log_violation(
+                soak,
+                g,
+                seed,
+                actions,
+                text,
+                format!("the Tenhou log does not read back: {e}"),
             )),
         }
     }
@@ -211,16 +209,13 @@ fn round_trip(soak: &Soak, logs: Vec<(u64, u64, Vec<u32>, Game)>, out: &mut Outc
         Ok(r) => r,
         Err(e) => {
             for (g, seed, actions, text) in kept {
-                out.violations.push(with_log(
-                    violation(
-                        soak,
-                        g,
-                        seed,
-                        actions.len() as u64,
-                        format!("the replay failed: {e}"),
-                        actions,
-                    ),
-                    &text,
+                out.violations.push(log_violation(
+                    soak,
+                    g,
+                    seed,
+                    actions,
+                    text,
+                    format!("the replay failed: {e}"),
                 ));
             }
             return;
@@ -230,16 +225,13 @@ fn round_trip(soak: &Soak, logs: Vec<(u64, u64, Vec<u32>, Game)>, out: &mut Outc
     for (g, seed, actions, text) in kept {
         let path = format!("game-{g}.json");
         if let Some(m) = report.mismatches.iter().find(|m| m.file == path) {
-            out.violations.push(with_log(
-                violation(
-                    soak,
-                    g,
-                    seed,
-                    actions.len() as u64,
-                    format!("the Tenhou log does not replay: {m}"),
-                    actions,
-                ),
-                &text,
+            out.violations.push(log_violation(
+                soak,
+                g,
+                seed,
+                actions,
+                text,
+                format!("the Tenhou log does not replay: {m}"),
             ));
         }
     }
