@@ -21,6 +21,11 @@ fuzz_target!(|data: &[u8]| {
     }
     let _ = replay(std::slice::from_ref(&game), Backend::Cpu);
     let written = game_text(&game);
-    let back = parse_game("fuzz", &written).expect("a log that was read writes out as one that reads");
+    let mut back = parse_game("fuzz", &written).expect("a log that was read writes out as one that reads");
+    // A round's line says where it stood in its source text, which the writer lays out anew.
+    let mut game = game;
+    for round in game.rounds.iter_mut().chain(back.rounds.iter_mut()) {
+        round.line = 0;
+    }
     assert_eq!(back, game, "the written log reads back as the game read");
 });
