@@ -7,7 +7,7 @@
 See the README's "Python" section.
 """
 
-from . import tenhou
+from . import mjai, tenhou
 from .env import AGENTS, FORMS, MODES, VARIANTS, Env, Field, Spec, TimeStep, fields, make
 from .evaluate import Evaluation, evaluate
 from .hands import score, shanten
@@ -26,6 +26,7 @@ __all__ = [
     "evaluate",
     "fields",
     "make",
+    "mjai",
     "replay",
     "score",
     "shanten",

@@ -1,4 +1,5 @@
-"""Tenhou logs (tenhou.net/6 JSON) as records for supervised learning, and replay checks."""
+"""Game logs (tenhou.net/6 JSON, or MJAI: the reader tells them apart) as records for supervised
+learning, and replay checks."""
 
 from __future__ import annotations
 

@@ -78,7 +78,7 @@ fn score(
 }
 
 fn read_game(path: &str) -> PyResult<tenhou::log::Game> {
-    tenhou::log::read_game(std::path::Path::new(path)).map_err(|e| PyValueError::new_err(e.to_string()))
+    rinshan_logs::read_log(std::path::Path::new(path)).map_err(|e| PyValueError::new_err(e.to_string()))
 }
 
 /// A log's rounds as decision records: per round the deciding seat, the action id, what the log
@@ -147,7 +147,7 @@ fn replay<'py>(py: Python<'py>, paths: Vec<String>, backend: &str) -> PyResult<B
     let files = tenhou::log::collect_files(&paths).map_err(|e| PyValueError::new_err(e.to_string()))?;
     let games = files
         .iter()
-        .map(|f| tenhou::log::read_game(f).map_err(|e| PyValueError::new_err(e.to_string())))
+        .map(|f| rinshan_logs::read_log(f).map_err(|e| PyValueError::new_err(e.to_string())))
         .collect::<PyResult<Vec<_>>>()?;
     let r = py
         .detach(|| tenhou::replay::replay(&games, backend))
@@ -202,6 +202,19 @@ fn fields(form: &str) -> PyResult<(usize, Vec<FieldRow>)> {
     Ok((form.bytes(), fields))
 }
 
+/// A log of either format as the text of `to` (`tenhou` or `mjai`): the conversion `rinshan
+/// convert` makes, for one game.
+#[pyfunction]
+fn convert_log(path: &str, to: &str) -> PyResult<String> {
+    let format = match to {
+        "tenhou" => rinshan_logs::Format::Tenhou,
+        "mjai" => rinshan_logs::Format::Mjai,
+        _ => return Err(PyValueError::new_err(format!("to={to:?}: give 'tenhou' or 'mjai'"))),
+    };
+    let game = read_game(path)?;
+    rinshan_logs::file::game_text(&game, format).map_err(|e| PyValueError::new_err(e.to_string()))
+}
+
 /// The variant's action names by id, yaku names by id, and starting points.
 #[pyfunction]
 fn variant_info(variant: &str) -> PyResult<(Vec<String>, Vec<String>, u32)> {
@@ -232,6 +245,7 @@ pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(score, m)?)?;
     m.add_function(wrap_pyfunction!(tenhou_read, m)?)?;
     m.add_function(wrap_pyfunction!(replay, m)?)?;
+    m.add_function(wrap_pyfunction!(convert_log, m)?)?;
     m.add_function(wrap_pyfunction!(fields, m)?)?;
     m.add_function(wrap_pyfunction!(variant_info, m)?)?;
     m.add_function(wrap_pyfunction!(names, m)?)?;

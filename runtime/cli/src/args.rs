@@ -20,6 +20,33 @@ pub struct BackendArg {
     pub backend: Backend,
 }
 
+/// `--format` of a written log.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FormatArg {
+    /// tenhou.net/6 JSON, one round per line (`.json`)
+    Tenhou,
+    /// MJAI events, one per line (`.mjson`)
+    Mjai,
+}
+
+impl FormatArg {
+    /// The logs crate's format.
+    pub fn format(self) -> rinshan_logs::Format {
+        match self {
+            FormatArg::Tenhou => rinshan_logs::Format::Tenhou,
+            FormatArg::Mjai => rinshan_logs::Format::Mjai,
+        }
+    }
+
+    /// The file extension a log of this format is written with.
+    pub fn extension(self) -> &'static str {
+        match self {
+            FormatArg::Tenhou => "json",
+            FormatArg::Mjai => "mjson",
+        }
+    }
+}
+
 /// What a run of whole games takes: variant, mode, backend, seed, threads.
 #[derive(clap::Args, Clone, Debug)]
 pub struct GameArgs {

@@ -5,6 +5,7 @@
 mod arena;
 mod args;
 mod bench;
+mod convert;
 mod error;
 mod observe;
 mod render;
@@ -40,9 +41,11 @@ enum Command {
     Score(score::Args),
     /// Self-play of the built-in agents (or a uniformly random policy): speed, game statistics and how each agent did, e.g. `rinshan selfplay --games 1000`
     Selfplay(selfplay::Args),
-    /// Replay tenhou.net/6 logs through the red variant and compare every round, e.g. `rinshan replay logs/`
+    /// Replay tenhou.net/6 or MJAI logs through the red variant and compare every round, e.g. `rinshan replay logs/`
     Replay(replay::Args),
-    /// A seat's observation at a position of a tenhou.net/6 log, e.g. `rinshan observe game.json --round 2 --step 10`
+    /// Convert logs between tenhou.net/6 JSON and MJAI, e.g. `rinshan convert game.json -o game.mjson`
+    Convert(convert::Args),
+    /// A seat's observation at a position of a log, e.g. `rinshan observe game.json --round 2 --step 10`
     Observe(observe::Args),
     /// Draw a table as SVG or PNG, or a whole logged game as an HTML replay, e.g. `rinshan render game.json --round 1 --step 20 --png -o board.png`
     Render(render::Args),
@@ -65,6 +68,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Score(a) => score::run(a),
         Command::Selfplay(a) => selfplay::run(a),
         Command::Replay(a) => replay::run(a),
+        Command::Convert(a) => convert::run(a),
         Command::Arena(a) => arena::run(a),
         Command::Observe(a) => observe::run(a),
         Command::Render(a) => render::run(a),

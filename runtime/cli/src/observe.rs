@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 
 use rinshan_engine::observe::{describe, field_values, fields_markdown, Form};
-use rinshan_logs::tenhou::log::read_game;
+use rinshan_logs::read_log;
 use rinshan_logs::tenhou::position::round_positions;
 use serde_json::json;
 
@@ -12,7 +12,7 @@ use crate::error::CliError;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// A tenhou.net/6 log (one game)
+    /// A log of one game, tenhou.net/6 or MJAI, plain or gzipped
     #[arg(required_unless_present = "fields")]
     log: Option<PathBuf>,
     /// Round: 0-based index into the log's rounds
@@ -43,7 +43,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
     let Some(path) = &args.log else {
         return Err(CliError::input("give a log file, or --fields"));
     };
-    let game = read_game(path).map_err(CliError::input)?;
+    let game = read_log(path).map_err(CliError::input)?;
     let positions = round_positions(&game, args.round).map_err(CliError::input)?;
     let Some(pos) = positions.get(args.step) else {
         let list: Vec<String> = positions

@@ -1,4 +1,4 @@
-//! `rinshan render`: a picture of a table, from a tenhou.net/6 log position, a self-play seed or a
+//! `rinshan render`: a picture of a table, from a log position (tenhou.net/6 or MJAI), a self-play seed or a
 //! saved state; `--png` rasterises it; `--html` writes a log's whole game as a replay page.
 
 use std::path::{Path, PathBuf};
@@ -7,7 +7,7 @@ use rinshan_engine::agents::Agent;
 use rinshan_engine::env::{Config, Env, Mode};
 use rinshan_engine::generated::kernel::GameState;
 use rinshan_engine::Variant;
-use rinshan_logs::tenhou::log::read_game;
+use rinshan_logs::read_log;
 use rinshan_logs::tenhou::position::round_replay;
 use rinshan_render::{Board, Options, RoundEndInput, TileMode};
 
@@ -16,7 +16,7 @@ use crate::error::CliError;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// A tenhou.net/6 log (one game; `selfplay --export` writes them)
+    /// A log of one game, tenhou.net/6 or MJAI, plain or gzipped (`selfplay --export` writes them)
     #[arg(conflicts_with_all = ["seed", "state"])]
     log: Option<PathBuf>,
     /// Round: 0-based index into the log's rounds
@@ -74,7 +74,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
         return Err(CliError::input("--html writes a logged game: give the log file"));
     }
     if let (Some(log), Some(html)) = (&args.log, &args.html) {
-        let game = read_game(log).map_err(CliError::input)?;
+        let game = read_log(log).map_err(CliError::input)?;
         let page = rinshan_render::html::replay_html(&game, args.pov).map_err(CliError::input)?;
         return write(html, page.as_bytes());
     }
@@ -115,7 +115,7 @@ fn write(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
 }
 
 fn log_board(path: &Path, round: usize, step: usize) -> Result<Board, CliError> {
-    let game = read_game(path).map_err(CliError::input)?;
+    let game = read_log(path).map_err(CliError::input)?;
     let (positions, end) = round_replay(&game, round).map_err(CliError::input)?;
     let with_names = |mut b: Board| {
         b.names = game.names.clone();

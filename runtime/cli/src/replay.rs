@@ -1,9 +1,10 @@
-//! `rinshan replay <files or folders>`: replays tenhou.net/6 logs through the red variant and
-//! reports how far rinshan agrees with them (see `rinshan_logs::tenhou::replay`).
+//! `rinshan replay <files or folders>`: replays tenhou.net/6 or MJAI logs through the red variant
+//! and reports how far rinshan agrees with them (see `rinshan_logs::tenhou::replay`).
 
 use std::path::PathBuf;
 
-use rinshan_logs::tenhou::log::{collect_files, read_game};
+use rinshan_logs::read_log;
+use rinshan_logs::tenhou::log::collect_files;
 use rinshan_logs::tenhou::replay::{replay, Report};
 
 use crate::args::BackendArg;
@@ -11,7 +12,8 @@ use crate::error::CliError;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// Log files (one round per line, tenhou.net/6 JSON) or folders of them (their *.json files)
+    /// Log files (tenhou.net/6 JSON or MJAI, plain or gzipped) or folders of them (*.json, *.mjson,
+    /// *.jsonl, each also .gz)
     #[arg(required = true)]
     paths: Vec<PathBuf>,
     #[command(flatten)]
@@ -49,12 +51,14 @@ pub fn run(args: Args) -> Result<(), CliError> {
     let backend = args.backend.backend;
     let files = collect_files(&args.paths).map_err(CliError::input)?;
     if files.is_empty() {
-        return Err(CliError::input("no log files found (folders are searched for *.json)"));
+        return Err(CliError::input(
+            "no log files found (folders are searched for *.json, *.mjson, *.jsonl, each also .gz)",
+        ));
     }
     let mut games = Vec::new();
     let mut unreadable = Vec::new();
     for f in &files {
-        match read_game(f) {
+        match read_log(f) {
             Ok(g) => games.push(g),
             Err(e) => unreadable.push(e.to_string()),
         }

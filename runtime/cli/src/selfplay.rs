@@ -1,7 +1,7 @@
 //! `rinshan selfplay`: the built-in agents (or a random legal policy) play whole games in a batch
 //! of envs; prints how fast, and how the games went (win, deal-in and draw rates, final scores,
 //! yaku frequencies, and per agent its average rank, score, win and deal-in rates); with
-//! `--export DIR`, writes each counted game as a tenhou.net/6 log.
+//! `--export DIR`, writes each counted game as a tenhou.net/6 or MJAI log.
 
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
@@ -12,10 +12,11 @@ use rinshan_engine::agents::Agent;
 use rinshan_engine::env::{env_seed, events, Backend, Config, Env, Mode};
 use rinshan_engine::random::Rng;
 use rinshan_engine::Variant;
-use rinshan_logs::tenhou::write::{game_text, Finished, Recorder};
+use rinshan_logs::file::write_log;
+use rinshan_logs::tenhou::write::{Finished, Recorder};
 use serde_json::json;
 
-use crate::args::GameArgs;
+use crate::args::{FormatArg, GameArgs};
 use crate::error::CliError;
 
 #[derive(clap::Args)]
@@ -38,10 +39,13 @@ pub struct Args {
     #[arg(long, value_delimiter = ',', default_value = "defensive,greedy,rule,random")]
     agents: Vec<String>,
     /// Also write each counted game as DIR/game-<n>.json (n = 1..games), a tenhou.net/6 log that
-    /// `rinshan replay` reads. Red variant, east or half games, CPU backend only (the games'
-    /// states are read after every step)
+    /// `rinshan replay` reads (or .mjson, see --export-format). Red variant, east or half games,
+    /// CPU backend only (the games' states are read after every step)
     #[arg(long, value_name = "DIR")]
     export: Option<PathBuf>,
+    /// The format of --export's logs
+    #[arg(long, value_enum, default_value = "tenhou")]
+    export_format: FormatArg,
 }
 
 /// The policy's random stream of env `i` (independent of the walls' seeds).
@@ -274,7 +278,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
                     games += 1;
                     bar.inc(1);
                     if let Some(dir) = &args.export {
-                        export(dir, games, i, &mut recorded)?;
+                        export(dir, args.export_format, games, i, &mut recorded)?;
                     }
                 }
             }
@@ -318,13 +322,13 @@ fn check_export(dir: &Path, config: &Config) -> Result<(), CliError> {
 }
 
 /// Writes the `n`-th counted game, which env `env` has just finished, from this step's records.
-fn export(dir: &Path, n: u64, env: usize, recorded: &mut Vec<Finished>) -> Result<(), CliError> {
+fn export(dir: &Path, format: FormatArg, n: u64, env: usize, recorded: &mut Vec<Finished>) -> Result<(), CliError> {
     let at = recorded.iter().position(|f| f.env == env);
     let done = at
         .map(|i| recorded.remove(i))
         .ok_or_else(|| CliError::failure(format!("game {n} (env {env}) was not recorded")))?;
-    let path = dir.join(format!("game-{n}.json"));
-    std::fs::write(&path, game_text(&done.game)).map_err(|e| CliError::failure(format!("{}: {e}", path.display())))
+    let path = dir.join(format!("game-{n}.{}", format.extension()));
+    write_log(&path, &done.game, format.format()).map_err(CliError::failure)
 }
 
 fn ratio(a: u64, b: u64) -> f64 {

@@ -41,7 +41,7 @@ mod tests;
 mod value;
 
 pub use moves::{Discard, Draw, Rel};
-pub(crate) use result::tenhou_yaku;
+pub(crate) use result::{our_yaku, points_total, tenhou_yaku};
 pub use result::{Limit, LoggedDraw, LoggedWin, Outcome};
 
 use moves::{parse_discard, parse_draw, tile};
@@ -171,7 +171,12 @@ pub fn read_game(path: &Path) -> Result<Game, LogError> {
     parse_game(&name, &text)
 }
 
-/// The files to read: files as given, folders replaced by their `*.json` files sorted by name.
+/// The file names a folder's logs go by: tenhou.net/6 (`.json`) and MJAI (`.mjson`, `.jsonl`),
+/// each also gzipped (`.gz`).
+pub const LOG_EXTENSIONS: [&str; 6] = [".json", ".mjson", ".jsonl", ".json.gz", ".mjson.gz", ".jsonl.gz"];
+
+/// The files to read: files as given, folders replaced by their log files (see
+/// [`LOG_EXTENSIONS`]) sorted by name.
 pub fn collect_files(paths: &[PathBuf]) -> Result<Vec<PathBuf>, LogError> {
     let mut files = Vec::new();
     for path in paths {
@@ -187,12 +192,19 @@ pub fn collect_files(paths: &[PathBuf]) -> Result<Vec<PathBuf>, LogError> {
         for entry in std::fs::read_dir(path).map_err(io)? {
             let entry = entry.map_err(io)?;
             let file = entry.path();
-            if file.extension().is_some_and(|e| e == "json") && file.is_file() {
+            let name = file
+                .file_name()
+                .map(|n| n.to_string_lossy().to_lowercase())
+                .unwrap_or_default();
+            if LOG_EXTENSIONS.iter().any(|e| name.ends_with(e)) && file.is_file() {
                 found.push(file);
             }
         }
         if found.is_empty() {
-            return Err(LogError::file(&name, "the folder has no .json files"));
+            return Err(LogError::file(
+                &name,
+                format!("the folder has no log files ({})", LOG_EXTENSIONS.join(", ")),
+            ));
         }
         found.sort();
         files.extend(found);
@@ -282,6 +294,21 @@ pub fn parse_game(path: &str, text: &str) -> Result<Game, LogError> {
         return Err(LogError::file(path, "no rounds: the file has no records"));
     }
     Ok(game)
+}
+
+/// Reads one round's 17-element array as found at `line` of `file` (how a reader of another
+/// format holds its rounds to this format's rules: what reads here is a round).
+pub(crate) fn parse_round_value(file: &str, line: usize, v: &Value, red_fives: bool) -> Result<Round, LogError> {
+    let mut ctx = Ctx {
+        file,
+        line,
+        round: None,
+    };
+    let round = parse_round(&mut ctx, None, v)?;
+    if !red_fives {
+        check_no_red(&ctx, &round)?;
+    }
+    Ok(round)
 }
 
 /// Where in a file parsing is, to name it in errors.

@@ -34,6 +34,28 @@ pub struct Move {
     pub what: String,
 }
 
+/// One entry of the log, placed in the order of play.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Played {
+    /// Seat's draw entry: a tile from the wall (`replacement`: from the dead wall after a kan)
+    /// or a call.
+    Draw {
+        /// The seat.
+        seat: usize,
+        /// The entry.
+        draw: Draw,
+        /// A replacement draw after a kan.
+        replacement: bool,
+    },
+    /// Seat's discard entry (a discard, riichi, a kan, or the `0` after an open kan).
+    Discard {
+        /// The seat.
+        seat: usize,
+        /// The entry.
+        discard: Discard,
+    },
+}
+
 /// A round ready to replay.
 #[derive(Debug, Clone)]
 pub struct Plan {
@@ -43,6 +65,8 @@ pub struct Plan {
     pub moves: Vec<Move>,
     /// Riichi sticks each seat put on the table (declarations whose discard was not ronned).
     pub riichi_paid: [u32; 4],
+    /// Every entry of the log in the order of play (what an event log such as MJAI lists).
+    pub order: Vec<Played>,
 }
 
 impl Plan {
@@ -77,6 +101,7 @@ struct Walker<'a> {
     riichi: [Option<usize>; 4],
     /// The seat whose discard (or kan) the round's rons took, once the walk meets it.
     ronned: Option<usize>,
+    order: Vec<Played>,
 }
 
 impl<'a> Walker<'a> {
@@ -101,6 +126,11 @@ impl<'a> Walker<'a> {
             ));
         };
         self.drawn[p] += 1;
+        self.order.push(Played::Draw {
+            seat: p,
+            draw: *d,
+            replacement,
+        });
         if replacement {
             self.rinshan.push(*t);
         } else {
@@ -180,6 +210,10 @@ impl<'a> Walker<'a> {
                 return self.end_of_turns(p).map(|()| None);
             };
             self.discarded[p] += 1;
+            self.order.push(Played::Discard {
+                seat: p,
+                discard: entry,
+            });
             let (tile, tsumogiri) = match entry {
                 Discard::Tile(t) => (Some(t), false),
                 Discard::Tsumogiri => (None, true),
@@ -250,6 +284,11 @@ impl<'a> Walker<'a> {
                 return Ok(Some(((p + 1) % 4, false)));
             };
             self.drawn[q] += 1;
+            self.order.push(Played::Draw {
+                seat: q,
+                draw: call,
+                replacement: false,
+            });
             let name = discarded.name();
             match call {
                 Draw::Chi { called, own } => {
@@ -277,7 +316,13 @@ impl<'a> Walker<'a> {
                 Draw::OpenKan { .. } => {
                     self.push(q, k::ACTION_OPEN_KAN, true, format!("open kan {name} from seat {p}"));
                     match self.round.discards[q].get(self.discarded[q]) {
-                        Some(Discard::Nothing) => self.discarded[q] += 1,
+                        Some(Discard::Nothing) => {
+                            self.discarded[q] += 1;
+                            self.order.push(Played::Discard {
+                                seat: q,
+                                discard: Discard::Nothing,
+                            });
+                        }
                         _ => {
                             return Err(format!(
                                 "discards of seat {q}, entry {}: an open kan is followed by `0`",
@@ -364,6 +409,7 @@ pub fn plan(round: &Round) -> Result<Plan, String> {
             moves: Vec::new(),
             riichi: [None; 4],
             ronned: None,
+            order: Vec::new(),
         };
         match w.walk() {
             Ok(()) => return finish(w),
@@ -402,5 +448,6 @@ fn finish(w: Walker) -> Result<Plan, String> {
         wall: build_wall(round, &w.live, &w.rinshan)?,
         moves: w.moves,
         riichi_paid,
+        order: w.order,
     })
 }

@@ -43,7 +43,8 @@ use super::log::Game;
 
 pub use game::GameRecorder;
 pub use json::game_text;
-pub(crate) use outcome::win_yaku;
+pub(crate) use json::round_value;
+pub(crate) use outcome::{base_points, limit_of, payment, points_text, win_yaku};
 
 /// Why a game could not be recorded.
 #[derive(Debug, Clone, PartialEq)]

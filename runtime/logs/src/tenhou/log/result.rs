@@ -202,6 +202,31 @@ fn yaku_name(tenhou: &str) -> Option<&'static str> {
     YAKU.iter().find(|(name, _)| *name == tenhou).map(|(_, ours)| *ours)
 }
 
+/// Our name as a `&'static str`, for a yaku named in our words (as MJAI logs written here do).
+pub(crate) fn our_yaku(name: &str) -> Option<&'static str> {
+    YAKU.iter().find(|(_, ours)| *ours == name).map(|(_, ours)| *ours)
+}
+
+/// What a win's points text says the hand is worth before honba and sticks: a ron's payment,
+/// or a tsumo's payments summed (`500-1000点` from three seats, `2600点∀` from each of three).
+pub(crate) fn points_total(text: &str) -> Option<u32> {
+    let rest = text.rsplit(['符', '飜']).next().unwrap_or(text);
+    let rest = LIMITS
+        .iter()
+        .find_map(|(name, _)| rest.strip_prefix(name))
+        .unwrap_or(rest);
+    let (amount, each) = match rest.strip_suffix('∀') {
+        Some(amount) => (amount, true),
+        None => (rest, false),
+    };
+    let amount = amount.strip_suffix('点')?;
+    match amount.split_once('-') {
+        Some((child, dealer)) => Some(2 * number(child).ok()? + number(dealer).ok()?),
+        None if each => Some(3 * number(amount).ok()?),
+        None => number(amount).ok(),
+    }
+}
+
 /// The name Tenhou writes for our yaku `ours` and where Tenhou lists it among a win's yaku. The
 /// yakuhai of winds need the seat's and the round's wind (0 = East .. 3 = North).
 pub(crate) fn tenhou_yaku(ours: &str, seat_wind: usize, round_wind: usize) -> Option<(&'static str, usize)> {

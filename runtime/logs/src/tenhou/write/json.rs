@@ -31,7 +31,7 @@ pub(super) fn round_line(game: &Game, round: &Round) -> String {
 }
 
 /// The 17-element round array (see [`crate::tenhou::log`]).
-pub(super) fn round_value(r: &Round) -> Value {
+pub(crate) fn round_value(r: &Round) -> Value {
     let codes = |tiles: &[Tile]| Value::from(tiles.iter().map(|t| t.tenhou_code()).collect::<Vec<u8>>());
     let mut items = vec![
         json!([r.kyoku, r.honba, r.sticks]),

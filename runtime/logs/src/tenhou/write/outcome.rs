@@ -14,12 +14,12 @@ use rinshan_engine::Variant;
 
 /// Base points of a hand: fu x 2^(han+2) up to the limits (the scoring kernel's own rule, with
 /// this variant's `kiriage_mangan` and `kazoe_yakuman`).
-pub(super) fn base_points(han: u32, fu: u32, yakuman: u32) -> u32 {
+pub(crate) fn base_points(han: u32, fu: u32, yakuman: u32) -> u32 {
     k::base_points(han, fu, yakuman)
 }
 
 /// The limit a base reaches, named in the points text instead of fu and han.
-pub(super) fn limit_of(base: u32) -> Option<Limit> {
+pub(crate) fn limit_of(base: u32) -> Option<Limit> {
     match base {
         8000.. => Some(Limit::Yakuman),
         6000.. => Some(Limit::Sanbaiman),
@@ -31,7 +31,7 @@ pub(super) fn limit_of(base: u32) -> Option<Limit> {
 }
 
 /// What a hand of `base` points costs before honba (the scoring kernel's `hand_payments`).
-pub(super) fn payment(base: u32, dealer: bool, tsumo: bool) -> Payment {
+pub(crate) fn payment(base: u32, dealer: bool, tsumo: bool) -> Payment {
     let [ron, dealer_share, others] = k::hand_payments(base, dealer);
     match (tsumo, dealer) {
         (false, _) => Payment::Ron { discarder: ron },
@@ -45,7 +45,7 @@ pub(super) fn payment(base: u32, dealer: bool, tsumo: bool) -> Payment {
 
 /// `30符4飜7700点`, `30符2飜500-1000点` (a non-dealer's tsumo: non-dealers, dealer),
 /// `40符3飜2600点∀` (a dealer's tsumo: each pays), `満貫8000点`.
-pub(super) fn points_text(fu: u32, han: u32, limit: Option<Limit>, pay: Payment) -> String {
+pub(crate) fn points_text(fu: u32, han: u32, limit: Option<Limit>, pay: Payment) -> String {
     let hand = match limit {
         Some(l) => l.tenhou_name().to_string(),
         None => format!("{fu}符{han}飜"),
