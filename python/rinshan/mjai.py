@@ -7,8 +7,7 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import Union
 
-from . import _core
-from . import tenhou
+from . import _core, tenhou
 
 
 def read(path: Union[str, Path], observation: Union[str, Sequence[str]] = ("planes",)) -> dict:

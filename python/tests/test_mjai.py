@@ -30,7 +30,7 @@ def test_an_mjai_log_gives_the_records_of_its_tenhou_form(log_path, tmp_path):
 
 
 def test_selfplay_exports_mjai_that_reads_as_the_same_games(cli, tmp_path):
-    args = "selfplay --agents rule,greedy,defensive,random --batch 2 --games 2 --seed 3 --threads 1 --json"
+    args = "selfplay --agents rule,greedy,defensive,random --batch 2 --games 2 --seed 3 --threads 1"
     for fmt in ("tenhou", "mjai"):
         out = tmp_path / fmt
         subprocess.run(
