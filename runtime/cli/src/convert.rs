@@ -1,5 +1,6 @@
 //! `rinshan convert <files or folders> [-o OUT] [--to tenhou|mjai] [--gzip]`: logs from one format
-//! to the other (tenhou.net/6 JSON and MJAI; the input's format is read off its text). One file
+//! to another (tenhou.net/6 JSON and MJAI both ways, Tenhou's mjlog XML to either; the input's
+//! format is read off its text). One file
 //! goes to `-o FILE` or to standard output; several, or a folder, go into the folder `-o DIR`,
 //! each under its own name with the new format's extension. A file that cannot be read or
 //! converted is reported and skipped; the others are written.
@@ -15,14 +16,14 @@ use crate::error::CliError;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// Log files (tenhou.net/6 JSON or MJAI, plain or gzipped) or folders of them
+    /// Log files (tenhou.net/6 JSON, MJAI or mjlog XML, plain or gzipped) or folders of them
     #[arg(required = true)]
     paths: Vec<PathBuf>,
     /// Where to write: a file for one input (standard output when left out), a folder for several
     #[arg(short, long)]
     output: Option<PathBuf>,
     /// The format to write (default: from -o's extension, .mjson/.jsonl for MJAI; else the
-    /// other format than each input's)
+    /// other format than each input's, tenhou.net/6 for mjlog)
     #[arg(long, value_enum)]
     to: Option<FormatArg>,
     /// Gzip what is written into a folder (a file given by -o is gzipped when it ends in .gz)
@@ -30,11 +31,11 @@ pub struct Args {
     gzip: bool,
 }
 
-/// The other format than `from`.
+/// The format a log converts to by default.
 fn other(from: Format) -> Format {
     match from {
         Format::Tenhou => Format::Mjai,
-        Format::Mjai => Format::Tenhou,
+        Format::Mjai | Format::Mjlog => Format::Tenhou,
     }
 }
 
@@ -42,6 +43,7 @@ fn extension(format: Format) -> &'static str {
     match format {
         Format::Tenhou => FormatArg::Tenhou.extension(),
         Format::Mjai => FormatArg::Mjai.extension(),
+        Format::Mjlog => "xml",
     }
 }
 

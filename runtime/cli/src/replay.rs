@@ -1,4 +1,4 @@
-//! `rinshan replay <files or folders>`: replays tenhou.net/6 or MJAI logs through the red variant
+//! `rinshan replay <files or folders>`: replays tenhou.net/6, MJAI or mjlog logs through the red variant
 //! and reports how far rinshan agrees with them (see `rinshan_logs::tenhou::replay`).
 
 use std::path::PathBuf;
@@ -12,8 +12,8 @@ use crate::error::CliError;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// Log files (tenhou.net/6 JSON or MJAI, plain or gzipped) or folders of them (*.json, *.mjson,
-    /// *.jsonl, each also .gz)
+    /// Log files (tenhou.net/6 JSON, MJAI or mjlog XML, plain or gzipped) or folders of them
+    /// (*.json, *.mjson, *.jsonl, *.xml, *.mjlog, each also .gz)
     #[arg(required = true)]
     paths: Vec<PathBuf>,
     #[command(flatten)]
@@ -52,7 +52,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
     let files = collect_files(&args.paths).map_err(CliError::input)?;
     if files.is_empty() {
         return Err(CliError::input(
-            "no log files found (folders are searched for *.json, *.mjson, *.jsonl, each also .gz)",
+            "no log files found (folders are searched for *.json, *.mjson, *.jsonl, *.xml, *.mjlog, each also .gz)",
         ));
     }
     let mut games = Vec::new();

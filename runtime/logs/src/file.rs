@@ -1,6 +1,7 @@
-//! Log files in either format, plain or gzipped: the reader tells the format from the text (an
-//! MJAI log's first line is an event with a `type`; anything else is read as tenhou.net/6), the
-//! writer from the file name (`.mjson`, `.jsonl` or `--format`; `.gz` compresses).
+//! Log files in any format, plain or gzipped: the reader tells the format from the text (an
+//! mjlog starts with `<mjloggm`; an MJAI log's first line is an event with a `type`; anything
+//! else is read as tenhou.net/6), the writer from the file name (`.mjson`, `.jsonl` or
+//! `--format`; `.gz` compresses). mjlog is read only.
 
 use std::io::{Read, Write};
 use std::path::Path;
@@ -20,6 +21,8 @@ pub enum Format {
     Tenhou,
     /// MJAI, one event per line.
     Mjai,
+    /// Tenhou's mjlog XML (read only).
+    Mjlog,
 }
 
 impl Format {
@@ -71,7 +74,9 @@ pub fn log_text(name: &str, bytes: &[u8]) -> Result<String, LogError> {
 /// Reads a log of either format from its bytes; `name` only names it in messages.
 pub fn parse_log(name: &str, bytes: &[u8]) -> Result<(Game, Format), LogError> {
     let text = log_text(name, bytes)?;
-    if mjai::read::is_mjai(&text) {
+    if crate::mjlog::read::is_mjlog(&text) {
+        Ok((crate::mjlog::read::parse_game(name, &text)?, Format::Mjlog))
+    } else if mjai::read::is_mjai(&text) {
         Ok((mjai::read::parse_game(name, &text)?, Format::Mjai))
     } else {
         Ok((crate::tenhou::log::parse_game(name, &text)?, Format::Tenhou))
@@ -92,11 +97,19 @@ pub fn read_log(path: &Path) -> Result<Game, LogError> {
     parse_log(&name, &bytes).map(|(game, _)| game)
 }
 
-/// A game as the text of a log of `format`.
+/// A game as the text of a log of `format` (tenhou.net/6 or MJAI: mjlog is read, not written).
 pub fn game_text(game: &Game, format: Format) -> Result<String, LogError> {
     match format {
         Format::Tenhou => Ok(tenhou_write::game_text(game)),
         Format::Mjai => mjai::write::game_text(game),
+        Format::Mjlog => Err(LogError {
+            file: game.path.clone(),
+            line: None,
+            column: None,
+            round: None,
+            field: None,
+            message: "mjlog is read only: write tenhou.net/6 or MJAI".into(),
+        }),
     }
 }
 

@@ -378,14 +378,15 @@ async fn tiles_sprite(Path(mode): Path<String>) -> Result<Response, ApiError> {
 const MAX_REPLAY_ROUNDS: usize = 32;
 static REPLAYS: tokio::sync::Semaphore = tokio::sync::Semaphore::const_new(1);
 
-/// `POST /api/replay` with a tenhou.net/6 log as the body: the replay page of that game.
+/// `POST /api/replay` with a log as the body (tenhou.net/6, MJAI or mjlog XML): the replay page
+/// of that game.
 async fn replay(Text(body): Text) -> Result<Response, ApiError> {
     replay_page("upload", &body).await
 }
 
 /// The replay page of a log.
 async fn replay_page(name: &str, body: &str) -> Result<Response, ApiError> {
-    let game = rinshan_logs::tenhou::log::parse_game(name, body).map_err(unprocessable)?;
+    let (game, _) = rinshan_logs::file::parse_log(name, body.as_bytes()).map_err(unprocessable)?;
     if game.rounds.is_empty() || game.rounds.len() > MAX_REPLAY_ROUNDS {
         return Err(unprocessable(format!(
             "the log has {} rounds: a game of 1 to {MAX_REPLAY_ROUNDS} is replayed",

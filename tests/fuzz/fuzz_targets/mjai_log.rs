@@ -1,6 +1,6 @@
 //! A log file as a user gives it to `rinshan replay`, `rinshan convert` or Python's
-//! `rinshan.mjai.read`: bytes that may be gzipped, then MJAI events (or tenhou.net/6 JSON, which
-//! the reader tells apart). Read, each round planned and stepped through, the game replayed,
+//! `rinshan.mjai.read`: bytes that may be gzipped, then MJAI events, Tenhou's mjlog XML or
+//! tenhou.net/6 JSON, which the reader tells apart. Read, each round planned and stepped through, the game replayed,
 //! written in both formats and read back: an error or a mismatch in the report, never a panic;
 //! a game that reads converts to either format and back to the same game.
 #![no_main]

@@ -87,46 +87,79 @@ pub fn is_mjai(text: &str) -> bool {
 /// Reads the text of an MJAI log; `path` only names it in messages.
 pub fn parse_game(path: &str, text: &str) -> Result<Game, LogError> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    let mut reader = Reader {
-        game: Game {
-            path: path.to_string(),
-            rule: String::new(),
-            red_fives: true,
-            names: Default::default(),
-            rounds: Vec::new(),
-        },
-        round: None,
-        finished: None,
-        started: false,
-        ended: false,
-    };
+    let mut builder = GameBuilder::new(path);
     for (index, line) in text.lines().enumerate() {
         if line.trim().is_empty() {
             continue;
         }
-        let err = |message: String, round: Option<String>| LogError {
-            file: path.to_string(),
-            line: Some(index + 1),
-            column: None,
-            round,
-            field: None,
-            message,
-        };
         let event: Event = serde_json::from_str(line).map_err(|e| {
             let position = format!(" at line {} column {}", e.line(), e.column());
             let full = e.to_string();
             let message = full.strip_suffix(&position).unwrap_or(&full).to_string();
             LogError {
+                line: Some(index + 1),
                 column: u32::try_from(e.column()).ok(),
-                ..err(format!("not an MJAI event: {message}"), None)
+                ..file_error(path, format!("not an MJAI event: {message}"))
             }
         })?;
+        builder.event(event, index + 1)?;
+    }
+    builder.finish()
+}
+
+fn file_error(path: &str, message: String) -> LogError {
+    LogError {
+        file: path.to_string(),
+        line: None,
+        column: None,
+        round: None,
+        field: None,
+        message,
+    }
+}
+
+/// A game put together from MJAI events in the order of play, by any front end that can say
+/// its format's moves as MJAI events (the MJAI text reader, the mjlog reader).
+pub struct GameBuilder {
+    reader: Reader,
+}
+
+impl GameBuilder {
+    /// An empty game; `path` names the source in messages.
+    pub fn new(path: &str) -> GameBuilder {
+        GameBuilder {
+            reader: Reader {
+                game: Game {
+                    path: path.to_string(),
+                    rule: String::new(),
+                    red_fives: true,
+                    names: Default::default(),
+                    rounds: Vec::new(),
+                },
+                round: None,
+                finished: None,
+                started: false,
+                ended: false,
+            },
+        }
+    }
+
+    /// The next event, found at `line` of the source (1-based; a single-line format gives the
+    /// position it has).
+    pub fn event(&mut self, event: Event, line: usize) -> Result<(), LogError> {
+        let reader = &mut self.reader;
+        let path = reader.game.path.clone();
+        let err = |message: String, round: Option<String>| LogError {
+            line: Some(line),
+            round,
+            ..file_error(&path, message)
+        };
         let round = reader.round.as_ref().map(|r| round_name(r.round.kyoku, r.round.honba));
-        reader.event(event, index + 1).map_err(|m| err(m, round))?;
+        reader.event(event, line).map_err(|m| err(m, round))?;
         if let Some(done) = reader.finished.take() {
             // A round holds to the rules of a tenhou.net/6 round (a draw before each discard,
             // calls of real melds, a han count the yaku add up to), checked by that reader.
-            let back = parse_round_value(path, done.line, &round_value(&done), reader.game.red_fives)?;
+            let back = parse_round_value(&path, done.line, &round_value(&done), reader.game.red_fives)?;
             if back != done {
                 return Err(err(
                     "the round's events do not read back as one round".into(),
@@ -135,38 +168,27 @@ pub fn parse_game(path: &str, text: &str) -> Result<Game, LogError> {
             }
             reader.game.rounds.push(done);
         }
+        Ok(())
     }
-    if reader.round.is_some() {
-        return Err(LogError {
-            file: path.to_string(),
-            line: None,
-            column: None,
-            round: None,
-            field: None,
-            message: "the log stops inside a round (no end_kyoku)".into(),
-        });
+
+    /// The game, once every event is in.
+    pub fn finish(self) -> Result<Game, LogError> {
+        let reader = self.reader;
+        let path = &reader.game.path;
+        if reader.round.is_some() {
+            return Err(file_error(path, "the log stops inside a round (no end_kyoku)".into()));
+        }
+        if !reader.started {
+            return Err(file_error(
+                path,
+                "no start_game event: not an MJAI log of a game".into(),
+            ));
+        }
+        if reader.game.rounds.is_empty() {
+            return Err(file_error(path, "the log holds no round (no start_kyoku)".into()));
+        }
+        Ok(reader.game)
     }
-    if !reader.started {
-        return Err(LogError {
-            file: path.to_string(),
-            line: None,
-            column: None,
-            round: None,
-            field: None,
-            message: "no start_game event: not an MJAI log of a game".into(),
-        });
-    }
-    if reader.game.rounds.is_empty() {
-        return Err(LogError {
-            file: path.to_string(),
-            line: None,
-            column: None,
-            round: None,
-            field: None,
-            message: "the log holds no round (no start_kyoku)".into(),
-        });
-    }
-    Ok(reader.game)
 }
 
 struct Reader {

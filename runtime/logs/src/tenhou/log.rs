@@ -41,7 +41,7 @@ mod tests;
 mod value;
 
 pub use moves::{Discard, Draw, Rel};
-pub(crate) use result::{our_yaku, points_total, tenhou_yaku};
+pub(crate) use result::{our_yaku, points_total, tenhou_yaku, yaku_name as tenhou_yaku_name};
 pub use result::{Limit, LoggedDraw, LoggedWin, Outcome};
 
 use moves::{parse_discard, parse_draw, tile};
@@ -171,9 +171,20 @@ pub fn read_game(path: &Path) -> Result<Game, LogError> {
     parse_game(&name, &text)
 }
 
-/// The file names a folder's logs go by: tenhou.net/6 (`.json`) and MJAI (`.mjson`, `.jsonl`),
-/// each also gzipped (`.gz`).
-pub const LOG_EXTENSIONS: [&str; 6] = [".json", ".mjson", ".jsonl", ".json.gz", ".mjson.gz", ".jsonl.gz"];
+/// The file names a folder's logs go by: tenhou.net/6 (`.json`), MJAI (`.mjson`, `.jsonl`) and
+/// mjlog (`.xml`, `.mjlog`), each also gzipped (`.gz`).
+pub const LOG_EXTENSIONS: [&str; 10] = [
+    ".json",
+    ".mjson",
+    ".jsonl",
+    ".xml",
+    ".mjlog",
+    ".json.gz",
+    ".mjson.gz",
+    ".jsonl.gz",
+    ".xml.gz",
+    ".mjlog.gz",
+];
 
 /// The files to read: files as given, folders replaced by their log files (see
 /// [`LOG_EXTENSIONS`]) sorted by name.

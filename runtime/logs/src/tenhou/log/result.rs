@@ -198,7 +198,7 @@ const YAKU: [(&str, &str); 56] = [
 const WINDS: [char; 4] = ['東', '南', '西', '北'];
 
 /// Our name for a yaku Tenhou writes as `tenhou`.
-fn yaku_name(tenhou: &str) -> Option<&'static str> {
+pub(crate) fn yaku_name(tenhou: &str) -> Option<&'static str> {
     YAKU.iter().find(|(name, _)| *name == tenhou).map(|(_, ours)| *ours)
 }
 

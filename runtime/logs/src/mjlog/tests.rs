@@ -1,0 +1,112 @@
+//! The real Phoenix-room games in tests/data/mjlog, each as Tenhou's mjlog XML and as the
+//! tenhou.net/6 JSON Tenhou's converter gives for it: both must read as the same game, and it
+//! must replay exactly.
+
+use std::path::PathBuf;
+
+use rinshan_engine::env::Backend;
+
+use super::read::{is_mjlog, parse_game};
+use crate::tenhou::log::{collect_files, Game};
+use crate::tenhou::replay::replay;
+use crate::tenhou::write::game_text;
+
+const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../tests/data/mjlog");
+
+/// Each XML log with its JSON twin, both read.
+fn pairs() -> Vec<(Game, Game)> {
+    let mut out = Vec::new();
+    let files = collect_files(&[PathBuf::from(DATA)]).expect("the data folder lists");
+    for json in files.into_iter().filter(|f| f.extension().is_some_and(|e| e == "json")) {
+        let xml = json.with_extension("xml");
+        let xml_text = std::fs::read_to_string(&xml).expect("each JSON log has its XML twin");
+        assert!(is_mjlog(&xml_text), "{}", xml.display());
+        let from_xml = parse_game(&xml.display().to_string(), &xml_text).unwrap_or_else(|e| panic!("{e}"));
+        let json_text = std::fs::read_to_string(&json).expect("reads");
+        let from_json =
+            crate::tenhou::log::parse_game(&json.display().to_string(), &json_text).unwrap_or_else(|e| panic!("{e}"));
+        out.push((from_xml, from_json));
+    }
+    out
+}
+
+#[test]
+fn each_mjlog_reads_as_its_tenhou_json_twin() {
+    let pairs = pairs();
+    assert_eq!(pairs.len(), 6);
+    let mut rounds = 0;
+    for (xml, json) in &pairs {
+        assert_eq!(xml.rule, json.rule, "{}", xml.path);
+        assert_eq!(xml.red_fives, json.red_fives);
+        assert_eq!(xml.names, json.names);
+        assert_eq!(xml.rounds.len(), json.rounds.len(), "{}", xml.path);
+        for (a, b) in xml.rounds.iter().zip(&json.rounds) {
+            let (mut a, mut b) = (a.clone(), b.clone());
+            (a.line, b.line) = (0, 0);
+            for seat in 0..4 {
+                assert_eq!(a.hands[seat], b.hands[seat], "{}: {b}: hand of seat {seat}", xml.path);
+                assert_eq!(a.draws[seat], b.draws[seat], "{}: {b}: draws of seat {seat}", xml.path);
+                assert_eq!(
+                    a.discards[seat], b.discards[seat],
+                    "{}: {b}: discards of seat {seat}",
+                    xml.path
+                );
+            }
+            assert_eq!(a.outcome, b.outcome, "{}: {b}", xml.path);
+            assert_eq!(a, b, "{}: {b}", xml.path);
+        }
+        assert_eq!(game_text(xml), game_text(json));
+        rounds += xml.rounds.len();
+    }
+    assert!(rounds > 50, "{rounds}");
+}
+
+#[test]
+fn the_mjlog_games_replay_exactly() {
+    let games: Vec<Game> = pairs().into_iter().map(|(xml, _)| xml).collect();
+    let report = replay(&games, Backend::Cpu).expect("the CPU env runs");
+    assert!(report.all_agree(), "{report:?}");
+}
+
+#[test]
+fn what_rinshan_does_not_play_or_cannot_read_is_refused_by_name() {
+    let xml = std::fs::read_to_string(format!("{DATA}/2019021004gm-00a9-0000-e2f6516d.xml")).expect("reads");
+    let refusal = |text: &str| parse_game("t.xml", text).expect_err("refused").to_string();
+    let cases: [(String, &str); 6] = [
+        (xml.replace("type=\"169\"", "type=\"185\""), "three-player (flag 0x10)"),
+        (xml.replace("type=\"169\"", "type=\"173\""), "no kuitan (flag 0x04)"),
+        (xml[..xml.len() / 2].to_string(), "t.xml: line 1, column"),
+        (
+            xml.replacen("<N who=\"3\" m=\"54647\" />", "<N who=\"3\" m=\"64516\" />", 1),
+            "names no tile",
+        ),
+        (
+            xml.replacen("yaku=\"28,2,", "yaku=\"36,2,", 1),
+            "yaku id 36 is not one rinshan scores",
+        ),
+        (
+            xml.replacen("who=\"2\" fromWho=\"2\"", "who=\"7\" fromWho=\"2\"", 1),
+            "`who` \"7\" is not a seat 0-3",
+        ),
+    ];
+    for (text, expected) in cases {
+        assert_ne!(text, xml, "the case changes the log ({expected})");
+        let message = refusal(&text);
+        assert!(message.contains(expected), "{expected}: {message}");
+    }
+    // With red fives off (GO flag 0x02) ids 16, 52 and 88 are plain fives, and the rule's name
+    // loses its 赤.
+    let red = parse_game("t.xml", &xml).expect("reads");
+    let plain = parse_game("t.xml", &xml.replace("type=\"169\"", "type=\"171\"")).expect("reads");
+    assert_eq!(plain.rule, "鳳南喰");
+    assert!(!plain.red_fives);
+    let reds = |g: &Game| {
+        g.rounds
+            .iter()
+            .flat_map(|r| r.hands.iter().flatten())
+            .filter(|t| t.is_red())
+            .count()
+    };
+    assert!(reds(&red) > 0);
+    assert_eq!(reds(&plain), 0);
+}
