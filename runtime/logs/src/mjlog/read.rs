@@ -342,7 +342,8 @@ impl State {
             }
             "AGARI" => self.agari(tag),
             "RYUUKYOKU" => self.ryuukyoku(tag),
-            _ => Ok(Vec::new()),
+            "mjloggm" | "SHUFFLE" | "TAIKYOKU" | "BYE" | "FURITEN" => Ok(Vec::new()),
+            _ => Err("not a tag of Tenhou's mjlog format".into()),
         }
     }
 

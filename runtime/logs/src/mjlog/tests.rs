@@ -72,7 +72,11 @@ fn the_mjlog_games_replay_exactly() {
 fn what_rinshan_does_not_play_or_cannot_read_is_refused_by_name() {
     let xml = std::fs::read_to_string(format!("{DATA}/2019021004gm-00a9-0000-e2f6516d.xml")).expect("reads");
     let refusal = |text: &str| parse_game("t.xml", text).expect_err("refused").to_string();
-    let cases: [(String, &str); 6] = [
+    let cases: [(String, &str); 7] = [
+        (
+            xml.replacen("<DORA ", "<DORAX ", 1),
+            "<DORAX>: not a tag of Tenhou's mjlog format",
+        ),
         (xml.replace("type=\"169\"", "type=\"185\""), "three-player (flag 0x10)"),
         (xml.replace("type=\"169\"", "type=\"173\""), "no kuitan (flag 0x04)"),
         (xml[..xml.len() / 2].to_string(), "t.xml: line 1, column"),
