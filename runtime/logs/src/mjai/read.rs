@@ -393,6 +393,15 @@ impl Open {
             .collect()
     }
 
+    /// Seat `actor` calls `pai` from `target`: the seat, the tile and where it came from.
+    fn call(&mut self, actor: u8, target: u8, pai: Pai) -> Result<(usize, Tile, Rel), String> {
+        let s = actor_of(actor)?;
+        let called = known(pai, "the tile called")?;
+        let from = self.called(s, actor_of(target)?, called)?;
+        self.take(s, called);
+        Ok((s, called, from))
+    }
+
     fn called(&mut self, actor: usize, target: usize, pai: Tile) -> Result<Rel, String> {
         match self.last_discard.take() {
             Some((s, t)) if s == target && t == pai => rel(actor, target),
@@ -441,13 +450,10 @@ impl Open {
                 pai,
                 consumed,
             } => {
-                let s = actor_of(actor)?;
-                let called = known(pai, "the tile called")?;
-                if actor_of(target)? != (s + 3) % 4 {
+                let (s, called, from) = self.call(actor, target, pai)?;
+                if from != Rel::Left {
                     return Err(format!("seat {s} calls chi from seat {target}, not the seat before it"));
                 }
-                self.called(s, usize::from(target), called)?;
-                self.take(s, called);
                 let own = all_known(consumed, "consumed")?;
                 self.round.draws[s].push(Draw::Chi { called, own });
             }
@@ -457,10 +463,7 @@ impl Open {
                 pai,
                 consumed,
             } => {
-                let s = actor_of(actor)?;
-                let called = known(pai, "the tile called")?;
-                let from = self.called(s, actor_of(target)?, called)?;
-                self.take(s, called);
+                let (s, called, from) = self.call(actor, target, pai)?;
                 let own = all_known(consumed, "consumed")?;
                 self.round.draws[s].push(Draw::Pon { called, own, from });
             }
@@ -470,10 +473,7 @@ impl Open {
                 pai,
                 consumed,
             } => {
-                let s = actor_of(actor)?;
-                let called = known(pai, "the tile called")?;
-                let from = self.called(s, actor_of(target)?, called)?;
-                self.take(s, called);
+                let (s, called, from) = self.call(actor, target, pai)?;
                 let own = all_known(consumed, "consumed")?;
                 self.round.draws[s].push(Draw::OpenKan { called, own, from });
                 self.round.discards[s].push(Discard::Nothing);

@@ -2,32 +2,15 @@
 //! to the file's own bytes, replays through the engine as its tenhou.net/6 form does, and its
 //! events come in the order the engines emit them. Then the reader's refusals.
 
-use std::path::PathBuf;
-
 use rinshan_engine::env::Backend;
 
 use super::event::Event;
 use super::read::{is_mjai, parse_game, DRAGONS, MJAI_YAKU};
 use super::write::{game_events, game_text};
-use crate::tenhou::log::{collect_files, Game, LoggedDraw, Outcome};
+use crate::tenhou::log::{Game, LoggedDraw, Outcome};
 use crate::tenhou::replay::replay;
 use crate::tenhou::write::game_text as tenhou_text;
-
-const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../tests/data/tenhou");
-
-/// Every real log file's text and its parse.
-fn real_logs() -> Vec<(String, Game)> {
-    let files = collect_files(&[PathBuf::from(DATA)]).expect("the data folder lists");
-    files
-        .iter()
-        .map(|f| {
-            let text = std::fs::read_to_string(f).expect("a real log reads");
-            let game =
-                crate::tenhou::log::parse_game(&f.display().to_string(), &text).unwrap_or_else(|e| panic!("{e}"));
-            (text, game)
-        })
-        .collect()
-}
+use crate::tenhou::write::tests::real_logs;
 
 fn records(text: &str) -> Vec<&str> {
     text.lines().filter(|l| !l.trim().is_empty()).collect()

@@ -31,7 +31,7 @@ mod json;
 mod outcome;
 mod round;
 #[cfg(test)]
-mod tests;
+pub(crate) mod tests;
 
 use std::fmt;
 

@@ -12,11 +12,10 @@ use crate::tenhou::log::{collect_files, parse_game, tenhou_yaku, Discard, Draw, 
 use rinshan_engine::hand::{Yaku, YakuHan};
 use rinshan_engine::tile::Tile;
 
-const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../tests/data/tenhou");
-
-/// Every real log file's text and its parse.
-fn real_logs() -> Vec<(String, Game)> {
-    let files = collect_files(&[PathBuf::from(DATA)]).expect("the data folder lists");
+/// Every real log file's text and its parse (shared with the MJAI tests).
+pub(crate) fn real_logs() -> Vec<(String, Game)> {
+    let data = concat!(env!("CARGO_MANIFEST_DIR"), "/../../tests/data/tenhou");
+    let files = collect_files(&[PathBuf::from(data)]).expect("the data folder lists");
     files
         .iter()
         .map(|f| {
