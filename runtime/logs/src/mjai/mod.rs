@@ -4,12 +4,15 @@
 //! * [`tile`]  — the protocol's tile names (`5mr`, `E`, `?`)
 //! * [`event`] — the events, with the optional extras real logs carry
 //! * [`write`] — a [`crate::tenhou::log::Game`] as an MJAI log, in the order the engines emit events
-//! * [`read`]  — an MJAI log as a `Game`, so replay, convert and render take either format
+//! * [`read`]  — an MJAI log as a `Game`, so replay, convert and render take any format; `round`
+//!   reads a round's events, `yaku` a win's yaku
 
 pub mod event;
 pub mod read;
+mod round;
 pub mod tile;
 pub mod write;
+mod yaku;
 
 #[cfg(test)]
 mod tests;

@@ -5,8 +5,9 @@
 use rinshan_engine::env::Backend;
 
 use super::event::Event;
-use super::read::{is_mjai, parse_game, DRAGONS, MJAI_YAKU};
+use super::read::{is_mjai, parse_game};
 use super::write::{game_events, game_text};
+use super::yaku::{DRAGONS, MJAI_YAKU};
 use crate::tenhou::log::{Game, LoggedDraw, Outcome};
 use crate::tenhou::replay::replay;
 use crate::tenhou::write::game_text as tenhou_text;

@@ -1,0 +1,283 @@
+//! The events of one round, each landing in the seat's draw or discard list as Tenhou writes it
+//! (a `tsumogiri` discard as `60`, `reach` + `dahai` as `r..`, an open kan followed by `0`), and
+//! the round's end. Every event is checked for what the next ones rely on (seats 0-3, tiles
+//! known, a call naming the discard just made, a kan on a pon the seat holds). The extras are
+//! optional except what a replay checks: a `hora` needs its `deltas` and `yakus`.
+
+use rinshan_engine::tile::Tile;
+
+use super::event::Event;
+use super::tile::Pai;
+use super::write::REASONS;
+use super::yaku::{hora_yaku, win, DRAGONS};
+use crate::tenhou::log::{Discard, Draw, LoggedDraw, LoggedWin, Rel, Round};
+
+/// A round being read.
+pub(super) struct Open {
+    pub(super) round: Round,
+    pub(super) wins: Vec<LoggedWin>,
+    pub(super) draw: Option<(LoggedDraw, Option<[i32; 4]>)>,
+    last_draw: [Option<Tile>; 4],
+    riichi: [bool; 4],
+    /// The last discard: its seat and tile, while it can still be called.
+    last_discard: Option<(usize, Tile)>,
+    /// The last tile given up to the table (a discard, or a kan's tile that chankan robs).
+    last_given: Option<Tile>,
+    /// Each seat's tiles by type, melds included (to tell the dragons of a `sangenpai` apart).
+    held: [[u8; 34]; 4],
+}
+
+pub(super) fn actor_of(a: u8) -> Result<usize, String> {
+    (a < 4)
+        .then_some(usize::from(a))
+        .ok_or_else(|| format!("seat {a} is not 0-3"))
+}
+
+pub(super) fn known(p: Pai, what: &str) -> Result<Tile, String> {
+    p.0.ok_or_else(|| format!("{what} is `?`: a log of one seat's view cannot be read as a whole game"))
+}
+
+pub(super) fn all_known<const N: usize>(ps: [Pai; N], what: &str) -> Result<[Tile; N], String> {
+    let tiles: Vec<Tile> = ps.iter().map(|&p| known(p, what)).collect::<Result<_, _>>()?;
+    tiles
+        .try_into()
+        .map_err(|_| format!("{what} has the wrong number of tiles"))
+}
+
+/// Where seat `from` sits seen from `me`.
+pub(super) fn rel(me: usize, from: usize) -> Result<Rel, String> {
+    match (from + 4 - me) % 4 {
+        1 => Ok(Rel::Right),
+        2 => Ok(Rel::Across),
+        3 => Ok(Rel::Left),
+        _ => Err(format!("seat {me} calls its own discard")),
+    }
+}
+
+impl Open {
+    pub(super) fn new(round: Round) -> Open {
+        let held = std::array::from_fn(|s: usize| {
+            let mut counts = [0u8; 34];
+            for t in &round.hands[s] {
+                counts[t.kind().index()] = counts[t.kind().index()].saturating_add(1);
+            }
+            counts
+        });
+        Open {
+            round,
+            wins: Vec::new(),
+            draw: None,
+            last_draw: [None; 4],
+            riichi: [false; 4],
+            last_discard: None,
+            last_given: None,
+            held,
+        }
+    }
+
+    fn take(&mut self, s: usize, t: Tile) {
+        let count = &mut self.held[s][t.kind().index()];
+        *count = count.saturating_add(1);
+    }
+
+    /// The yakuhai of the dragons the winner holds three or more of (with the tile won on).
+    fn dragons(&self, winner: usize, won: Option<Tile>) -> Vec<&'static str> {
+        let mut held = self.held[winner];
+        if let Some(t) = won {
+            held[t.kind().index()] = held[t.kind().index()].saturating_add(1);
+        }
+        DRAGONS
+            .iter()
+            .filter(|(_, kind)| held[*kind] >= 3)
+            .map(|(name, _)| *name)
+            .collect()
+    }
+
+    /// Seat `actor` calls `pai` from `target`: the seat, the tile and where it came from.
+    fn call(&mut self, actor: u8, target: u8, pai: Pai) -> Result<(usize, Tile, Rel), String> {
+        let s = actor_of(actor)?;
+        let called = known(pai, "the tile called")?;
+        let from = self.called(s, actor_of(target)?, called)?;
+        self.take(s, called);
+        Ok((s, called, from))
+    }
+
+    fn called(&mut self, actor: usize, target: usize, pai: Tile) -> Result<Rel, String> {
+        match self.last_discard.take() {
+            Some((s, t)) if s == target && t == pai => rel(actor, target),
+            _ => Err(format!(
+                "seat {actor} calls {} from seat {target}, which is not the discard just made",
+                Pai::known(pai)
+            )),
+        }
+    }
+
+    pub(super) fn play(&mut self, event: Event) -> Result<(), String> {
+        let kind = event.kind();
+        match event {
+            Event::Tsumo { actor, pai } => {
+                let s = actor_of(actor)?;
+                let t = known(pai, "the tile drawn")?;
+                self.last_discard = None;
+                self.last_draw[s] = Some(t);
+                self.take(s, t);
+                self.round.draws[s].push(Draw::Tile(t));
+            }
+            Event::Dahai { actor, pai, tsumogiri } => {
+                let s = actor_of(actor)?;
+                let t = known(pai, "the tile discarded")?;
+                if tsumogiri && self.last_draw[s] != Some(t) {
+                    return Err(format!(
+                        "seat {s} discards {pai} as tsumogiri, but did not just draw it"
+                    ));
+                }
+                let entry = match (std::mem::take(&mut self.riichi[s]), tsumogiri) {
+                    (true, true) => Discard::Riichi(None),
+                    (true, false) => Discard::Riichi(Some(t)),
+                    (false, true) => Discard::Tsumogiri,
+                    (false, false) => Discard::Tile(t),
+                };
+                self.last_draw[s] = None;
+                self.last_discard = Some((s, t));
+                self.last_given = Some(t);
+                let count = &mut self.held[s][t.kind().index()];
+                *count = count.saturating_sub(1);
+                self.round.discards[s].push(entry);
+            }
+            Event::Chi {
+                actor,
+                target,
+                pai,
+                consumed,
+            } => {
+                let (s, called, from) = self.call(actor, target, pai)?;
+                if from != Rel::Left {
+                    return Err(format!("seat {s} calls chi from seat {target}, not the seat before it"));
+                }
+                let own = all_known(consumed, "consumed")?;
+                self.round.draws[s].push(Draw::Chi { called, own });
+            }
+            Event::Pon {
+                actor,
+                target,
+                pai,
+                consumed,
+            } => {
+                let (s, called, from) = self.call(actor, target, pai)?;
+                let own = all_known(consumed, "consumed")?;
+                self.round.draws[s].push(Draw::Pon { called, own, from });
+            }
+            Event::Daiminkan {
+                actor,
+                target,
+                pai,
+                consumed,
+            } => {
+                let (s, called, from) = self.call(actor, target, pai)?;
+                let own = all_known(consumed, "consumed")?;
+                self.round.draws[s].push(Draw::OpenKan { called, own, from });
+                self.round.discards[s].push(Discard::Nothing);
+            }
+            Event::Kakan { actor, pai, .. } => {
+                let s = actor_of(actor)?;
+                let added = known(pai, "the tile added")?;
+                // The pon as the log recorded it, so the kan is written as Tenhou writes it.
+                let pon = self.round.draws[s].iter().rev().find_map(|d| match *d {
+                    Draw::Pon { called, own, from } if called.kind() == added.kind() => Some((called, own, from)),
+                    _ => None,
+                });
+                let (called, own, from) =
+                    pon.ok_or_else(|| format!("seat {s} adds {pai} to a pon it does not have"))?;
+                self.last_discard = None;
+                self.last_draw[s] = None;
+                self.last_given = Some(added);
+                self.round.discards[s].push(Discard::AddedKan {
+                    added,
+                    pon: [called, own[0], own[1]],
+                    from,
+                });
+            }
+            Event::Ankan { actor, consumed } => {
+                let s = actor_of(actor)?;
+                let tiles = all_known(consumed, "consumed")?;
+                if tiles.iter().any(|t| t.kind() != tiles[0].kind()) {
+                    return Err(format!("seat {s}'s ankan is not four of one tile"));
+                }
+                self.last_discard = None;
+                self.last_draw[s] = None;
+                self.last_given = Some(tiles[0]);
+                self.round.discards[s].push(Discard::ClosedKan { tiles });
+            }
+            Event::Dora { dora_marker } => {
+                let t = known(dora_marker, "dora_marker")?;
+                self.round.dora.push(t);
+            }
+            Event::Reach { actor } => {
+                let s = actor_of(actor)?;
+                self.riichi[s] = true;
+            }
+            Event::ReachAccepted { actor, .. } => {
+                actor_of(actor)?;
+            }
+            Event::Hora {
+                actor,
+                target,
+                deltas,
+                ura_markers,
+                yakus,
+                fu,
+                fan,
+                pao,
+                ..
+            } => {
+                let winner = actor_of(actor)?;
+                let from = actor_of(target)?;
+                let deltas = deltas.ok_or("hora without deltas: a replay checks every score change")?;
+                let pao = pao.map(actor_of).transpose()?.unwrap_or(winner);
+                if let (Some(ura), true) = (ura_markers, self.round.ura.is_empty()) {
+                    self.round.ura = ura
+                        .into_iter()
+                        .map(|p| known(p, "ura_markers"))
+                        .collect::<Result<_, _>>()?;
+                }
+                let yakus = yakus.ok_or("hora without yakus: a replay checks every win's yaku")?;
+                // The tile won on, for a ron: the discard (or the kan tile robbed).
+                let won = if winner == from { None } else { self.last_given };
+                let yaku = hora_yaku(yakus, fan, || self.dragons(winner, won))?;
+                let dealer = winner == self.round.dealer();
+                self.wins.push(win(winner, from, pao, deltas, fu, fan, yaku, dealer));
+            }
+            Event::Ryukyoku {
+                reason,
+                tenpais,
+                deltas,
+            } => {
+                let reason = reason.as_deref().unwrap_or("fanpai");
+                let mut kinds = REASONS.iter().filter(|(_, r)| *r == reason).map(|(k, _)| *k);
+                let kind = kinds
+                    .next()
+                    .ok_or_else(|| format!("unknown ryukyoku reason {reason:?}"))?;
+                let (kind, deltas) = if kind == LoggedDraw::Exhaustive {
+                    let tenpai = match (tenpais, deltas) {
+                        (Some(t), _) => t.iter().filter(|&&t| t).count(),
+                        (None, Some(d)) => d.iter().filter(|&&d| d > 0).count(),
+                        (None, None) => 0,
+                    };
+                    match tenpai {
+                        0 => (LoggedDraw::NoTenpai, None),
+                        4 => (LoggedDraw::AllTenpai, None),
+                        _ => (LoggedDraw::Exhaustive, deltas),
+                    }
+                } else {
+                    (
+                        kind,
+                        deltas.filter(|d| kind == LoggedDraw::Nagashi || d.iter().any(|&x| x != 0)),
+                    )
+                };
+                self.draw = Some((kind, deltas));
+            }
+            _ => return Err(format!("{kind} is not an event of a round")),
+        }
+        Ok(())
+    }
+}
