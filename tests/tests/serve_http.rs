@@ -164,12 +164,18 @@ async fn a_whole_game_through_the_api_replays_from_its_log() {
     assert_eq!(status, StatusCode::OK, "{text}");
     let game = rinshan_logs::tenhou::log::parse_game("download", &text).expect("a Tenhou log");
     assert_eq!(game.names[2], "You");
-    let report = rinshan_logs::tenhou::replay::replay(&[game], rinshan_engine::env::Backend::Cpu).expect("it replays");
+    let report = rinshan_logs::tenhou::replay::replay(std::slice::from_ref(&game), rinshan_engine::env::Backend::Cpu)
+        .expect("it replays");
     assert!(report.all_agree(), "the log replays exactly");
     // The replay page of that log.
     let (status, page) = send(&app, Method::POST, "/api/replay", Some(&text), false).await;
     assert_eq!(status, StatusCode::OK);
     assert!(page.starts_with("<!doctype html>") && page.contains("DecompressionStream"));
+    // The same game as MJAI events makes the same page.
+    let mjai = rinshan_logs::file::game_text(&game, rinshan_logs::Format::Mjai).expect("MJAI");
+    let (status, mjai_page) = send(&app, Method::POST, "/api/replay", Some(&mjai), false).await;
+    assert_eq!(status, StatusCode::OK, "{mjai_page}");
+    assert_eq!(mjai_page, page);
     // The finished game was written to the data directory; a restarted server lists it too.
     let deadline = Instant::now() + Duration::from_secs(20);
     let saved = loop {

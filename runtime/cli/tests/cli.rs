@@ -379,3 +379,77 @@ fn replay_rejects_unreadable_logs_with_exit_2() {
     assert!(text.contains("bad.json: line 1"), "{text}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+const MJLOGS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../tests/data/mjlog");
+
+#[test]
+fn convert_goes_between_the_formats_and_each_replays() {
+    let dir = std::env::temp_dir().join(format!("rinshan-convert-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let xml = format!("{MJLOGS}/2019021004gm-00a9-0000-e2f6516d.xml");
+    let twin = std::fs::read_to_string(format!("{MJLOGS}/2019021004gm-00a9-0000-e2f6516d.json")).expect("log");
+    // mjlog XML -> MJAI (gzipped, by the name) -> tenhou.net/6 on standard output.
+    let mjai = dir.join("game.mjson.gz");
+    let out = rinshan(&["convert", &xml, "-o", mjai.to_str().expect("utf-8 path")]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let bytes = std::fs::read(&mjai).expect("written");
+    assert_eq!(bytes[..2], [0x1f, 0x8b], "gzipped");
+    let v = json(&rinshan(&["replay", mjai.to_str().expect("utf-8 path"), "--json"]));
+    assert_eq!(v["all_agree"], true, "{v}");
+    let out = rinshan(&["convert", mjai.to_str().expect("utf-8 path")]);
+    assert!(out.status.success());
+    let tenhou = String::from_utf8_lossy(&out.stdout).into_owned();
+    // Tenhou's own JSON of the game holds every round in one record; the converted text has a
+    // line per round, with the same rounds.
+    let rounds: Vec<serde_json::Value> = tenhou
+        .lines()
+        .map(|l| serde_json::from_str::<serde_json::Value>(l).expect("a record")["log"][0].clone())
+        .collect();
+    let original: serde_json::Value = serde_json::from_str(&twin).expect("JSON");
+    assert_eq!(serde_json::Value::from(rounds), original["log"]);
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn convert_of_a_folder_reports_bad_files_and_writes_the_rest() {
+    let dir = std::env::temp_dir().join(format!("rinshan-convert-dir-{}", std::process::id()));
+    let input = dir.join("in");
+    std::fs::create_dir_all(&input).expect("temp dir");
+    std::fs::copy(
+        format!("{LOGS}/2010081709gm-00a9-0000-fe3371ad.json"),
+        input.join("a.json"),
+    )
+    .expect("copy");
+    std::fs::copy(
+        format!("{MJLOGS}/2019103023gm-00a9-0000-f90e0fe9.xml"),
+        input.join("b.xml"),
+    )
+    .expect("copy");
+    std::fs::write(
+        input.join("c.mjson"),
+        "{\"type\":\"start_game\"}\n{\"type\":\"dahai\"}\n",
+    )
+    .expect("write");
+    let output = dir.join("out");
+    let out = rinshan(&[
+        "convert",
+        input.to_str().expect("utf-8 path"),
+        "-o",
+        output.to_str().expect("utf-8 path"),
+    ]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(2), "{text}");
+    assert!(text.contains("converted 2 of 3 logs"), "{text}");
+    assert!(text.contains("c.mjson: line 2"), "{text}");
+    let mut written: Vec<String> = std::fs::read_dir(&output)
+        .expect("the output folder")
+        .map(|e| e.expect("an entry").file_name().to_string_lossy().into_owned())
+        .collect();
+    written.sort();
+    // tenhou.net/6 becomes MJAI, mjlog becomes tenhou.net/6.
+    assert_eq!(written, ["a.mjson", "b.json"]);
+    let v = json(&rinshan(&["replay", output.to_str().expect("utf-8 path"), "--json"]));
+    assert_eq!(v["all_agree"], true, "{v}");
+    assert_eq!(v["report"]["games"], 2);
+    std::fs::remove_dir_all(&dir).ok();
+}
