@@ -23,6 +23,8 @@ pub(super) struct Open {
     last_discard: Option<(usize, Tile)>,
     /// The last tile given up to the table (a discard, or a kan's tile that chankan robs).
     last_given: Option<Tile>,
+    /// Kans declared so far (each reveals one more dora indicator).
+    kans: usize,
     /// Each seat's tiles by type, melds included (to tell the dragons of a `sangenpai` apart).
     held: [[u8; 34]; 4],
 }
@@ -71,6 +73,7 @@ impl Open {
             riichi: [false; 4],
             last_discard: None,
             last_given: None,
+            kans: 0,
             held,
         }
     }
@@ -175,6 +178,7 @@ impl Open {
             } => {
                 let (s, called, from) = self.call(actor, target, pai)?;
                 let own = all_known(consumed, "consumed")?;
+                self.kans += 1;
                 self.round.draws[s].push(Draw::OpenKan { called, own, from });
                 self.round.discards[s].push(Discard::Nothing);
             }
@@ -191,6 +195,7 @@ impl Open {
                 self.last_discard = None;
                 self.last_draw[s] = None;
                 self.last_given = Some(added);
+                self.kans += 1;
                 self.round.discards[s].push(Discard::AddedKan {
                     added,
                     pon: [called, own[0], own[1]],
@@ -206,10 +211,14 @@ impl Open {
                 self.last_discard = None;
                 self.last_draw[s] = None;
                 self.last_given = Some(tiles[0]);
+                self.kans += 1;
                 self.round.discards[s].push(Discard::ClosedKan { tiles });
             }
             Event::Dora { dora_marker } => {
                 let t = known(dora_marker, "dora_marker")?;
+                if self.round.dora.len() > self.kans {
+                    return Err(format!("dora {dora_marker}: no kan is left to reveal it"));
+                }
                 self.round.dora.push(t);
             }
             Event::Reach { actor } => {
@@ -257,22 +266,26 @@ impl Open {
                 let kind = kinds
                     .next()
                     .ok_or_else(|| format!("unknown ryukyoku reason {reason:?}"))?;
-                let (kind, deltas) = if kind == LoggedDraw::Exhaustive {
-                    let tenpai = match (tenpais, deltas) {
-                        (Some(t), _) => t.iter().filter(|&&t| t).count(),
-                        (None, Some(d)) => d.iter().filter(|&&d| d > 0).count(),
-                        (None, None) => 0,
-                    };
-                    match tenpai {
+                let (kind, deltas) = match (kind, deltas) {
+                    // Payments say who was tenpai (`tenpais`, given too, may not say otherwise);
+                    // without any, 0 or 4 seats were.
+                    (LoggedDraw::Exhaustive, Some(d)) if d.iter().any(|&x| x != 0) => {
+                        let contradicts =
+                            tenpais.is_some_and(|t| (0..4).any(|s| (d[s] > 0 && !t[s]) || (d[s] < 0 && t[s])));
+                        if contradicts {
+                            return Err(format!("tenpais {tenpais:?} contradict the deltas {d:?}"));
+                        }
+                        (LoggedDraw::Exhaustive, Some(d))
+                    }
+                    (LoggedDraw::Exhaustive, _) => match tenpais.map_or(0, |t| t.iter().filter(|&&t| t).count()) {
                         0 => (LoggedDraw::NoTenpai, None),
                         4 => (LoggedDraw::AllTenpai, None),
-                        _ => (LoggedDraw::Exhaustive, deltas),
-                    }
-                } else {
-                    (
+                        n => return Err(format!("{n} seats tenpai, but the deltas pay them nothing")),
+                    },
+                    (kind, deltas) => (
                         kind,
                         deltas.filter(|d| kind == LoggedDraw::Nagashi || d.iter().any(|&x| x != 0)),
-                    )
+                    ),
                 };
                 self.draw = Some((kind, deltas));
             }

@@ -163,7 +163,25 @@ fn refusal(lines: &[&str]) -> String {
 
 #[test]
 fn bad_events_are_refused_with_their_line() {
-    let cases: [(&[&str], &str); 14] = [
+    let cases: [(&[&str], &str); 17] = [
+        (
+            &[
+                r#"{"type":"ryukyoku","reason":"fanpai","tenpais":[true,false,false,false],"deltas":[0,0,0,0]}"#,
+                r#"{"type":"end_kyoku"}"#,
+            ],
+            "1 seats tenpai, but the deltas pay them nothing",
+        ),
+        (
+            &[
+                r#"{"type":"ryukyoku","tenpais":[false,true,true,true],"deltas":[3000,-1000,-1000,-1000]}"#,
+                r#"{"type":"end_kyoku"}"#,
+            ],
+            "contradict the deltas",
+        ),
+        (
+            &[r#"{"type":"dora","dora_marker":"1m"}"#],
+            "dora 1m: no kan is left to reveal it",
+        ),
         (&["{\"type\":\"tsumo\",\"actor\":0"], "line 3, column"),
         (
             &[r#"{"type":"tsumo_x","actor":0,"pai":"1m"}"#],
@@ -227,6 +245,20 @@ fn bad_events_are_refused_with_their_line() {
         "{\"type\":\"start_game\"}\n{\"type\":\"end_game\"}\n{\"type\":\"start_game\"}\n",
     );
     assert!(twice.expect_err("two games").to_string().contains("after end_game"));
+}
+
+#[test]
+fn a_dora_list_longer_than_the_kans_allow_is_refused_in_either_format() {
+    // East 1 of the first real log has no kan: a second indicator would name a tile no kan showed.
+    let (text, _) = real_logs().into_iter().next().expect("a real log");
+    let mut record: serde_json::Value = serde_json::from_str(records(&text)[0]).expect("JSON");
+    let first = record["log"][0][2][0].clone();
+    record["log"][0][2] = serde_json::json!([first, 11]);
+    let err = crate::tenhou::log::parse_game("t.json", &record.to_string()).expect_err("refused");
+    assert!(
+        err.to_string().contains("dora: 2 indicators, but the round has 0 kans"),
+        "{err}"
+    );
 }
 
 #[test]

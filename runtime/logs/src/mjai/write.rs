@@ -103,6 +103,11 @@ fn round_events(round: &Round, out: &mut Vec<Event>) -> Result<(), String> {
     for played in &plan.order {
         walk.play(played, &plan.riichi_paid)?;
     }
+    // An indicator the engines' order left unshown (an open kan's, when the kanner wins on its
+    // replacement tile) still belongs to the round as logged.
+    while walk.doras.len() > 0 {
+        walk.reveal();
+    }
     match &round.outcome {
         Outcome::Wins(wins) => {
             for w in wins {

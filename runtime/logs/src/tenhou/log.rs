@@ -431,6 +431,23 @@ fn parse_round(ctx: &mut Ctx, index: Option<usize>, v: &Value) -> Result<Round, 
             return Err(ctx.err(format!("discards of seat {seat}"), message));
         }
     }
+    // Each kan reveals one more indicator: a list longer than that names tiles no kan showed.
+    let kans = (0..4)
+        .map(|s| {
+            let open = draws[s].iter().filter(|d| matches!(d, Draw::OpenKan { .. })).count();
+            let own = discards[s]
+                .iter()
+                .filter(|d| matches!(d, Discard::AddedKan { .. } | Discard::ClosedKan { .. }));
+            open + own.count()
+        })
+        .sum::<usize>();
+    if dora.len() > 1 + kans {
+        let message = format!(
+            "{} indicators, but the round has {kans} kans (one indicator each, after the first)",
+            dora.len()
+        );
+        return Err(ctx.err("dora", message));
+    }
     let outcome = result::parse_result(item(16)).map_err(|m| ctx.err("result", m))?;
     Ok(Round {
         line: ctx.line,

@@ -269,6 +269,10 @@ pub(super) fn parse_result(v: &Value) -> Result<Outcome, String> {
         let sum: [i32; 4] = deltas.unwrap_or_default();
         deltas = Some(std::array::from_fn(|s| sum[s].saturating_add(more[s])));
     }
+    if kind == LoggedDraw::Exhaustive && !deltas.is_some_and(|d| d.iter().any(|&x| x != 0)) {
+        // 全員聴牌 and 全員不聴 are the exhaustive draws without payments.
+        return Err("流局 without tenpai payments (Tenhou writes 全員聴牌 or 全員不聴 then)".into());
+    }
     Ok(Outcome::Draw { kind, deltas })
 }
 
