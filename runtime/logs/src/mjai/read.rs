@@ -83,28 +83,32 @@ impl GameBuilder {
     /// The next event, found at `line` of the source (1-based; a single-line format gives the
     /// position it has).
     pub fn event(&mut self, event: Event, line: usize) -> Result<(), LogError> {
-        let reader = &mut self.reader;
-        let path = reader.game.path.clone();
-        let err = |message: String, round: Option<String>| LogError {
-            line: Some(line),
-            round,
-            ..file_error(&path, message)
-        };
-        let round = reader.round.as_ref().map(|r| round_name(r.round.kyoku, r.round.honba));
-        reader.event(event, line).map_err(|m| err(m, round))?;
-        if let Some(done) = reader.finished.take() {
+        // Only the round's numbers are kept before the event (it may end the round); the names
+        // of an error are put together only when there is one.
+        let at = self.reader.round.as_ref().map(|r| (r.round.kyoku, r.round.honba));
+        if let Err(message) = self.reader.event(event, line) {
+            return Err(self.error(line, message, at.map(|(kyoku, honba)| round_name(kyoku, honba))));
+        }
+        if let Some(done) = self.reader.finished.take() {
             // A round holds to the rules of a tenhou.net/6 round (a draw before each discard,
             // calls of real melds, a han count the yaku add up to), checked by that reader.
-            let back = parse_round_value(&path, done.line, &round_value(&done), reader.game.red_fives)?;
+            let game = &self.reader.game;
+            let back = parse_round_value(&game.path, done.line, &round_value(&done), game.red_fives)?;
             if back != done {
-                return Err(err(
-                    "the round's events do not read back as one round".into(),
-                    Some(done.to_string()),
-                ));
+                let message = "the round's events do not read back as one round".into();
+                return Err(self.error(line, message, Some(done.to_string())));
             }
-            reader.game.rounds.push(done);
+            self.reader.game.rounds.push(done);
         }
         Ok(())
+    }
+
+    fn error(&self, line: usize, message: String, round: Option<String>) -> LogError {
+        LogError {
+            line: Some(line),
+            round,
+            ..file_error(&self.reader.game.path, message)
+        }
     }
 
     /// The game, once every event is in.

@@ -120,7 +120,6 @@ pub fn parse_game(path: &str, text: &str) -> Result<Game, LogError> {
         named: false,
         started: false,
         in_round: false,
-        result: false,
         last_draw: [None; 4],
     };
     loop {
@@ -233,8 +232,6 @@ struct State {
     named: bool,
     started: bool,
     in_round: bool,
-    /// The round has its AGARI or RYUUKYOKU (a second AGARI is a double ron).
-    result: bool,
     last_draw: [Option<TileId>; 4],
 }
 
@@ -423,7 +420,6 @@ impl State {
             *tehai = hand.into_iter().map(Pai::known).collect();
         }
         self.in_round = true;
-        self.result = false;
         self.last_draw = [None; 4];
         events.push(Event::StartKyoku {
             bakaze: Pai(TileType::new(27 + round / 4 % 4).map(Tile::plain)),
@@ -498,7 +494,6 @@ impl State {
         if !self.in_round {
             return Err("a win outside a round".into());
         }
-        self.result = true;
         let (actor, target) = (tag.seat("who")?, tag.seat("fromWho")?);
         let pao = tag.get("paoWho").map(|_| tag.seat("paoWho")).transpose()?;
         let ten = tag.numbers("ten")?;
@@ -557,7 +552,6 @@ impl State {
         if !self.in_round {
             return Err("a draw outside a round".into());
         }
-        self.result = true;
         let reason = match tag.get("type") {
             None => "fanpai",
             Some(kind) => DRAWS
