@@ -2,6 +2,8 @@
 legal actions), with a held-out tenth to measure accuracy.
 
 python examples/train/bc.py --config configs/seed.toml --data runs/x/data --out runs/x
+
+`--data` may also be a dataset folder built from game logs (`rinshan dataset logs/ -o DIR`).
 """
 
 from __future__ import annotations
@@ -20,12 +22,12 @@ def train_bc(cfg: dict, seed: int, data: pathlib.Path, out: pathlib.Path) -> dic
     c = cfg["bc"]
     seed_everything(seed)
     set_threads(cfg)
-    d = load_shards(data)
+    analysis = bool(cfg["run"].get("analysis", False))
+    d = load_shards(data, analysis)
     n = len(d["action"])
     order = np.random.default_rng(seed).permutation(n)
     n_val = max(1, n // 10)
     val, train = order[:n_val], order[n_val:]
-    analysis = bool(cfg["run"].get("analysis", False))
     net = Net(
         Space(CANONICAL).size,
         int(c["hidden"]),
@@ -117,7 +119,7 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--config", required=True)
     ap.add_argument("--seed", type=int, default=0)
-    ap.add_argument("--data", required=True)
+    ap.add_argument("--data", required=True, help="collect.py's shards, or a `rinshan dataset` folder")
     ap.add_argument("--out", required=True)
     a = ap.parse_args()
     print(train_bc(load_config(a.config), a.seed, pathlib.Path(a.data), pathlib.Path(a.out)))

@@ -13,7 +13,7 @@ import pathlib
 import time
 
 import numpy as np
-from common import Log, Space, load_config, rows
+from common import CANONICAL, Log, Space, load_config, rows
 
 import rinshan
 
@@ -81,12 +81,37 @@ def _collect_part(cfg, variant, mode, samples, seed, out, totals) -> dict:
     return {"samples": written, "env_steps": steps, "games": games}
 
 
-def load_shards(folder: pathlib.Path) -> dict[str, np.ndarray]:
+def load_shards(folder: pathlib.Path, analysis: bool = False) -> dict[str, np.ndarray]:
+    """This script's shards, or a dataset folder built from logs (`rinshan dataset`), as arrays
+    in memory: planes, scalars, mask and action in the canonical (red) action ids."""
+    if (folder / "manifest.json").exists():
+        return load_dataset(folder, analysis)
     files = sorted(folder.glob("shard-*.npz"))
     if not files:
         raise SystemExit(f"{folder}: no shard-*.npz (run collect.py first)")
     parts = [np.load(f) for f in files]
     return {k: np.concatenate([p[k] for p in parts]) for k in parts[0].files}
+
+
+def load_dataset(folder: pathlib.Path, analysis: bool) -> dict[str, np.ndarray]:
+    """A log dataset (`rinshan dataset logs/ -o DIR --observe planes[,analysis]`): its rows are
+    already in the red variant's action ids."""
+    names = ["planes", "scalars", "legal_action_mask", "action"]
+    if analysis:
+        names += ["discard_shanten", "discard_ukeire", "improving"]
+    try:
+        ds = rinshan.dataset.Dataset(folder, fields=names)
+    except KeyError as e:
+        raise SystemExit(f"{folder}: {e} (build it with --observe planes{',analysis' if analysis else ''})")
+    if ds.actions != rinshan.make(CANONICAL, num_envs=1).spec.action_names:
+        raise SystemExit(f"{folder}: its action ids are not the {CANONICAL} variant's")
+    d = ds[:]
+    return {
+        "planes": rows(d, analysis),
+        "scalars": d["scalars"],
+        "mask": d["legal_action_mask"],
+        "action": d["action"].astype(np.int64),
+    }
 
 
 def main() -> None:

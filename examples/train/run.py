@@ -13,6 +13,7 @@ import math
 import pathlib
 import sys
 import time
+from typing import Optional
 
 import numpy as np
 from bc import train_bc
@@ -25,13 +26,16 @@ HERE = pathlib.Path(__file__).resolve().parent
 STAGES = ("bc", "ppo", "finetune")
 
 
-def run_seed(cfg: dict, seed: int, out: pathlib.Path) -> dict:
+def run_seed(cfg: dict, seed: int, out: pathlib.Path, bc_from: Optional[pathlib.Path] = None) -> dict:
     times, result = {}, {"seed": seed}
     t = time.time()
-    result["collect"] = collect(cfg, seed, out / "data")
+    if bc_from is None:
+        result["collect"] = collect(cfg, seed, out / "data")
+    else:
+        result["collect"] = {"dataset": str(bc_from)}
     times["collect"] = time.time() - t
     t = time.time()
-    result["bc"] = train_bc(cfg, seed, out / "data", out)
+    result["bc"] = train_bc(cfg, seed, bc_from or out / "data", out)
     times["bc"] = time.time() - t
     t = time.time()
     result["ppo"] = train_ppo(cfg, seed, out / "bc.pt", out)
@@ -119,6 +123,11 @@ def main() -> None:
     ap.add_argument("--smoke", action="store_true", help="configs/smoke.toml: a minute-long check")
     ap.add_argument("--out", help="run folder (default runs/<name>)")
     ap.add_argument("--seeds", help="comma-separated seeds instead of the config's")
+    ap.add_argument(
+        "--bc-from",
+        type=pathlib.Path,
+        help="behaviour cloning from this dataset of game logs (`rinshan dataset`) instead of agent self-play",
+    )
     a = ap.parse_args()
     if a.smoke == bool(a.config):
         sys.exit("give --config FILE or --smoke")
@@ -126,7 +135,7 @@ def main() -> None:
     out = pathlib.Path(a.out or pathlib.Path("runs") / cfg["run"]["name"])
     seeds = [int(x) for x in a.seeds.split(",")] if a.seeds else cfg["run"]["seeds"]
     start = time.time()
-    results = [run_seed(cfg, seed, out / f"seed{seed}") for seed in seeds]
+    results = [run_seed(cfg, seed, out / f"seed{seed}", a.bc_from) for seed in seeds]
     summary = summarise(cfg, results)
     summary["total_seconds"] = round(time.time() - start, 1)
     (out / "summary.json").write_text(json.dumps(summary, indent=1))

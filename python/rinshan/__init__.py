@@ -7,7 +7,7 @@
 See the README's "Python" section.
 """
 
-from . import mjai, tenhou
+from . import dataset, mjai, tenhou
 from .env import AGENTS, FORMS, MODES, VARIANTS, Env, Field, Spec, TimeStep, fields, make
 from .evaluate import Evaluation, evaluate
 from .hands import score, shanten
@@ -23,6 +23,7 @@ __all__ = [
     "Field",
     "Spec",
     "TimeStep",
+    "dataset",
     "evaluate",
     "fields",
     "make",

@@ -2,11 +2,13 @@
 
 use pyo3::prelude::*;
 
+mod dataset;
 mod env;
 mod tools;
 
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<env::PyEnv>()?;
-    tools::register(m)
+    tools::register(m)?;
+    dataset::register(m)
 }

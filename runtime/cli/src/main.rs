@@ -6,6 +6,7 @@ mod arena;
 mod args;
 mod bench;
 mod convert;
+mod dataset;
 mod error;
 mod observe;
 mod render;
@@ -45,6 +46,8 @@ enum Command {
     Replay(replay::Args),
     /// Convert logs between tenhou.net/6 JSON and MJAI, e.g. `rinshan convert game.json -o game.mjson`
     Convert(convert::Args),
+    /// Training data from logs: every decision replayed into .npy shards with a manifest, e.g. `rinshan dataset logs/ -o data/`
+    Dataset(dataset::Args),
     /// A seat's observation at a position of a log, e.g. `rinshan observe game.json --round 2 --step 10`
     Observe(observe::Args),
     /// Draw a table as SVG or PNG, or a whole logged game as an HTML replay, e.g. `rinshan render game.json --round 1 --step 20 --png -o board.png`
@@ -69,6 +72,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Selfplay(a) => selfplay::run(a),
         Command::Replay(a) => replay::run(a),
         Command::Convert(a) => convert::run(a),
+        Command::Dataset(a) => dataset::run(a),
         Command::Arena(a) => arena::run(a),
         Command::Observe(a) => observe::run(a),
         Command::Render(a) => render::run(a),

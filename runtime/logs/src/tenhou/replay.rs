@@ -13,15 +13,16 @@ mod run;
 use super::log::Game;
 use compare::finish_round;
 pub use report::{Mismatch, Report};
-use rinshan_engine::env::{events, Backend, Config, Deal, Env, EnvError, Mode};
+use rinshan_engine::env::{events, Backend, Config, Deal, Env, EnvError, Mode, Step, Table};
 use rinshan_engine::generated::red as k;
 use rinshan_engine::gpu::Gpu;
+use rinshan_engine::observe::Form;
 use rinshan_engine::Variant;
 use run::Run;
 
 /// The length of the games: East only when every log's rule says so (`東`, as in `鳳東喰赤`),
 /// else East and South. One replay plays one length: replay East and half games apart.
-pub(crate) fn mode_of(games: &[Game]) -> Mode {
+pub fn mode_of(games: &[Game]) -> Mode {
     if games.iter().all(|g| g.rule.contains('東')) {
         Mode::East
     } else {
@@ -29,20 +30,62 @@ pub(crate) fn mode_of(games: &[Game]) -> Mode {
     }
 }
 
+/// A decision of a logged game, as the replay is about to play it.
+pub struct Decision<'a> {
+    /// The game (index into the replayed games).
+    pub game: usize,
+    /// The round (index into the game's rounds).
+    pub round: usize,
+    /// The step before the decision: the deciding seat (`current_player`) and its legal mask.
+    pub step: &'a Step,
+    /// The action played: the log's move, or a pass at a claim prompt the log does not take.
+    pub action: u32,
+    /// The env, holding the deciding seat's observations in the forms the replay was asked for
+    /// ([`Env::observation`]; game `game` is env `game`).
+    pub env: &'a Env,
+}
+
+/// What a replay shows its caller as it goes (the dataset builder records decisions through it).
+/// A game whose replay finds a mismatch is still shown up to its end: the caller tells good games
+/// from the report.
+pub trait Visitor {
+    /// A decision about to be played.
+    fn decision(&mut self, d: &Decision);
+    /// Game `game` ended by the rules: its last step (`ranks`) and its table (final `scores`).
+    fn game_over(&mut self, game: usize, step: &Step, table: &Table);
+}
+
+struct Nothing;
+
+impl Visitor for Nothing {
+    fn decision(&mut self, _: &Decision) {}
+    fn game_over(&mut self, _: usize, _: &Step, _: &Table) {}
+}
+
 /// Replays `games` on `backend` (one env per game, all stepped together; the GPU backend opens
 /// the first adapter).
 pub fn replay(games: &[Game], backend: Backend) -> Result<Report, EnvError> {
-    replay_in(games, backend, Env::new)
+    replay_in(games, backend, &[], &mut Nothing, Env::new)
 }
 
 /// As [`replay`], on an already opened GPU.
 pub fn replay_on_gpu(games: &[Game], gpu: Gpu) -> Result<Report, EnvError> {
-    replay_in(games, Backend::Gpu, |config| Env::with_gpu(config, gpu))
+    replay_in(games, Backend::Gpu, &[], &mut Nothing, |config| {
+        Env::with_gpu(config, gpu)
+    })
+}
+
+/// As [`replay`] on the CPU with one thread, showing `visitor` every decision with the deciding
+/// seat's observation in each of `observe`, and every game's end.
+pub fn replay_visiting(games: &[Game], observe: &[Form], visitor: &mut dyn Visitor) -> Result<Report, EnvError> {
+    replay_in(games, Backend::Cpu, observe, visitor, Env::new)
 }
 
 fn replay_in(
     games: &[Game],
     backend: Backend,
+    observe: &[Form],
+    visitor: &mut dyn Visitor,
     make_env: impl FnOnce(Config) -> Result<Env, EnvError>,
 ) -> Result<Report, EnvError> {
     let mut report = Report {
@@ -64,7 +107,7 @@ fn replay_in(
         penalty: None,
         auto_reset: false,
         threads: Some(1),
-        observe: Vec::new(),
+        observe: observe.to_vec(),
         agents: Vec::new(),
     })?;
     env.reset()?;
@@ -102,6 +145,17 @@ fn replay_in(
         if redealt {
             continue;
         }
+        for (i, run) in runs.iter().enumerate() {
+            if !run.finished {
+                visitor.decision(&Decision {
+                    game: i,
+                    round: run.round,
+                    step: &step,
+                    action: actions[i],
+                    env: &env,
+                });
+            }
+        }
         let after = env.step(&actions)?.clone();
         let mut ended = Vec::new();
         for (i, run) in runs.iter_mut().enumerate() {
@@ -126,6 +180,9 @@ fn replay_in(
         for i in ended {
             let run = &mut runs[i];
             finish_round(run, &after, i, &tables[i], &mut report);
+            if after.terminated[i] {
+                visitor.game_over(i, &after, &tables[i]);
+            }
             if !run.finished {
                 run.round += 1;
                 deals[i] = run.start_round(&mut report);

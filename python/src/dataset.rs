@@ -1,0 +1,157 @@
+//! Training data from logs: building a dataset folder (`rinshan dataset`), and a log's rows
+//! straight into numpy arrays without one.
+
+use numpy::{PyArray1, PyArrayMethods};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList};
+use rinshan_dataset::inputs::{for_each_unit, sources};
+use rinshan_dataset::manifest::check_forms;
+use rinshan_dataset::record::{record, Outcome};
+use rinshan_dataset::{build, Build, Options, Seats};
+use rinshan_engine::env::action_names;
+use rinshan_engine::observe::Form;
+use rinshan_logs::file::parse_log;
+
+use crate::env::form_of;
+
+fn options(
+    forms: Vec<String>,
+    seats: Option<Vec<u8>>,
+    players: Option<Vec<String>>,
+    forced: bool,
+) -> PyResult<Options> {
+    let forms = forms.iter().map(|f| form_of(f)).collect::<PyResult<Vec<Form>>>()?;
+    check_forms(&forms).map_err(PyValueError::new_err)?;
+    let seats = match (seats, players) {
+        (Some(_), Some(_)) => return Err(PyValueError::new_err("give seats or players, not both")),
+        (None, Some(names)) => Seats::Players(names),
+        (Some(list), None) => {
+            let mut keep = [false; 4];
+            for s in list {
+                if s > 3 {
+                    return Err(PyValueError::new_err(format!("seat {s}: seats are 0..3")));
+                }
+                keep[s as usize] = true;
+            }
+            Seats::Some(keep)
+        }
+        (None, None) => Seats::All,
+    };
+    Ok(Options { forms, seats, forced })
+}
+
+/// Builds (or resumes) a dataset folder; the summary as a dict.
+#[pyfunction]
+#[pyo3(signature = (inputs, out, forms, seats=None, players=None, forced=false, shard_size=256, threads=None))]
+#[allow(clippy::too_many_arguments)]
+fn dataset_build<'py>(
+    py: Python<'py>,
+    inputs: Vec<String>,
+    out: String,
+    forms: Vec<String>,
+    seats: Option<Vec<u8>>,
+    players: Option<Vec<String>>,
+    forced: bool,
+    shard_size: usize,
+    threads: Option<usize>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let b = Build {
+        inputs,
+        out: out.into(),
+        options: options(forms, seats, players, forced)?,
+        inputs_per_shard: shard_size,
+        threads: threads.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get())),
+    };
+    let s = py.detach(|| build(&b, &mut |_| {})).map_err(PyValueError::new_err)?;
+    let d = PyDict::new(py);
+    d.set_item("shards_written", s.shards_written)?;
+    d.set_item("shards_resumed", s.shards_resumed)?;
+    d.set_item("inputs", s.inputs)?;
+    d.set_item("games", s.games)?;
+    d.set_item("rows", s.rows)?;
+    d.set_item("total_rows", s.total_rows)?;
+    let skipped: Vec<(String, String)> = s.skipped.into_iter().map(|k| (k.input, k.reason)).collect();
+    d.set_item("skipped", skipped)?;
+    d.set_item("seconds", s.seconds)?;
+    Ok(d)
+}
+
+/// Each log's name, and its outcome or why it could not be read.
+type Named = (Vec<String>, Vec<Result<Outcome, String>>);
+
+/// Every log of `inputs` replayed into rows: one dict per log, in order (`name`, and `skipped`
+/// with the reason or the arrays).
+#[pyfunction]
+#[pyo3(signature = (inputs, forms, seats=None, players=None, forced=false))]
+fn dataset_records<'py>(
+    py: Python<'py>,
+    inputs: Vec<String>,
+    forms: Vec<String>,
+    seats: Option<Vec<u8>>,
+    players: Option<Vec<String>>,
+    forced: bool,
+) -> PyResult<Bound<'py, PyList>> {
+    let options = options(forms, seats, players, forced)?;
+    let work = || -> Result<Named, String> {
+        let srcs = sources(&inputs)?;
+        let mut names = Vec::new();
+        let mut parsed = Vec::new();
+        for_each_unit(&srcs, &mut |unit| {
+            let game = unit
+                .bytes()
+                .and_then(|b| parse_log(&unit.name, &b).map_err(|e| e.to_string()));
+            names.push(unit.name);
+            parsed.push(game.map(|(g, _)| g));
+            Ok(())
+        })?;
+        let games: Vec<_> = parsed.iter().filter_map(|g| g.as_ref().ok().cloned()).collect();
+        let mut outcomes = record(&games, &options)?.into_iter();
+        let all = parsed
+            .into_iter()
+            .map(|g| match g {
+                Ok(_) => outcomes.next().ok_or_else(|| "not replayed".to_string()),
+                Err(e) => Err(e),
+            })
+            .collect();
+        Ok((names, all))
+    };
+    let (names, outcomes) = py.detach(work).map_err(PyValueError::new_err)?;
+    let na = action_names(rinshan_dataset::record::VARIANT).len();
+    let list = PyList::empty(py);
+    for (name, outcome) in names.into_iter().zip(outcomes) {
+        let d = PyDict::new(py);
+        d.set_item("name", name)?;
+        match outcome {
+            Err(reason) | Ok(Outcome::Skipped(reason)) => d.set_item("skipped", reason)?,
+            Ok(Outcome::Rows(rows)) => {
+                let n = rows.rows();
+                let obs = PyDict::new(py);
+                for (form, raw) in options.forms.iter().zip(rows.observations) {
+                    obs.set_item(form.name(), PyArray1::from_vec(py, raw).reshape([n, form.bytes()])?)?;
+                }
+                d.set_item("observation", obs)?;
+                let mask: Vec<bool> = rows.mask.iter().map(|&b| b != 0).collect();
+                d.set_item("legal_action_mask", PyArray1::from_vec(py, mask).reshape([n, na])?)?;
+                d.set_item("action", PyArray1::from_vec(py, rows.action))?;
+                d.set_item("seat", PyArray1::from_vec(py, rows.seat))?;
+                d.set_item("round", PyArray1::from_vec(py, rows.round))?;
+                d.set_item("scores", rows.scores.to_vec())?;
+                d.set_item("ranks", rows.ranks.to_vec())?;
+            }
+        }
+        list.append(d)?;
+    }
+    Ok(list)
+}
+
+pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(dataset_build, m)?)?;
+    m.add_function(wrap_pyfunction!(dataset_records, m)?)?;
+    m.add("LOG_EXTENSIONS", rinshan_logs::tenhou::log::LOG_EXTENSIONS.to_vec())?;
+    m.add(
+        "ARCHIVE_EXTENSIONS",
+        rinshan_dataset::inputs::ARCHIVE_EXTENSIONS.to_vec(),
+    )?;
+    Ok(())
+}

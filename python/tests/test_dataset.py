@@ -1,0 +1,188 @@
+"""Datasets from logs (rinshan.dataset, `rinshan dataset`): rows checked against the per-round
+records of rinshan.tenhou.read (each round replayed alone), every action legal under its own mask,
+the CLI and the package making the same bytes, batches through PyTorch's DataLoader, and bad
+input reported."""
+
+import gzip
+import importlib.util
+import json
+import os
+import pathlib
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import rinshan
+from rinshan.dataset import Dataset, build, iterate
+from rinshan.env import split_record
+
+REPO = pathlib.Path(__file__).resolve().parents[2]
+TENHOU = sorted((REPO / "tests" / "data" / "tenhou").glob("*.json"))
+MJLOG = sorted((REPO / "tests" / "data" / "mjlog").glob("*.xml"))
+TRAIN = REPO / "examples" / "train"
+HAVE_TORCH = importlib.util.find_spec("torch") is not None
+needs_torch = pytest.mark.skipif(not HAVE_TORCH and not os.environ.get("CI"), reason="no torch")
+
+
+@pytest.fixture(scope="module")
+def built(tmp_path_factory):
+    logs = tmp_path_factory.mktemp("logs")
+    for p in TENHOU[:4] + MJLOG[:2]:
+        (logs / p.name).write_bytes(p.read_bytes())
+    out = tmp_path_factory.mktemp("data") / "ds"
+    summary = build([logs], out, observation=["planes", "tokens"], shard_size=2, threads=2)
+    return logs, out, summary
+
+
+def test_rows_are_each_rounds_decisions_with_a_real_choice(built):
+    logs, out, summary = built
+    assert summary["inputs"] == 6 and summary["games"] == 6 and summary["skipped"] == []
+    ds = Dataset(out)
+    assert len(ds) == summary["rows"] == summary["total_rows"] > 1000
+    assert ds.check() == len(ds)
+    names = ds.games
+    rows = ds[:]
+    for g, name in enumerate(names):
+        game = rinshan.tenhou.read(name, observation=["planes", "tokens"])
+        want = {"planes": [], "events": [], "mask": [], "action": [], "seat": [], "round": []}
+        for r, rnd in enumerate(game["rounds"]):
+            assert "error" not in rnd, rnd.get("error")
+            choice = rnd["legal_action_mask"].sum(axis=1) > 1
+            want["planes"].append(rnd["observation"]["planes"][choice])
+            want["events"].append(rnd["observation"]["events"][choice])
+            want["mask"].append(rnd["legal_action_mask"][choice])
+            want["action"].append(rnd["action"][choice])
+            want["seat"].append(rnd["seat"][choice])
+            want["round"].append(np.full(choice.sum(), r))
+        mine = rows["game"] == g
+        np.testing.assert_array_equal(rows["planes"][mine], np.concatenate(want["planes"]))
+        np.testing.assert_array_equal(rows["events"][mine], np.concatenate(want["events"]))
+        np.testing.assert_array_equal(rows["legal_action_mask"][mine], np.concatenate(want["mask"]))
+        np.testing.assert_array_equal(rows["action"][mine], np.concatenate(want["action"]))
+        np.testing.assert_array_equal(rows["seat"][mine], np.concatenate(want["seat"]))
+        np.testing.assert_array_equal(rows["round"][mine], np.concatenate(want["round"]))
+        # The game's end: final points sum to the starting points, places follow them.
+        scores, ranks = rows["scores"][mine][0], rows["ranks"][mine][0]
+        assert scores.sum() == 100_000 and sorted(ranks) == [0, 1, 2, 3]
+        for a in range(4):
+            for b in range(4):
+                assert ranks[a] > ranks[b] or scores[a] >= scores[b]
+        seat = rows["seat"][mine]
+        np.testing.assert_array_equal(rows["rank"][mine], ranks[seat])
+        np.testing.assert_array_equal(rows["score"][mine], scores[seat])
+
+
+def test_indexing_single_rows_slices_and_arrays(built):
+    _, out, _ = built
+    ds = Dataset(out, fields=["planes", "action", "rank"])
+    n = len(ds)
+    every = ds[:]
+    idx = np.array([n - 1, 0, 7, n // 2, 7])
+    picked = ds[idx]
+    for k in ("planes", "action", "rank"):
+        np.testing.assert_array_equal(picked[k], every[k][idx])
+    one = ds[-1]
+    np.testing.assert_array_equal(one["planes"], every["planes"][-1])
+    assert set(one) == {"planes", "action", "rank"}
+    np.testing.assert_array_equal(ds.__getitems__([3, 1])["action"], every["action"][[3, 1]])
+    with pytest.raises(IndexError):
+        ds[n]
+    with pytest.raises(KeyError, match="not fields"):
+        Dataset(out, fields=["nothing"])
+
+
+def test_iterate_gives_the_datasets_rows_without_writing(built):
+    logs, out, _ = built
+    rows = Dataset(out)[:]
+    got = list(iterate(logs, observation="planes", chunk=4))
+    assert [g["name"] for g in got] == Dataset(out).games
+    actions = np.concatenate([g["action"] for g in got])
+    np.testing.assert_array_equal(actions, rows["action"])
+    raw = np.concatenate([g["observation"]["planes"] for g in got])
+    np.testing.assert_array_equal(split_record(raw, "planes")["planes"], rows["planes"])
+    only = list(iterate(TENHOU[0], observation=None, players=["nobody"]))
+    assert len(only) == 1 and len(only[0]["action"]) == 0
+
+
+def test_the_cli_writes_the_same_bytes_and_resumes(built, cli, tmp_path):
+    logs, out, summary = built
+    mine = tmp_path / "cli"
+    cmd = [cli, "dataset", str(logs), "-o", str(mine), "--observe", "planes,tokens", "--shard-size", "2"]
+    done = subprocess.run([*cmd, "--threads", "1", "--json"], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    report = json.loads(done.stdout)
+    assert report["rows"] == summary["rows"] and report["skipped"] == []
+    for f in sorted(out.rglob("*")):
+        if f.is_file():
+            assert (mine / f.relative_to(out)).read_bytes() == f.read_bytes(), f
+    again = subprocess.run([*cmd, "--json"], capture_output=True, text=True)
+    assert again.returncode == 0, again.stderr
+    assert json.loads(again.stdout)["shards_resumed"] == 3
+    other = subprocess.run([*cmd[:-2], "--shard-size", "3"], capture_output=True, text=True)
+    assert other.returncode == 2 and "other options" in other.stderr
+
+
+def test_bad_logs_are_skipped_and_named(tmp_path):
+    logs = tmp_path / "logs"
+    logs.mkdir()
+    (logs / "a.json").write_bytes(TENHOU[0].read_bytes())
+    (logs / "b.json.gz").write_bytes(gzip.compress(TENHOU[1].read_bytes())[:200])
+    (logs / "c.mjson").write_text('{"type":"start_game"}\n{"type":"nonsense"}\n')
+    summary = build(logs, tmp_path / "ds", observation=None)
+    assert summary["games"] == 1
+    skipped = dict(summary["skipped"])
+    assert set(skipped) == {str(logs / "b.json.gz"), str(logs / "c.mjson")}
+    assert all(name in reason for name, reason in skipped.items())
+    ds = Dataset(tmp_path / "ds")
+    assert [s["input"] for s in ds.skipped] == sorted(skipped)
+    with pytest.raises(ValueError, match="oracle"):
+        build(logs, tmp_path / "ds2", observation="oracle")
+    with pytest.raises(FileNotFoundError, match="manifest"):
+        Dataset(logs)
+    with pytest.raises(ValueError, match="seats are 0..3"):
+        build(logs, tmp_path / "ds3", seats=[4])
+
+
+@needs_torch
+def test_a_dataloader_shuffles_across_shards(built):
+    import torch
+
+    _, out, _ = built
+    ds = Dataset(out, fields=["planes", "legal_action_mask", "action"])
+    loader = torch.utils.data.DataLoader(
+        ds, batch_size=256, shuffle=True, collate_fn=rinshan.dataset.collate
+    )
+    seen = 0
+    for batch in loader:
+        assert batch["planes"].dtype == torch.uint8 and batch["legal_action_mask"].dtype == torch.bool
+        legal = batch["legal_action_mask"][torch.arange(len(batch["action"])), batch["action"].long()]
+        assert bool(legal.all())
+        seen += len(batch["action"])
+    assert seen == len(ds)
+
+
+@needs_torch
+def test_behaviour_cloning_from_a_log_dataset(built, tmp_path):
+    logs, _, _ = built
+    data = tmp_path / "ds"
+    build(logs, data, observation=["planes", "analysis"])
+    code = (
+        "import sys, pathlib; sys.path.insert(0, sys.argv[1]);"
+        "from bc import train_bc; from common import load_config;"
+        "cfg = load_config(pathlib.Path(sys.argv[1]) / 'configs' / 'smoke.toml');"
+        "cfg['bc']['epochs'] = 1;"
+        "r = train_bc(cfg, 0, pathlib.Path(sys.argv[2]), pathlib.Path(sys.argv[3]));"
+        "print(r['samples'], r['val_accuracy'])"
+    )
+    done = subprocess.run(
+        [sys.executable, "-c", code, str(TRAIN), str(data), str(tmp_path / "out")],
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+    assert done.returncode == 0, done.stdout + done.stderr
+    samples, accuracy = done.stdout.split()[-2:]
+    assert int(samples) == len(Dataset(data)) and (tmp_path / "out" / "bc.pt").exists()
+    assert 0.0 <= float(accuracy) <= 1.0

@@ -1,0 +1,162 @@
+//! `rinshan dataset <inputs> -o DIR`: logs (files, folders, glob patterns, tar archives; any
+//! format, plain or gzipped) replayed into training shards (see `rinshan_dataset`). Resumes a
+//! folder a run left unfinished; a log that cannot be read or replayed is reported and skipped.
+
+use std::path::PathBuf;
+
+use indicatif::{ProgressBar, ProgressStyle};
+use rinshan_dataset::{build, Build, Options, Progress, Seats};
+use rinshan_engine::observe::Form;
+
+use crate::error::CliError;
+
+#[derive(clap::Args)]
+pub struct Args {
+    /// Log files, folders (searched recursively), glob patterns (quoted) or tar archives
+    /// (.tar, .tar.gz, .tgz) of tenhou.net/6 JSON, MJAI or mjlog XML logs
+    #[arg(required = true)]
+    inputs: Vec<String>,
+    /// The dataset folder: made if missing, resumed if a run left it unfinished
+    #[arg(short, long)]
+    output: PathBuf,
+    /// Observation forms of each row, comma-separated (planes, tokens, analysis; none for no
+    /// observation)
+    #[arg(long, default_value = "planes")]
+    observe: String,
+    /// Only these absolute seats' decisions (0 = the first dealer), e.g. `0,2`
+    #[arg(long, value_delimiter = ',', conflicts_with = "players")]
+    seats: Vec<u8>,
+    /// Only the decisions of these players (names as the logs spell them), comma-separated
+    #[arg(long, value_delimiter = ',')]
+    players: Vec<String>,
+    /// Keep decisions with a single legal action
+    #[arg(long)]
+    forced: bool,
+    /// Logs per shard
+    #[arg(long, default_value_t = 256)]
+    shard_size: usize,
+    /// Threads (default: all cores)
+    #[arg(long)]
+    threads: Option<usize>,
+    /// No progress bar
+    #[arg(long)]
+    quiet: bool,
+    /// Print the summary as JSON
+    #[arg(long)]
+    json: bool,
+}
+
+fn forms(text: &str) -> Result<Vec<Form>, CliError> {
+    if text == "none" {
+        return Ok(Vec::new());
+    }
+    let mut out = Vec::new();
+    for name in text.split(',').map(str::trim).filter(|s| !s.is_empty()) {
+        let form: Form = name.parse().map_err(CliError::input)?;
+        if !out.contains(&form) {
+            out.push(form);
+        }
+    }
+    Ok(out)
+}
+
+fn seats(args: &Args) -> Result<Seats, CliError> {
+    if !args.players.is_empty() {
+        return Ok(Seats::Players(args.players.clone()));
+    }
+    if args.seats.is_empty() {
+        return Ok(Seats::All);
+    }
+    let mut keep = [false; 4];
+    for &s in &args.seats {
+        if s > 3 {
+            return Err(CliError::input(format!("--seats: seat {s}: seats are 0..3")));
+        }
+        keep[s as usize] = true;
+    }
+    Ok(Seats::Some(keep))
+}
+
+pub fn run(args: Args) -> Result<(), CliError> {
+    let b = Build {
+        inputs: args.inputs.clone(),
+        out: args.output.clone(),
+        options: Options {
+            forms: forms(&args.observe)?,
+            seats: seats(&args)?,
+            forced: args.forced,
+        },
+        inputs_per_shard: args.shard_size,
+        threads: args.threads.unwrap_or_else(rayon::current_num_threads),
+    };
+    let bar = if args.quiet || args.json {
+        ProgressBar::hidden()
+    } else {
+        let bar = ProgressBar::new_spinner();
+        bar.set_style(
+            ProgressStyle::with_template("{spinner} {pos} logs  {per_sec}  {msg}")
+                .unwrap_or_else(|_| ProgressStyle::default_spinner()),
+        );
+        bar
+    };
+    let mut on_progress = |p: Progress| {
+        if let Some(total) = p.total {
+            if bar.length() != Some(total) {
+                bar.set_length(total);
+                bar.set_style(
+                    ProgressStyle::with_template("{bar:40} {pos}/{len} logs  {per_sec}  eta {eta}  {msg}")
+                        .unwrap_or_else(|_| ProgressStyle::default_bar()),
+                );
+            }
+        }
+        bar.set_position(p.inputs);
+        bar.set_message(format!("{} rows", p.rows));
+    };
+    let summary = build(&b, &mut on_progress);
+    bar.finish_and_clear();
+    let summary = summary.map_err(CliError::input)?;
+    let per_sec = |n: u64| n as f64 / summary.seconds.max(1e-9);
+    if args.json {
+        let skipped: Vec<_> = summary
+            .skipped
+            .iter()
+            .map(|s| serde_json::json!({"input": s.input, "reason": s.reason}))
+            .collect();
+        let value = serde_json::json!({
+            "output": args.output.display().to_string(),
+            "shards_written": summary.shards_written,
+            "shards_resumed": summary.shards_resumed,
+            "inputs": summary.inputs,
+            "games": summary.games,
+            "rows": summary.rows,
+            "total_rows": summary.total_rows,
+            "skipped": skipped,
+            "seconds": summary.seconds,
+            "games_per_second": per_sec(summary.games),
+            "rows_per_second": per_sec(summary.rows),
+        });
+        println!("{value:#}");
+        return Ok(());
+    }
+    println!("dataset {}", args.output.display());
+    if summary.shards_resumed > 0 {
+        println!("  {} shards were already finished", summary.shards_resumed);
+    }
+    println!(
+        "  {} shards written: {} logs, {} games kept, {} rows ({} rows in all)",
+        summary.shards_written, summary.inputs, summary.games, summary.rows, summary.total_rows
+    );
+    println!(
+        "  {:.1} s: {:.0} games/s, {:.0} rows/s",
+        summary.seconds,
+        per_sec(summary.games),
+        per_sec(summary.rows)
+    );
+    if !summary.skipped.is_empty() {
+        println!("  {} logs skipped:", summary.skipped.len());
+        for s in &summary.skipped {
+            println!("    {}", s.reason);
+        }
+    }
+    Ok(())
+}

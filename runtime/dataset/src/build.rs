@@ -1,0 +1,264 @@
+//! Building a dataset folder: inputs in their fixed order, cut into shards of so many inputs;
+//! shards made in parallel a wave at a time (one per thread), each written whole and then listed
+//! in the manifest. A run that stops leaves every listed shard whole; run again with the same
+//! inputs and options, it checks the listed shards cover the same inputs and goes on after them.
+//! The same inputs and options give the same bytes, whatever the thread count.
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use rayon::prelude::*;
+use rinshan_engine::env::action_names;
+use rinshan_logs::file::parse_log;
+
+use crate::inputs::{count, for_each_unit, sources, Unit};
+use crate::manifest::{check_forms, Manifest, ShardRecord, Skip};
+use crate::record::{record, GameRows, Options, Outcome, VARIANT};
+use crate::shard::write_shard;
+
+/// A dataset to build.
+#[derive(Debug, Clone)]
+pub struct Build {
+    /// Files, folders, glob patterns and tar archives of logs (any format, plain or gzipped).
+    pub inputs: Vec<String>,
+    /// The dataset folder (made if missing; an existing one is resumed).
+    pub out: PathBuf,
+    /// What rows to make.
+    pub options: Options,
+    /// Inputs per shard.
+    pub inputs_per_shard: usize,
+    /// Shards made at once (threads).
+    pub threads: usize,
+}
+
+/// Where a build stands, for a progress bar.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Progress {
+    /// Inputs done (resumed ones included).
+    pub inputs: u64,
+    /// All inputs, when known before reading them (no archives).
+    pub total: Option<u64>,
+    /// Rows written by this run.
+    pub rows: u64,
+}
+
+/// What a build did.
+#[derive(Debug, Clone, Default)]
+pub struct Summary {
+    /// Shards written by this run.
+    pub shards_written: usize,
+    /// Shards a previous run had finished.
+    pub shards_resumed: usize,
+    /// Inputs covered by this run.
+    pub inputs: u64,
+    /// Games kept by this run.
+    pub games: u64,
+    /// Rows written by this run.
+    pub rows: u64,
+    /// Inputs this run left out, with reasons.
+    pub skipped: Vec<Skip>,
+    /// Rows in the whole dataset.
+    pub total_rows: u64,
+    /// Seconds this run took.
+    pub seconds: f64,
+}
+
+fn shard_name(index: usize) -> String {
+    format!("shard-{index:06}")
+}
+
+/// Reads, replays and writes one shard.
+fn make_shard(out: &Path, index: usize, units: &[Unit], options: &Options) -> Result<ShardRecord, String> {
+    let mut games = Vec::new();
+    let mut slots = Vec::new();
+    let mut skipped = Vec::new();
+    for unit in units {
+        match unit
+            .bytes()
+            .and_then(|b| parse_log(&unit.name, &b).map_err(|e| e.to_string()))
+        {
+            Ok((game, _format)) => {
+                slots.push(Some(games.len()));
+                games.push(game);
+            }
+            Err(reason) => {
+                slots.push(None);
+                skipped.push(Skip {
+                    input: unit.name.clone(),
+                    reason,
+                });
+            }
+        }
+    }
+    let outcomes = record(&games, options)?;
+    let mut kept: Vec<GameRows> = Vec::new();
+    for (unit, slot) in units.iter().zip(slots) {
+        let Some(g) = slot else { continue };
+        match &outcomes[g] {
+            Outcome::Rows(rows) => kept.push(rows.clone()),
+            Outcome::Skipped(reason) => skipped.push(Skip {
+                input: unit.name.clone(),
+                reason: reason.clone(),
+            }),
+        }
+    }
+    // Skips in input order, whichever stage found them.
+    let order: Vec<&str> = units.iter().map(|u| u.name.as_str()).collect();
+    skipped.sort_by_key(|s| order.iter().position(|&n| n == s.input));
+    let name = shard_name(index);
+    let num_actions = action_names(VARIANT).len();
+    let rows = write_shard(out, &name, &kept, &options.forms, num_actions)?;
+    Ok(ShardRecord {
+        name,
+        rows,
+        inputs: order.iter().map(|s| s.to_string()).collect(),
+        games: kept.iter().map(|g| g.name.clone()).collect(),
+        skipped,
+    })
+}
+
+struct State<'a> {
+    build: &'a Build,
+    manifest: Manifest,
+    /// Shards finished before this run.
+    resumed: usize,
+    /// Index of the next shard.
+    next: usize,
+    chunk: Vec<Unit>,
+    wave: Vec<(usize, Vec<Unit>)>,
+    summary: Summary,
+    progress: Progress,
+    pool: rayon::ThreadPool,
+}
+
+impl State<'_> {
+    /// Takes a full (or the last) chunk: checks it against a finished shard, or queues it.
+    fn cut(&mut self, on_progress: &mut dyn FnMut(Progress)) -> Result<(), String> {
+        let units = std::mem::take(&mut self.chunk);
+        if units.is_empty() {
+            return Ok(());
+        }
+        let index = self.next;
+        self.next += 1;
+        if let Some(done) = self.manifest.shards.get(index) {
+            let names: Vec<&str> = units.iter().map(|u| u.name.as_str()).collect();
+            if done.inputs != names {
+                return Err(format!(
+                    "{}: {} was made from other inputs ({} first held {:?}, now {:?}): build into a new folder",
+                    self.build.out.display(),
+                    done.name,
+                    done.name,
+                    done.inputs.first(),
+                    names.first()
+                ));
+            }
+            self.progress.inputs += units.len() as u64;
+            on_progress(self.progress);
+            return Ok(());
+        }
+        self.wave.push((index, units));
+        if self.wave.len() >= self.build.threads.max(1) {
+            self.flush(on_progress)?;
+        }
+        Ok(())
+    }
+
+    /// Makes the queued shards in parallel and lists them in the manifest, in order.
+    fn flush(&mut self, on_progress: &mut dyn FnMut(Progress)) -> Result<(), String> {
+        let wave = std::mem::take(&mut self.wave);
+        let (out, options) = (&self.build.out, &self.build.options);
+        let made: Vec<Result<ShardRecord, String>> = self.pool.install(|| {
+            wave.par_iter()
+                .map(|(index, units)| make_shard(out, *index, units, options))
+                .collect()
+        });
+        for record in made {
+            let record = record?;
+            self.summary.shards_written += 1;
+            self.summary.inputs += record.inputs.len() as u64;
+            self.summary.games += record.games.len() as u64;
+            self.summary.rows += record.rows;
+            self.summary.skipped.extend(record.skipped.iter().cloned());
+            self.progress.inputs += record.inputs.len() as u64;
+            self.progress.rows += record.rows;
+            self.manifest.shards.push(record);
+        }
+        self.manifest.save(out)?;
+        on_progress(self.progress);
+        Ok(())
+    }
+}
+
+/// Builds (or resumes) the dataset `b` describes; `on_progress` hears after each wave.
+pub fn build(b: &Build, on_progress: &mut dyn FnMut(Progress)) -> Result<Summary, String> {
+    let start = Instant::now();
+    check_forms(&b.options.forms)?;
+    if b.inputs_per_shard == 0 {
+        return Err("a shard needs at least one input".into());
+    }
+    let sources = sources(&b.inputs)?;
+    let out = &b.out;
+    let io = |e: std::io::Error| format!("{}: {e}", out.display());
+    std::fs::create_dir_all(out).map_err(io)?;
+    let fresh = Manifest::new(&b.options, b.inputs_per_shard);
+    let manifest = match Manifest::load(out)? {
+        Some(m) if m.same_layout(&fresh) => m,
+        Some(_) => {
+            return Err(format!(
+                "{}: holds a dataset made with other options or by another version: build into a new folder",
+                out.display()
+            ))
+        }
+        None => {
+            if std::fs::read_dir(out).map_err(io)?.next().is_some() {
+                return Err(format!(
+                    "{}: the folder is not empty and holds no dataset manifest: build into a new or empty folder",
+                    out.display()
+                ));
+            }
+            fresh.save(out)?;
+            fresh
+        }
+    };
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(b.threads.max(1))
+        .build()
+        .map_err(|e| e.to_string())?;
+    let resumed = manifest.shards.len();
+    let mut state = State {
+        build: b,
+        manifest,
+        resumed,
+        next: 0,
+        chunk: Vec::new(),
+        wave: Vec::new(),
+        summary: Summary::default(),
+        progress: Progress {
+            total: count(&sources),
+            ..Progress::default()
+        },
+        pool,
+    };
+    for_each_unit(&sources, &mut |unit| {
+        state.chunk.push(unit);
+        if state.chunk.len() == b.inputs_per_shard {
+            state.cut(on_progress)?;
+        }
+        Ok(())
+    })?;
+    state.cut(on_progress)?;
+    state.flush(on_progress)?;
+    if state.next < state.manifest.shards.len() {
+        return Err(format!(
+            "{}: lists {} shards but the inputs fill only {}: build into a new folder",
+            out.display(),
+            state.manifest.shards.len(),
+            state.next
+        ));
+    }
+    let mut summary = state.summary;
+    summary.shards_resumed = state.resumed;
+    summary.total_rows = state.manifest.shards.iter().map(|s| s.rows).sum();
+    summary.seconds = start.elapsed().as_secs_f64();
+    Ok(summary)
+}

@@ -1,0 +1,28 @@
+//! rinshan-dataset: training data from game logs. A folder, glob or tar archive of logs in any
+//! format `rinshan-logs` reads is replayed through the engine; every decision of the chosen seats
+//! becomes a row (the seat's observation in the asked forms, its legal mask, the action the log
+//! took), every kept game gets its final scores and ranks, and the rows go to `.npy` shards with a
+//! manifest that carries the field schema.
+//!
+//! * [`inputs`] — which logs, in one fixed order (files, folders, globs, tar archives).
+//! * [`record`] — a batch of games replayed into rows.
+//! * [`shard`] — one shard's arrays on disk.
+//! * [`manifest`] — the schema, options and finished shards.
+//! * [`build`] — the parallel, resumable run over all of it.
+//!
+//! Depends on `rinshan-engine` and `rinshan-logs`; the `rinshan dataset` command and the Python
+//! package build on it.
+
+#![warn(missing_docs)]
+
+pub mod build;
+pub mod inputs;
+pub mod manifest;
+pub mod record;
+pub mod shard;
+
+pub use build::{build, Build, Progress, Summary};
+pub use record::{Options, Seats};
+
+#[cfg(test)]
+mod tests;

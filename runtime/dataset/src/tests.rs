@@ -1,0 +1,250 @@
+//! The builder against an independent path (each round replayed alone, one env, its observations
+//! computed from the game state by `observe::record`), and its promises: the same bytes for the
+//! same inputs whatever the threads, resuming, bad logs skipped with their reasons.
+
+use std::path::{Path, PathBuf};
+
+use rinshan_engine::observe::{record as observe_record, Form};
+use rinshan_logs::read_log;
+use rinshan_logs::tenhou::position::round_positions;
+
+use crate::manifest::Manifest;
+use crate::record::{record, Options, Outcome, Seats, VARIANT};
+use crate::{build, Build};
+
+fn data(dir: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../tests/data").join(dir)
+}
+
+fn logs(dir: &str, ext: &str) -> Vec<PathBuf> {
+    let mut out: Vec<PathBuf> = std::fs::read_dir(data(dir))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == ext))
+        .collect();
+    out.sort();
+    out
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("rinshan-dataset-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn options(forms: &[Form]) -> Options {
+    Options {
+        forms: forms.to_vec(),
+        seats: Seats::All,
+        forced: false,
+    }
+}
+
+/// Every file of `dir`, name -> bytes.
+fn files(dir: &Path) -> Vec<(String, Vec<u8>)> {
+    let mut out = Vec::new();
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        for e in std::fs::read_dir(&d).unwrap() {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                stack.push(p);
+            } else {
+                let name = p.strip_prefix(dir).unwrap().display().to_string();
+                out.push((name, std::fs::read(&p).unwrap()));
+            }
+        }
+    }
+    out.sort();
+    out
+}
+
+#[test]
+fn rows_are_the_decisions_of_each_round_replayed_alone() {
+    let forms = [Form::Planes, Form::Tokens];
+    let paths: Vec<PathBuf> = logs("tenhou", "json")
+        .into_iter()
+        .take(6)
+        .chain(logs("mjlog", "xml"))
+        .collect();
+    let games: Vec<_> = paths.iter().map(|p| read_log(p).unwrap()).collect();
+    let outcomes = record(&games, &options(&forms)).unwrap();
+    let na = rinshan_engine::env::action_names(VARIANT).len();
+    let mut checked = 0;
+    for (game, outcome) in games.iter().zip(&outcomes) {
+        let Outcome::Rows(rows) = outcome else {
+            panic!("{}: {outcome:?}", game.path);
+        };
+        let mut row = 0;
+        for r in 0..game.rounds.len() {
+            for p in round_positions(game, r).unwrap() {
+                let mask = p.state.mask;
+                let legal = mask.iter().map(|w| w.count_ones()).sum::<u32>();
+                if legal < 2 {
+                    continue;
+                }
+                assert_eq!(rows.round[row] as usize, r);
+                assert_eq!(rows.seat[row] as u32, p.seat);
+                assert_eq!(
+                    rows.action[row] as u32, p.action,
+                    "{} round {r} step {}",
+                    game.path, p.step
+                );
+                for a in 0..na {
+                    let bit = mask[a / 32] >> (a % 32) & 1;
+                    assert_eq!(u32::from(rows.mask[row * na + a]), bit);
+                }
+                for (f, &form) in forms.iter().enumerate() {
+                    let want = observe_record(VARIANT, form, &p.state, p.seat);
+                    let got = &rows.observations[f][row * form.bytes()..(row + 1) * form.bytes()];
+                    assert!(
+                        got == want.as_slice(),
+                        "{} round {r} step {}: {form}",
+                        game.path,
+                        p.step
+                    );
+                }
+                row += 1;
+            }
+        }
+        assert_eq!(row, rows.rows(), "{}", game.path);
+        checked += row;
+        // The final standings: the scores sum to the starting points (no sticks left over at the
+        // end: the top seat takes them), and the ranks are a permutation ordered by score.
+        assert_eq!(rows.scores.iter().sum::<i32>(), 100_000, "{}", game.path);
+        let mut ranks = rows.ranks;
+        ranks.sort();
+        assert_eq!(ranks, [0, 1, 2, 3]);
+        for a in 0..4 {
+            for b in 0..4 {
+                if rows.ranks[a] < rows.ranks[b] {
+                    assert!(rows.scores[a] >= rows.scores[b], "{}: {rows:?}", game.path);
+                }
+            }
+        }
+    }
+    assert!(checked > 5_000, "{checked}");
+}
+
+#[test]
+fn seat_and_player_filters_and_forced_rows() {
+    let games = vec![read_log(&logs("tenhou", "json")[0]).unwrap()];
+    let all = |o: &Options| match &record(&games, o).unwrap()[0] {
+        Outcome::Rows(r) => r.clone(),
+        other => panic!("{other:?}"),
+    };
+    let every = all(&options(&[]));
+    let with_forced = all(&Options {
+        forced: true,
+        ..options(&[])
+    });
+    assert!(with_forced.rows() >= every.rows());
+    let seat2 = all(&Options {
+        seats: Seats::Some([false, false, true, false]),
+        ..options(&[])
+    });
+    assert!(seat2.rows() > 0 && seat2.seat.iter().all(|&s| s == 2));
+    assert_eq!(seat2.rows(), every.seat.iter().filter(|&&s| s == 2).count());
+    let name = games[0].names[2].clone();
+    let player = all(&Options {
+        seats: Seats::Players(vec![name]),
+        ..options(&[])
+    });
+    assert_eq!(player.action, seat2.action);
+    assert!(every.observations.is_empty() || every.observations.iter().all(Vec::is_empty));
+}
+
+fn run(inputs: &[PathBuf], out: &Path, threads: usize, per_shard: usize) -> Result<crate::Summary, String> {
+    build(
+        &Build {
+            inputs: inputs.iter().map(|p| p.display().to_string()).collect(),
+            out: out.to_path_buf(),
+            options: options(&[Form::Planes]),
+            inputs_per_shard: per_shard,
+            threads,
+        },
+        &mut |_| {},
+    )
+}
+
+#[test]
+fn the_same_inputs_give_the_same_bytes_and_a_stopped_run_resumes() {
+    let inputs: Vec<PathBuf> = logs("tenhou", "json").into_iter().take(5).collect();
+    let (a, b) = (scratch("one-thread"), scratch("two-threads"));
+    let first = run(&inputs, &a, 1, 2).unwrap();
+    assert_eq!((first.shards_written, first.inputs, first.games), (3, 5, 5));
+    assert!(first.skipped.is_empty(), "{:?}", first.skipped);
+    run(&inputs, &b, 2, 2).unwrap();
+    assert!(files(&a) == files(&b), "thread count changed the bytes");
+
+    // A run stopped after its first shard: the manifest lists one; the later folders may hold
+    // anything (here: garbage in a half-written one).
+    let mut m = Manifest::load(&b).unwrap().unwrap();
+    m.shards.truncate(1);
+    m.save(&b).unwrap();
+    std::fs::write(b.join("shard-000001/action.npy"), b"cut off").unwrap();
+    let resumed = run(&inputs, &b, 2, 2).unwrap();
+    assert_eq!((resumed.shards_resumed, resumed.shards_written), (1, 2));
+    assert_eq!(resumed.total_rows, first.rows);
+    assert!(files(&a) == files(&b), "the resumed dataset differs");
+
+    // Other inputs, other options or a folder of something else are refused, and nothing is lost.
+    let other: Vec<PathBuf> = logs("tenhou", "json").into_iter().skip(1).take(5).collect();
+    let err = run(&other, &b, 1, 2).unwrap_err();
+    assert!(err.contains("other inputs"), "{err}");
+    let err = run(&inputs, &b, 1, 3).unwrap_err();
+    assert!(err.contains("other options"), "{err}");
+    assert!(files(&a) == files(&b));
+    let c = scratch("occupied");
+    std::fs::write(c.join("notes.txt"), "mine").unwrap();
+    assert!(run(&inputs, &c, 1, 2).unwrap_err().contains("not empty"));
+    for d in [a, b, c] {
+        std::fs::remove_dir_all(d).unwrap();
+    }
+}
+
+#[test]
+fn bad_logs_are_skipped_with_file_and_reason_and_the_rest_is_kept() {
+    let dir = scratch("bad");
+    let good = logs("tenhou", "json")[0].clone();
+    let text = std::fs::read_to_string(&good).unwrap();
+    std::fs::copy(&good, dir.join("a-good.json")).unwrap();
+    // A gzip cut in half, XML that breaks off, a discard of a tile the hand does not hold.
+    let mut gz = flate2::write::GzEncoder::new(Vec::new(), flate2::Compression::default());
+    std::io::Write::write_all(&mut gz, text.as_bytes()).unwrap();
+    let gz = gz.finish().unwrap();
+    std::fs::write(dir.join("b-truncated.json.gz"), &gz[..gz.len() / 2]).unwrap();
+    std::fs::write(
+        dir.join("c-broken.xml"),
+        "<mjloggm ver=\"2.3\"><GO type=\"169\" lobby=\"0\"/><UN n0=",
+    )
+    .unwrap();
+    let xml = std::fs::read_to_string(&logs("mjlog", "xml")[0]).unwrap();
+    let first_discard = xml.find("<D").unwrap();
+    let end = xml[first_discard..].find("/>").unwrap() + first_discard;
+    let illegal = format!("{}<D135{}", &xml[..first_discard], &xml[end..]);
+    std::fs::write(dir.join("d-illegal.xml"), illegal).unwrap();
+    let out = scratch("bad-out");
+    let s = run(std::slice::from_ref(&dir), &out, 2, 2).unwrap();
+    assert_eq!((s.inputs, s.games), (4, 1), "{:?}", s.skipped);
+    let reasons: Vec<(String, String)> = s.skipped.iter().map(|k| (k.input.clone(), k.reason.clone())).collect();
+    assert_eq!(reasons.len(), 3, "{reasons:?}");
+    assert!(
+        reasons[0].0.ends_with("b-truncated.json.gz") && reasons[0].1.contains("gzip"),
+        "{reasons:?}"
+    );
+    assert!(
+        reasons[1].0.ends_with("c-broken.xml") && reasons[1].1.contains("c-broken.xml"),
+        "{reasons:?}"
+    );
+    assert!(
+        reasons[2].0.ends_with("d-illegal.xml") && reasons[2].1.contains("d-illegal.xml"),
+        "{reasons:?}"
+    );
+    let m = Manifest::load(&out).unwrap().unwrap();
+    assert_eq!(m.shards[0].games.len(), 1);
+    assert_eq!(m.shards.iter().map(|s| s.skipped.len()).sum::<usize>(), 3);
+    std::fs::remove_dir_all(dir).unwrap();
+    std::fs::remove_dir_all(out).unwrap();
+}
