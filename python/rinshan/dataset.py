@@ -51,11 +51,11 @@ def build(
     seats: Optional[Sequence[int]] = None,
     players: Optional[Sequence[str]] = None,
     forced: bool = False,
-    shard_size: int = 256,
+    shard_size: Optional[int] = None,
     threads: Optional[int] = None,
 ) -> dict:
     """Builds (or resumes) the dataset folder `out` from `inputs` (files, folders, glob patterns,
-    tar archives): what `rinshan dataset` does. Returns the summary (`skipped` lists each log left
+    tar archives): what `rinshan dataset` does (`shard_size` logs per shard, default 128). Returns the summary (`skipped` lists each log left
     out with its reason)."""
     return _core.dataset_build(
         _paths(inputs),
@@ -64,7 +64,7 @@ def build(
         None if seats is None else [int(s) for s in seats],
         None if players is None else [str(p) for p in players],
         bool(forced),
-        int(shard_size),
+        None if shard_size is None else int(shard_size),
         threads,
     )
 

@@ -43,7 +43,7 @@ fn options(
 
 /// Builds (or resumes) a dataset folder; the summary as a dict.
 #[pyfunction]
-#[pyo3(signature = (inputs, out, forms, seats=None, players=None, forced=false, shard_size=256, threads=None))]
+#[pyo3(signature = (inputs, out, forms, seats=None, players=None, forced=false, shard_size=None, threads=None))]
 #[allow(clippy::too_many_arguments)]
 fn dataset_build<'py>(
     py: Python<'py>,
@@ -53,14 +53,14 @@ fn dataset_build<'py>(
     seats: Option<Vec<u8>>,
     players: Option<Vec<String>>,
     forced: bool,
-    shard_size: usize,
+    shard_size: Option<usize>,
     threads: Option<usize>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let b = Build {
         inputs,
         out: out.into(),
         options: options(forms, seats, players, forced)?,
-        inputs_per_shard: shard_size,
+        inputs_per_shard: shard_size.unwrap_or(rinshan_dataset::DEFAULT_INPUTS_PER_SHARD),
         threads: threads.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get())),
     };
     let s = py.detach(|| build(&b, &mut |_| {})).map_err(PyValueError::new_err)?;

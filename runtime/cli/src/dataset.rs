@@ -5,7 +5,7 @@
 use std::path::PathBuf;
 
 use indicatif::{ProgressBar, ProgressStyle};
-use rinshan_dataset::{build, Build, Options, Progress, Seats};
+use rinshan_dataset::{build, Build, Options, Progress, Seats, DEFAULT_INPUTS_PER_SHARD};
 use rinshan_engine::observe::Form;
 
 use crate::error::CliError;
@@ -33,7 +33,7 @@ pub struct Args {
     #[arg(long)]
     forced: bool,
     /// Logs per shard
-    #[arg(long, default_value_t = 256)]
+    #[arg(long, default_value_t = DEFAULT_INPUTS_PER_SHARD)]
     shard_size: usize,
     /// Threads (default: all cores)
     #[arg(long)]

@@ -21,7 +21,7 @@ pub mod manifest;
 pub mod record;
 pub mod shard;
 
-pub use build::{build, Build, Progress, Summary};
+pub use build::{build, Build, Progress, Summary, DEFAULT_INPUTS_PER_SHARD};
 pub use record::{Options, Seats};
 
 #[cfg(test)]
