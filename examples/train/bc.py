@@ -119,7 +119,9 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--config", required=True)
     ap.add_argument("--seed", type=int, default=0)
-    ap.add_argument("--data", required=True, help="collect.py's shards, or a `rinshan dataset` folder")
+    ap.add_argument(
+        "--data", required=True, help="collect.py's shards, or a `rinshan dataset` folder"
+    )
     ap.add_argument("--out", required=True)
     a = ap.parse_args()
     print(train_bc(load_config(a.config), a.seed, pathlib.Path(a.data), pathlib.Path(a.out)))

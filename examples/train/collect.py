@@ -102,8 +102,9 @@ def load_dataset(folder: pathlib.Path, analysis: bool) -> dict[str, np.ndarray]:
     try:
         ds = rinshan.dataset.Dataset(folder, fields=names)
     except KeyError as e:
-        raise SystemExit(f"{folder}: {e} (build it with --observe planes{',analysis' if analysis else ''})")
-    if ds.actions != rinshan.make(CANONICAL, num_envs=1).spec.action_names:
+        forms = "planes,analysis" if analysis else "planes"
+        raise SystemExit(f"{folder}: {e} (build it with --observe {forms})") from None
+    if list(ds.actions) != list(rinshan.make(CANONICAL, num_envs=1).spec.action_names):
         raise SystemExit(f"{folder}: its action ids are not the {CANONICAL} variant's")
     d = ds[:]
     return {

@@ -26,7 +26,9 @@ HERE = pathlib.Path(__file__).resolve().parent
 STAGES = ("bc", "ppo", "finetune")
 
 
-def run_seed(cfg: dict, seed: int, out: pathlib.Path, bc_from: Optional[pathlib.Path] = None) -> dict:
+def run_seed(
+    cfg: dict, seed: int, out: pathlib.Path, bc_from: Optional[pathlib.Path] = None
+) -> dict:
     times, result = {}, {"seed": seed}
     t = time.time()
     if bc_from is None:
@@ -126,7 +128,7 @@ def main() -> None:
     ap.add_argument(
         "--bc-from",
         type=pathlib.Path,
-        help="behaviour cloning from this dataset of game logs (`rinshan dataset`) instead of agent self-play",
+        help="behaviour cloning from this `rinshan dataset` folder of game logs, not self-play",
     )
     a = ap.parse_args()
     if a.smoke == bool(a.config):

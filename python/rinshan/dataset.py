@@ -55,8 +55,8 @@ def build(
     threads: Optional[int] = None,
 ) -> dict:
     """Builds (or resumes) the dataset folder `out` from `inputs` (files, folders, glob patterns,
-    tar archives): what `rinshan dataset` does (`shard_size` logs per shard, default 128). Returns the summary (`skipped` lists each log left
-    out with its reason)."""
+    tar archives): what `rinshan dataset` does (`shard_size` logs per shard, default 128).
+    Returns the summary (`skipped` lists each log left out with its reason)."""
     return _core.dataset_build(
         _paths(inputs),
         str(out),
@@ -128,7 +128,9 @@ class Dataset:
         try:
             self.manifest = json.loads(manifest_path.read_text())
         except FileNotFoundError:
-            raise FileNotFoundError(f"{manifest_path}: no dataset manifest (build one first)") from None
+            raise FileNotFoundError(
+                f"{manifest_path}: no dataset manifest (build one first)"
+            ) from None
         except json.JSONDecodeError as e:
             raise ValueError(f"{manifest_path}: not a dataset manifest: {e}") from None
         m = self.manifest
@@ -257,7 +259,8 @@ class Dataset:
             if bad.size:
                 r = int(bad[0])
                 raise ValueError(
-                    f"{self.shards[shard]['name']} row {r}: action {action[r]} is not legal under its mask"
+                    f"{self.shards[shard]['name']} row {r}: "
+                    f"action {action[r]} is not legal under its mask"
                 )
         return len(self)
 

@@ -109,7 +109,17 @@ def test_iterate_gives_the_datasets_rows_without_writing(built):
 def test_the_cli_writes_the_same_bytes_and_resumes(built, cli, tmp_path):
     logs, out, summary = built
     mine = tmp_path / "cli"
-    cmd = [cli, "dataset", str(logs), "-o", str(mine), "--observe", "planes,tokens", "--shard-size", "2"]
+    cmd = [
+        cli,
+        "dataset",
+        str(logs),
+        "-o",
+        str(mine),
+        "--observe",
+        "planes,tokens",
+        "--shard-size",
+        "2",
+    ]
     done = subprocess.run([*cmd, "--threads", "1", "--json"], capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
     report = json.loads(done.stdout)
@@ -156,8 +166,12 @@ def test_a_dataloader_shuffles_across_shards(built):
     )
     seen = 0
     for batch in loader:
-        assert batch["planes"].dtype == torch.uint8 and batch["legal_action_mask"].dtype == torch.bool
-        legal = batch["legal_action_mask"][torch.arange(len(batch["action"])), batch["action"].long()]
+        assert (
+            batch["planes"].dtype == torch.uint8 and batch["legal_action_mask"].dtype == torch.bool
+        )
+        legal = batch["legal_action_mask"][
+            torch.arange(len(batch["action"])), batch["action"].long()
+        ]
         assert bool(legal.all())
         seen += len(batch["action"])
     assert seen == len(ds)

@@ -4,7 +4,7 @@
 //! the format works. Written into a hidden folder and renamed into place: a shard folder that
 //! exists is whole.
 
-use std::io::BufWriter;
+use std::io::{BufWriter, Write};
 use std::path::Path;
 
 use npyz::WriterBuilder;
@@ -25,23 +25,33 @@ pub const ROW_ARRAYS: [(&str, &str); 5] = [
 /// uint8 `[games, 4]`).
 pub const GAME_ARRAYS: [(&str, &str); 2] = [("scores", "int32"), ("ranks", "uint8")];
 
-fn write_npy<T: npyz::AutoSerialize + Copy>(
+/// Writes `name.npy` in `dir`: npyz writes the header (`descr`: numpy's type string, e.g. `|u1`,
+/// `<u4`), the data goes out as the little-endian bytes `parts` hold, one slice at a time (a row
+/// array is the games' columns one after another, never joined in memory).
+fn write_npy<'a>(
     dir: &Path,
     name: &str,
+    descr: &str,
     shape: &[u64],
-    values: impl IntoIterator<Item = T>,
+    parts: impl IntoIterator<Item = &'a [u8]>,
 ) -> Result<(), String> {
     let path = dir.join(format!("{name}.npy"));
     let io = |e: std::io::Error| format!("{}: {e}", path.display());
+    let dtype = descr
+        .parse::<npyz::TypeStr>()
+        .map(npyz::DType::Plain)
+        .map_err(|e| format!("{descr}: {e}"))?;
     let file = std::fs::File::create(&path).map_err(io)?;
-    let mut writer = npyz::WriteOptions::new()
-        .default_dtype()
+    let mut writer = npyz::WriteOptions::new_header_only()
+        .dtype(dtype)
         .shape(shape)
         .writer(BufWriter::new(file))
-        .begin_nd()
+        .write_header_only()
         .map_err(io)?;
-    writer.extend(values).map_err(io)?;
-    writer.finish().map_err(io)
+    for part in parts {
+        writer.write_all(part).map_err(io)?;
+    }
+    writer.flush().map_err(io)
 }
 
 /// Writes `games`' rows as shard `name` of `out` (replacing a folder of that name a run left
@@ -63,37 +73,33 @@ pub fn write_shard(
     let rows: usize = games.iter().map(GameRows::rows).sum();
     let n = rows as u64;
     for (f, form) in forms.iter().enumerate() {
-        let bytes = games.iter().flat_map(|g| g.observations[f].iter().copied());
-        write_npy(&partial, form.name(), &[n, form.bytes() as u64], bytes)?;
+        let parts = games.iter().map(|g| g.observations[f].as_slice());
+        write_npy(&partial, form.name(), "|u1", &[n, form.bytes() as u64], parts)?;
     }
-    let mask = games.iter().flat_map(|g| g.mask.iter().map(|&b| b != 0));
-    write_npy(&partial, "legal_action_mask", &[n, num_actions as u64], mask)?;
+    // The mask's bytes are 0 or 1: numpy's bool as it is.
+    let mask = games.iter().map(|g| g.mask.as_slice());
+    write_npy(&partial, "legal_action_mask", "|b1", &[n, num_actions as u64], mask)?;
     write_npy(
         &partial,
         "action",
+        "|u1",
         &[n],
-        games.iter().flat_map(|g| g.action.iter().copied()),
+        games.iter().map(|g| g.action.as_slice()),
     )?;
-    write_npy(
-        &partial,
-        "seat",
-        &[n],
-        games.iter().flat_map(|g| g.seat.iter().copied()),
-    )?;
-    write_npy(
-        &partial,
-        "round",
-        &[n],
-        games.iter().flat_map(|g| g.round.iter().copied()),
-    )?;
-    let game = games
+    write_npy(&partial, "seat", "|u1", &[n], games.iter().map(|g| g.seat.as_slice()))?;
+    write_npy(&partial, "round", "|u1", &[n], games.iter().map(|g| g.round.as_slice()))?;
+    let game: Vec<u8> = games
         .iter()
         .enumerate()
-        .flat_map(|(i, g)| std::iter::repeat_n(i as u32, g.rows()));
-    write_npy(&partial, "game", &[n], game)?;
+        .flat_map(|(i, g)| std::iter::repeat_n(i as u32, g.rows()))
+        .flat_map(u32::to_le_bytes)
+        .collect();
+    write_npy(&partial, "game", "<u4", &[n], [game.as_slice()])?;
     let g = games.len() as u64;
-    write_npy(&partial, "scores", &[g, 4], games.iter().flat_map(|g| g.scores))?;
-    write_npy(&partial, "ranks", &[g, 4], games.iter().flat_map(|g| g.ranks))?;
+    let scores: Vec<u8> = games.iter().flat_map(|g| g.scores).flat_map(i32::to_le_bytes).collect();
+    write_npy(&partial, "scores", "<i4", &[g, 4], [scores.as_slice()])?;
+    let ranks: Vec<u8> = games.iter().flat_map(|g| g.ranks).collect();
+    write_npy(&partial, "ranks", "|u1", &[g, 4], [ranks.as_slice()])?;
     if done.exists() {
         std::fs::remove_dir_all(&done).map_err(|e| io(&done, e))?;
     }

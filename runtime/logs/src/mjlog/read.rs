@@ -122,9 +122,9 @@ pub fn parse_game(path: &str, text: &str) -> Result<Game, LogError> {
         in_round: false,
         last_draw: [None; 4],
     };
+    let mut where_ = Position::default();
     loop {
-        let at = reader.buffer_position();
-        let (line, column) = position(text, at);
+        let (line, column) = where_.advance(text, reader.buffer_position());
         let err = |message: String| LogError {
             file: path.to_string(),
             line: Some(line),
@@ -156,13 +156,30 @@ pub fn parse_game(path: &str, text: &str) -> Result<Game, LogError> {
     state.builder.finish()
 }
 
-/// Line and column (1-based, in bytes) of a byte offset.
-fn position(text: &str, at: u64) -> (usize, u32) {
-    let at = usize::try_from(at).unwrap_or(usize::MAX).min(text.len());
-    let before = &text.as_bytes()[..at];
-    let line = before.iter().filter(|&&b| b == b'\n').count() + 1;
-    let column = before.iter().rev().take_while(|&&b| b != b'\n').count() + 1;
-    (line, u32::try_from(column).unwrap_or(u32::MAX))
+/// Line and column (1-based, in bytes) of the reader's offset, counted from the last offset asked
+/// (mjlog files are often one long line: counting from the start at every tag was quadratic).
+#[derive(Default)]
+struct Position {
+    at: usize,
+    /// Newlines before `at`.
+    newlines: usize,
+    /// Offset just after the last newline before `at`.
+    line_start: usize,
+}
+
+impl Position {
+    fn advance(&mut self, text: &str, to: u64) -> (usize, u32) {
+        let to = usize::try_from(to).unwrap_or(usize::MAX).min(text.len()).max(self.at);
+        for (i, &b) in text.as_bytes()[self.at..to].iter().enumerate() {
+            if b == b'\n' {
+                self.newlines += 1;
+                self.line_start = self.at + i + 1;
+            }
+        }
+        self.at = to;
+        let column = to - self.line_start + 1;
+        (self.newlines + 1, u32::try_from(column).unwrap_or(u32::MAX))
+    }
 }
 
 fn attributes(tag: &BytesStart) -> Result<Vec<(String, String)>, String> {
