@@ -46,6 +46,10 @@ pub struct Args {
     json: bool,
 }
 
+/// Skipped logs listed in the summary; a large archive may skip thousands (three-player games in
+/// a Phoenix year), and the manifest keeps every one.
+const SKIPS_SHOWN: usize = 20;
+
 fn forms(text: &str) -> Result<Vec<Form>, CliError> {
     if text == "none" {
         return Ok(Vec::new());
@@ -154,8 +158,15 @@ pub fn run(args: Args) -> Result<(), CliError> {
     );
     if !summary.skipped.is_empty() {
         println!("  {} logs skipped:", summary.skipped.len());
-        for s in &summary.skipped {
+        for s in summary.skipped.iter().take(SKIPS_SHOWN) {
             println!("    {}", s.reason);
+        }
+        if summary.skipped.len() > SKIPS_SHOWN {
+            println!(
+                "    ... and {} more (each with its reason in {})",
+                summary.skipped.len() - SKIPS_SHOWN,
+                args.output.join("manifest.json").display()
+            );
         }
     }
     Ok(())
