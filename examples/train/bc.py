@@ -14,8 +14,17 @@ import time
 
 import numpy as np
 import torch
-from collect import load_shards
+from collect import Rows
 from common import CANONICAL, Log, Net, Space, load_config, save, seed_everything, set_threads
+
+# Validation rows at most (a tenth of the rows up to this), and rows the scalars' mean and spread
+# are taken from: enough for both, and a dataset of millions of rows is not read whole for them.
+VALIDATION_ROWS = 65536
+SCALAR_ROWS = 1 << 20
+
+
+# The config tables behaviour cloning reads.
+TABLES = ("run", "bc")
 
 
 def train_bc(cfg: dict, seed: int, data: pathlib.Path, out: pathlib.Path) -> dict:
@@ -23,11 +32,13 @@ def train_bc(cfg: dict, seed: int, data: pathlib.Path, out: pathlib.Path) -> dic
     seed_everything(seed)
     set_threads(cfg)
     analysis = bool(cfg["run"].get("analysis", False))
-    d = load_shards(data, analysis)
-    n = len(d["action"])
+    d = Rows(data, analysis)
+    n = len(d)
+    if n == 0:
+        raise SystemExit(f"{data}: no rows to learn from")
     order = np.random.default_rng(seed).permutation(n)
-    n_val = max(1, n // 10)
-    val, train = order[:n_val], order[n_val:]
+    n_val = max(1, min(n // 10, VALIDATION_ROWS))
+    val, train = np.sort(order[:n_val]), order[n_val:]
     net = Net(
         Space(CANONICAL).size,
         int(c["hidden"]),
@@ -36,12 +47,15 @@ def train_bc(cfg: dict, seed: int, data: pathlib.Path, out: pathlib.Path) -> dic
         tile_head=bool(c.get("tile_head", False)),
     )
     want = (net.row_scale.shape[0], net.config["num_actions"])
-    if (d["planes"].shape[1], d["mask"].shape[1]) != want:
+    if d.shape != want:
         raise SystemExit(
-            f"{data}: shards hold {d['planes'].shape[1]} rows and {d['mask'].shape[1]} actions, "
+            f"{data}: shards hold {d.shape[0]} rows and {d.shape[1]} actions, "
             f"this config's net reads {want[0]} and writes {want[1]} (collect them again)"
         )
-    s = torch.tensor(d["scalars"][train], dtype=torch.float32)
+    sample = train
+    if len(train) > SCALAR_ROWS:
+        sample = np.random.default_rng(seed + 2).choice(train, SCALAR_ROWS, replace=False)
+    s = torch.tensor(d.scalars(np.sort(sample)), dtype=torch.float32)
     net.scalar_mean.copy_(s.mean(0))
     net.scalar_std.copy_(s.std(0).clamp(min=1.0))
     del s
@@ -53,12 +67,7 @@ def train_bc(cfg: dict, seed: int, data: pathlib.Path, out: pathlib.Path) -> dic
     start = time.time()
 
     def rows(idx):
-        return (
-            torch.from_numpy(d["planes"][idx]),
-            torch.from_numpy(d["scalars"][idx]),
-            torch.from_numpy(d["mask"][idx]),
-            torch.from_numpy(d["action"][idx]),
-        )
+        return tuple(torch.from_numpy(x) for x in d.take(idx))
 
     def validate() -> tuple[float, float]:
         net.eval()
@@ -124,7 +133,9 @@ def main() -> None:
     )
     ap.add_argument("--out", required=True)
     a = ap.parse_args()
-    print(train_bc(load_config(a.config), a.seed, pathlib.Path(a.data), pathlib.Path(a.out)))
+    print(
+        train_bc(load_config(a.config, TABLES), a.seed, pathlib.Path(a.data), pathlib.Path(a.out))
+    )
 
 
 if __name__ == "__main__":

@@ -81,21 +81,57 @@ def _collect_part(cfg, variant, mode, samples, seed, out, totals) -> dict:
     return {"samples": written, "env_steps": steps, "games": games}
 
 
-def load_shards(folder: pathlib.Path, analysis: bool = False) -> dict[str, np.ndarray]:
-    """This script's shards, or a dataset folder built from logs (`rinshan dataset`), as arrays
-    in memory: planes, scalars, mask and action in the canonical (red) action ids."""
-    if (folder / "manifest.json").exists():
-        return load_dataset(folder, analysis)
-    files = sorted(folder.glob("shard-*.npz"))
-    if not files:
-        raise SystemExit(f"{folder}: no shard-*.npz (run collect.py first)")
-    parts = [np.load(f) for f in files]
-    return {k: np.concatenate([p[k] for p in parts]) for k in parts[0].files}
+class Rows:
+    """Training rows fetched by index: `take(idx)` gives (planes, scalars, mask, action), the
+    planes with the analysis rows under them when the net reads those, actions in the canonical
+    (red) ids. collect.py's shards are held in memory; a dataset folder built from logs
+    (`rinshan dataset`) stays memory-mapped, so a dataset larger than memory trains too."""
+
+    def __init__(self, folder: pathlib.Path, analysis: bool = False):
+        self.analysis = analysis
+        if (folder / "manifest.json").exists():
+            self._dataset = open_dataset(folder, analysis)
+            self._scalars = rinshan.dataset.Dataset(folder, fields=["scalars"])
+            self._arrays = None
+            self._len = len(self._dataset)
+            return
+        files = sorted(folder.glob("shard-*.npz"))
+        if not files:
+            raise SystemExit(f"{folder}: no shard-*.npz (run collect.py first)")
+        parts = [np.load(f) for f in files]
+        self._arrays = {k: np.concatenate([p[k] for p in parts]) for k in parts[0].files}
+        self._len = len(self._arrays["action"])
+
+    def __len__(self) -> int:
+        return self._len
+
+    @property
+    def shape(self) -> tuple[int, int]:
+        """(plane rows, actions) of a row."""
+        planes, _, mask, _ = self.take(np.arange(min(1, self._len)))
+        return planes.shape[1], mask.shape[1]
+
+    def take(self, idx: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        if self._arrays is not None:
+            d = self._arrays
+            return d["planes"][idx], d["scalars"][idx], d["mask"][idx], d["action"][idx]
+        d = self._dataset[idx]
+        return (
+            rows(d, self.analysis),
+            d["scalars"],
+            d["legal_action_mask"],
+            d["action"].astype(np.int64),
+        )
+
+    def scalars(self, idx: np.ndarray) -> np.ndarray:
+        if self._arrays is not None:
+            return self._arrays["scalars"][idx]
+        return self._scalars[idx]["scalars"]
 
 
-def load_dataset(folder: pathlib.Path, analysis: bool) -> dict[str, np.ndarray]:
-    """A log dataset (`rinshan dataset logs/ -o DIR --observe planes[,analysis]`): its rows are
-    already in the red variant's action ids."""
+def open_dataset(folder: pathlib.Path, analysis: bool) -> rinshan.dataset.Dataset:
+    """A log dataset (`rinshan dataset logs/ -o DIR --observe planes[,analysis]`) with the fields
+    a net reads; its rows are already in the red variant's action ids."""
     names = ["planes", "scalars", "legal_action_mask", "action"]
     if analysis:
         names += ["discard_shanten", "discard_ukeire", "improving"]
@@ -106,13 +142,7 @@ def load_dataset(folder: pathlib.Path, analysis: bool) -> dict[str, np.ndarray]:
         raise SystemExit(f"{folder}: {e} (build it with --observe {forms})") from None
     if list(ds.actions) != list(rinshan.make(CANONICAL, num_envs=1).spec.action_names):
         raise SystemExit(f"{folder}: its action ids are not the {CANONICAL} variant's")
-    d = ds[:]
-    return {
-        "planes": rows(d, analysis),
-        "scalars": d["scalars"],
-        "mask": d["legal_action_mask"],
-        "action": d["action"].astype(np.int64),
-    }
+    return ds
 
 
 def main() -> None:

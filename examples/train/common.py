@@ -68,10 +68,13 @@ class Space:
         return self.back[actions]
 
 
-def load_config(path: str | pathlib.Path) -> dict:
+def load_config(
+    path: str | pathlib.Path, tables: tuple[str, ...] = ("run", "collect", "bc", "ppo", "evaluate")
+) -> dict:
+    """A training config; each of `tables` (default: the whole pipeline's) must be in it."""
     with open(path, "rb") as f:
         cfg = tomllib.load(f)
-    for table in ("run", "collect", "bc", "ppo", "evaluate"):
+    for table in tables:
         if table not in cfg:
             sys.exit(f"{path}: the config has no [{table}] table")
     return cfg

@@ -95,25 +95,12 @@ def iterate(
         pending.clear()
         return records
 
-    for path in _expand(_paths(inputs)):
+    for path, is_archive in _core.dataset_sources(_paths(inputs)):
         pending.append(path)
-        if len(pending) >= chunk or path.lower().endswith(tuple(_core.ARCHIVE_EXTENSIONS)):
+        if len(pending) >= chunk or is_archive:
             yield from flush()
     if pending:
         yield from flush()
-
-
-def _expand(inputs: list[str]) -> Iterator[str]:
-    """Folders as their logs and archives, sorted and recursive as the Rust side walks them."""
-    known = tuple(_core.LOG_EXTENSIONS) + tuple(_core.ARCHIVE_EXTENSIONS)
-    for name in inputs:
-        p = pathlib.Path(name)
-        if p.is_dir():
-            for f in sorted(p.rglob("*")):
-                if f.is_file() and f.name.lower().endswith(known):
-                    yield str(f)
-        else:
-            yield name
 
 
 class Dataset:
@@ -225,10 +212,14 @@ class Dataset:
             where = np.nonzero(shard_of == shard)[0]
             local = idx[where] - self.offsets[shard]
             parts.append((where, self._shard_rows(int(shard), local)))
+        if not parts and self.shards:
+            # No rows asked: empty arrays of the right dtypes and shapes.
+            none = np.zeros(0, dtype=np.int64)
+            parts.append((none, self._shard_rows(0, none)))
         out: dict[str, np.ndarray] = {}
         for name in self.fields:
             if not parts:
-                continue
+                continue  # a dataset without rows
             first = parts[0][1][name]
             col = np.empty((len(idx), *first.shape[1:]), dtype=first.dtype)
             for where, rows in parts:
@@ -242,7 +233,12 @@ class Dataset:
             return {k: v[0] for k, v in batch.items()}
         if isinstance(key, slice):
             return self._gather(np.arange(len(self), dtype=np.int64)[key])
-        return self._gather(np.asarray(key, dtype=np.int64))
+        key = np.asarray(key)
+        if key.dtype == np.bool_:
+            if key.shape != (len(self),):
+                raise IndexError(f"a boolean row mask needs shape ({len(self)},), not {key.shape}")
+            return self._gather(np.nonzero(key)[0])
+        return self._gather(key.astype(np.int64))
 
     def __getitems__(self, keys: Sequence[int]) -> dict[str, np.ndarray]:
         return self._gather(np.asarray(keys, dtype=np.int64))

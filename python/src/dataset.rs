@@ -5,13 +5,12 @@ use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
-use rinshan_dataset::inputs::{for_each_unit, sources};
+use rinshan_dataset::inputs::{for_each_unit, sources, Source};
 use rinshan_dataset::manifest::check_forms;
-use rinshan_dataset::record::{record, Outcome};
+use rinshan_dataset::record::{record_units, Outcome};
 use rinshan_dataset::{build, Build, Options, Seats};
 use rinshan_engine::env::action_names;
 use rinshan_engine::observe::Form;
-use rinshan_logs::file::parse_log;
 
 use crate::env::form_of;
 
@@ -77,8 +76,19 @@ fn dataset_build<'py>(
     Ok(d)
 }
 
-/// Each log's name, and its outcome or why it could not be read.
-type Named = (Vec<String>, Vec<Result<Outcome, String>>);
+/// The logs and archives `inputs` name, in the order a build visits them (folders walked,
+/// globs expanded): `(path, is_archive)` each.
+#[pyfunction]
+fn dataset_sources(py: Python<'_>, inputs: Vec<String>) -> PyResult<Vec<(String, bool)>> {
+    let found = py.detach(|| sources(&inputs)).map_err(PyValueError::new_err)?;
+    Ok(found
+        .into_iter()
+        .map(|s| match s {
+            Source::File(p) => (p.display().to_string(), false),
+            Source::Tar(p) => (p.display().to_string(), true),
+        })
+        .collect())
+}
 
 /// Every log of `inputs` replayed into rows: one dict per log, in order (`name`, and `skipped`
 /// with the reason or the arrays).
@@ -93,28 +103,14 @@ fn dataset_records<'py>(
     forced: bool,
 ) -> PyResult<Bound<'py, PyList>> {
     let options = options(forms, seats, players, forced)?;
-    let work = || -> Result<Named, String> {
-        let srcs = sources(&inputs)?;
-        let mut names = Vec::new();
-        let mut parsed = Vec::new();
-        for_each_unit(&srcs, &mut |unit| {
-            let game = unit
-                .bytes()
-                .and_then(|b| parse_log(&unit.name, &b).map_err(|e| e.to_string()));
-            names.push(unit.name);
-            parsed.push(game.map(|(g, _)| g));
+    let work = || -> Result<(Vec<String>, Vec<Outcome>), String> {
+        let mut units = Vec::new();
+        for_each_unit(&sources(&inputs)?, &mut |unit| {
+            units.push(unit);
             Ok(())
         })?;
-        let games: Vec<_> = parsed.iter().filter_map(|g| g.as_ref().ok().cloned()).collect();
-        let mut outcomes = record(&games, &options)?.into_iter();
-        let all = parsed
-            .into_iter()
-            .map(|g| match g {
-                Ok(_) => outcomes.next().ok_or_else(|| "not replayed".to_string()),
-                Err(e) => Err(e),
-            })
-            .collect();
-        Ok((names, all))
+        let outcomes = record_units(&units, &options)?;
+        Ok((units.into_iter().map(|u| u.name).collect(), outcomes))
     };
     let (names, outcomes) = py.detach(work).map_err(PyValueError::new_err)?;
     let na = action_names(rinshan_dataset::record::VARIANT).len();
@@ -123,8 +119,8 @@ fn dataset_records<'py>(
         let d = PyDict::new(py);
         d.set_item("name", name)?;
         match outcome {
-            Err(reason) | Ok(Outcome::Skipped(reason)) => d.set_item("skipped", reason)?,
-            Ok(Outcome::Rows(rows)) => {
+            Outcome::Skipped(reason) => d.set_item("skipped", reason)?,
+            Outcome::Rows(rows) => {
                 let n = rows.rows();
                 let obs = PyDict::new(py);
                 for (form, raw) in options.forms.iter().zip(rows.observations) {
@@ -148,10 +144,6 @@ fn dataset_records<'py>(
 pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(dataset_build, m)?)?;
     m.add_function(wrap_pyfunction!(dataset_records, m)?)?;
-    m.add("LOG_EXTENSIONS", rinshan_logs::tenhou::log::LOG_EXTENSIONS.to_vec())?;
-    m.add(
-        "ARCHIVE_EXTENSIONS",
-        rinshan_dataset::inputs::ARCHIVE_EXTENSIONS.to_vec(),
-    )?;
+    m.add_function(wrap_pyfunction!(dataset_sources, m)?)?;
     Ok(())
 }

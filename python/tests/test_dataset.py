@@ -89,6 +89,12 @@ def test_indexing_single_rows_slices_and_arrays(built):
     np.testing.assert_array_equal(ds.__getitems__([3, 1])["action"], every["action"][[3, 1]])
     with pytest.raises(IndexError):
         ds[n]
+    # A boolean mask selects rows, as numpy's does (not rows 0 and 1 by its values).
+    riichi = every["action"] == ds.actions.index("riichi")
+    assert 0 < riichi.sum() < n
+    np.testing.assert_array_equal(ds[riichi]["planes"], every["planes"][riichi])
+    with pytest.raises(IndexError, match="boolean row mask"):
+        ds[riichi[:-1]]
     with pytest.raises(KeyError, match="not fields"):
         Dataset(out, fields=["nothing"])
 
@@ -179,24 +185,33 @@ def test_a_dataloader_shuffles_across_shards(built):
 
 @needs_torch
 def test_behaviour_cloning_from_a_log_dataset(built, tmp_path):
+    """The training example's path from logs: bc.py with the from-logs config (only its [run] and
+    [bc] tables) streams the memory-mapped rows, and agreement.py scores the clone on them."""
     logs, _, _ = built
     data = tmp_path / "ds"
     build(logs, data, observation=["planes", "analysis"])
-    code = (
-        "import sys, pathlib; sys.path.insert(0, sys.argv[1]);"
-        "from bc import train_bc; from common import load_config;"
-        "cfg = load_config(pathlib.Path(sys.argv[1]) / 'configs' / 'smoke.toml');"
-        "cfg['bc']['epochs'] = 1;"
-        "r = train_bc(cfg, 0, pathlib.Path(sys.argv[2]), pathlib.Path(sys.argv[3]));"
-        "print(r['samples'], r['val_accuracy'])"
-    )
-    done = subprocess.run(
-        [sys.executable, "-c", code, str(TRAIN), str(data), str(tmp_path / "out")],
-        capture_output=True,
-        text=True,
-        timeout=300,
-    )
-    assert done.returncode == 0, done.stdout + done.stderr
-    samples, accuracy = done.stdout.split()[-2:]
-    assert int(samples) == len(Dataset(data)) and (tmp_path / "out" / "bc.pt").exists()
-    assert 0.0 <= float(accuracy) <= 1.0
+    out = tmp_path / "out"
+    config = TRAIN / "configs" / "from_logs.toml"
+
+    def script(*args):
+        done = subprocess.run(
+            [sys.executable, *map(str, args)],
+            capture_output=True,
+            text=True,
+            timeout=300,
+            cwd=TRAIN,
+        )
+        assert done.returncode == 0, done.stdout + done.stderr
+        return done.stdout
+
+    trained = script("bc.py", "--config", config, "--data", data, "--out", out)
+    rows = len(Dataset(data))
+    assert f"'samples': {rows}," in trained and (out / "bc.pt").exists()
+    report = json.loads(script("agreement.py", out / "bc.pt", data))
+    assert report["rows"] == rows
+    kinds = report["by_kind"]
+    assert sum(k["rows"] for k in kinds.values()) == rows
+    # Every row counted once: the overall figure is the kinds' figures weighted by their rows.
+    weighted = sum(k["rows"] * k["agreement"] for k in kinds.values()) / rows
+    assert abs(weighted - report["agreement"]) < 1e-9
+    assert {"discard", "pass"} <= set(kinds) and 0.0 < report["agreement"] <= 1.0

@@ -5,20 +5,24 @@
 //! The same inputs and options give the same bytes, whatever the thread count.
 
 use std::path::{Path, PathBuf};
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 use rayon::prelude::*;
 use rinshan_engine::env::action_names;
-use rinshan_logs::file::parse_log;
 
 use crate::inputs::{count, for_each_unit, sources, Unit};
 use crate::manifest::{check_forms, Manifest, ShardRecord, Skip};
-use crate::record::{record, GameRows, Options, Outcome, VARIANT};
+use crate::record::{record_units, GameRows, Options, Outcome, VARIANT};
 use crate::shard::write_shard;
 
 /// Logs per shard unless told: a shard of hanchan with the planes form is about 200 MB while it is
 /// made (about 600 rows of 2.4 KB per game), and one is made per thread.
 pub const DEFAULT_INPUTS_PER_SHARD: usize = 128;
+
+/// How often the manifest is rewritten while shards are made: it lists every input, so rewriting
+/// it after each wave would cost time quadratic in a large run's length. A shard made but not yet
+/// listed when a run stops is made again by the next one.
+const SAVE_EVERY: Duration = Duration::from_secs(10);
 
 /// A dataset to build.
 #[derive(Debug, Clone)]
@@ -73,57 +77,25 @@ fn shard_name(index: usize) -> String {
 
 /// Reads, replays and writes one shard.
 fn make_shard(out: &Path, index: usize, units: &[Unit], options: &Options) -> Result<ShardRecord, String> {
-    let mut games = Vec::new();
-    let mut slots = Vec::new();
-    let mut skipped = Vec::new();
-    for unit in units {
-        match unit
-            .bytes()
-            .and_then(|b| parse_log(&unit.name, &b).map_err(|e| e.to_string()))
-        {
-            Ok((game, _format)) => {
-                slots.push(true);
-                games.push(game);
-            }
-            Err(reason) => {
-                slots.push(false);
-                skipped.push(Skip {
-                    input: unit.name.clone(),
-                    reason,
-                });
-            }
-        }
-    }
-    let mut outcomes = record(&games, options)?.into_iter();
-    drop(games);
     let mut kept: Vec<GameRows> = Vec::new();
-    for (unit, slot) in units.iter().zip(slots) {
-        if !slot {
-            continue;
-        }
-        match outcomes.next() {
-            Some(Outcome::Rows(rows)) => kept.push(rows),
-            Some(Outcome::Skipped(reason)) => skipped.push(Skip {
+    let mut skipped = Vec::new();
+    for (unit, outcome) in units.iter().zip(record_units(units, options)?) {
+        match outcome {
+            Outcome::Rows(rows) => kept.push(rows),
+            Outcome::Skipped(reason) => skipped.push(Skip {
                 input: unit.name.clone(),
                 reason,
             }),
-            None => skipped.push(Skip {
-                input: unit.name.clone(),
-                reason: "not replayed".into(),
-            }),
         }
     }
-    // Skips in input order, whichever stage found them.
-    let order: Vec<&str> = units.iter().map(|u| u.name.as_str()).collect();
-    skipped.sort_by_key(|s| order.iter().position(|&n| n == s.input));
     let name = shard_name(index);
     let num_actions = action_names(VARIANT).len();
     let rows = write_shard(out, &name, &kept, &options.forms, num_actions)?;
     Ok(ShardRecord {
         name,
         rows,
-        inputs: order.iter().map(|s| s.to_string()).collect(),
-        games: kept.iter().map(|g| g.name.clone()).collect(),
+        inputs: units.iter().map(|u| u.name.clone()).collect(),
+        games: kept.into_iter().map(|g| g.name).collect(),
         skipped,
     })
 }
@@ -140,6 +112,8 @@ struct State<'a> {
     summary: Summary,
     progress: Progress,
     pool: rayon::ThreadPool,
+    /// When the manifest was last written.
+    saved: Instant,
 }
 
 impl State<'_> {
@@ -169,13 +143,14 @@ impl State<'_> {
         }
         self.wave.push((index, units));
         if self.wave.len() >= self.build.threads.max(1) {
-            self.flush(on_progress)?;
+            self.flush(false, on_progress)?;
         }
         Ok(())
     }
 
-    /// Makes the queued shards in parallel and lists them in the manifest, in order.
-    fn flush(&mut self, on_progress: &mut dyn FnMut(Progress)) -> Result<(), String> {
+    /// Makes the queued shards in parallel and lists them in the manifest, in order; writes the
+    /// manifest when `last` or when [`SAVE_EVERY`] has passed.
+    fn flush(&mut self, last: bool, on_progress: &mut dyn FnMut(Progress)) -> Result<(), String> {
         let wave = std::mem::take(&mut self.wave);
         let (out, options) = (&self.build.out, &self.build.options);
         let made: Vec<Result<ShardRecord, String>> = self.pool.install(|| {
@@ -194,7 +169,10 @@ impl State<'_> {
             self.progress.rows += record.rows;
             self.manifest.shards.push(record);
         }
-        self.manifest.save(out)?;
+        if last || self.saved.elapsed() >= SAVE_EVERY {
+            self.manifest.save(out)?;
+            self.saved = Instant::now();
+        }
         on_progress(self.progress);
         Ok(())
     }
@@ -249,6 +227,7 @@ pub fn build(b: &Build, on_progress: &mut dyn FnMut(Progress)) -> Result<Summary
             ..Progress::default()
         },
         pool,
+        saved: Instant::now(),
     };
     for_each_unit(&sources, &mut |unit| {
         state.chunk.push(unit);
@@ -258,7 +237,7 @@ pub fn build(b: &Build, on_progress: &mut dyn FnMut(Progress)) -> Result<Summary
         Ok(())
     })?;
     state.cut(on_progress)?;
-    state.flush(on_progress)?;
+    state.flush(true, on_progress)?;
     if state.next < state.manifest.shards.len() {
         return Err(format!(
             "{}: lists {} shards but the inputs fill only {}: build into a new folder",

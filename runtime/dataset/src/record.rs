@@ -8,8 +8,11 @@ use std::collections::HashMap;
 use rinshan_engine::env::{action_names, Step, Table};
 use rinshan_engine::observe::Form;
 use rinshan_engine::Variant;
+use rinshan_logs::file::parse_log;
 use rinshan_logs::tenhou::log::Game;
 use rinshan_logs::tenhou::replay::{mode_of, replay_visiting, Decision, Visitor};
+
+use crate::inputs::Unit;
 
 /// The variant logs are replayed in (red fives or not, the tiles say which are red).
 pub const VARIANT: Variant = Variant::Red;
@@ -208,5 +211,29 @@ pub fn record(games: &[Game], options: &Options) -> Result<Vec<Outcome>, String>
     Ok(out
         .into_iter()
         .map(|o| o.unwrap_or_else(|| Outcome::Skipped("not replayed".into())))
+        .collect())
+}
+
+/// Reads, parses and replays `units`: each one's outcome, in order. A log that cannot be read or
+/// parsed is skipped with the reader's reason, as one that does not replay is.
+pub fn record_units(units: &[Unit], options: &Options) -> Result<Vec<Outcome>, String> {
+    let mut games = Vec::new();
+    let mut read: Vec<Result<(), String>> = Vec::with_capacity(units.len());
+    for unit in units {
+        let parsed = unit
+            .bytes()
+            .and_then(|b| parse_log(&unit.name, &b).map_err(|e| e.to_string()));
+        read.push(parsed.map(|(game, _format)| games.push(game)));
+    }
+    let mut replayed = record(&games, options)?.into_iter();
+    drop(games);
+    Ok(read
+        .into_iter()
+        .map(|r| match r {
+            Ok(()) => replayed
+                .next()
+                .unwrap_or_else(|| Outcome::Skipped("not replayed".into())),
+            Err(reason) => Outcome::Skipped(reason),
+        })
         .collect())
 }
