@@ -22,21 +22,7 @@ fn options(
 ) -> PyResult<Options> {
     let forms = forms.iter().map(|f| form_of(f)).collect::<PyResult<Vec<Form>>>()?;
     check_forms(&forms).map_err(PyValueError::new_err)?;
-    let seats = match (seats, players) {
-        (Some(_), Some(_)) => return Err(PyValueError::new_err("give seats or players, not both")),
-        (None, Some(names)) => Seats::Players(names),
-        (Some(list), None) => {
-            let mut keep = [false; 4];
-            for s in list {
-                if s > 3 {
-                    return Err(PyValueError::new_err(format!("seat {s}: seats are 0..3")));
-                }
-                keep[s as usize] = true;
-            }
-            Seats::Some(keep)
-        }
-        (None, None) => Seats::All,
-    };
+    let seats = Seats::chosen(seats.as_deref(), players.as_deref()).map_err(PyValueError::new_err)?;
     Ok(Options { forms, seats, forced })
 }
 

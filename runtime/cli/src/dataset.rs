@@ -65,20 +65,10 @@ fn forms(text: &str) -> Result<Vec<Form>, CliError> {
 }
 
 fn seats(args: &Args) -> Result<Seats, CliError> {
-    if !args.players.is_empty() {
-        return Ok(Seats::Players(args.players.clone()));
-    }
-    if args.seats.is_empty() {
-        return Ok(Seats::All);
-    }
-    let mut keep = [false; 4];
-    for &s in &args.seats {
-        if s > 3 {
-            return Err(CliError::input(format!("--seats: seat {s}: seats are 0..3")));
-        }
-        keep[s as usize] = true;
-    }
-    Ok(Seats::Some(keep))
+    // clap refuses both at once, so an error here is about a seat number.
+    let seats = (!args.seats.is_empty()).then_some(args.seats.as_slice());
+    let players = (!args.players.is_empty()).then_some(args.players.as_slice());
+    Seats::chosen(seats, players).map_err(|e| CliError::input(format!("--seats: {e}")))
 }
 
 pub fn run(args: Args) -> Result<(), CliError> {

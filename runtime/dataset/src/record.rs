@@ -29,6 +29,26 @@ pub enum Seats {
 }
 
 impl Seats {
+    /// The selection a caller asked for: these absolute `seats` (each 0..3), or these `players`,
+    /// or every seat when neither is given.
+    pub fn chosen(seats: Option<&[u8]>, players: Option<&[String]>) -> Result<Seats, String> {
+        match (seats, players) {
+            (Some(_), Some(_)) => Err("give seats or players, not both".into()),
+            (None, Some(names)) => Ok(Seats::Players(names.to_vec())),
+            (Some(list), None) => {
+                let mut keep = [false; 4];
+                for &s in list {
+                    if s > 3 {
+                        return Err(format!("seat {s}: seats are 0..3"));
+                    }
+                    keep[s as usize] = true;
+                }
+                Ok(Seats::Some(keep))
+            }
+            (None, None) => Ok(Seats::All),
+        }
+    }
+
     fn keeps(&self, game: &Game, seat: usize) -> bool {
         match self {
             Seats::All => true,
