@@ -4,7 +4,10 @@
 
 use rinshan_engine::env::Backend;
 
+use rinshan_engine::generated::kernel::GameState;
+
 use super::event::Event;
+use super::live::{view, Live};
 use super::read::{is_mjai, parse_game};
 use super::write::{game_events, game_text};
 use super::yaku::{DRAGONS, MJAI_YAKU};
@@ -284,4 +287,115 @@ fn unknown_fields_and_none_events_are_ignored() {
     assert_eq!(game.rounds[0].outcome, draw, "an abortive draw pays nothing");
     let empty = parse_game("t.mjson", "{\"type\":\"start_game\"}\n{\"type\":\"end_game\"}\n");
     assert!(empty.expect_err("no round").to_string().contains("no round"));
+}
+
+/// Plays `games` half games of the red rules with the built-in agents (a mix, so games have
+/// calls, kans, riichi and every ending), following each live; returns the live streams.
+fn live_games(games: u64, check_each_step: impl Fn(&Live, &GameState)) -> Vec<Live> {
+    use rinshan_engine::agents::Agent;
+    use rinshan_engine::generated::kernel::{self, ResetInput};
+    use rinshan_engine::generated::red as v;
+    let agents = [Agent::Rule, Agent::Greedy, Agent::Defensive, Agent::Random];
+    (0..games)
+        .map(|g| {
+            let mut s: GameState = v::game_new(ResetInput {
+                seed: [g as u32 + 11, 5],
+                mode: kernel::MODE_HALF,
+                dealer: 4,
+                use_wall: 0,
+                wall: [0; 136],
+                uma: [0; 4],
+                penalty: v::host::ILLEGAL_ACTION_PENALTY,
+                auto_reset: 0,
+            });
+            let names = ["a", "b", "c", "d"].map(String::from);
+            let mut live = Live::new(&s, names).expect("a fresh game is followed");
+            while s.terminated == 0 {
+                check_each_step(&live, &s);
+                let agent = agents[(s.current as usize + g as usize) % 4];
+                let planes = v::observe_planes(s, kernel::OBSERVE_CURRENT);
+                let a = v::agent_act(agent.kernel(), planes, s.mask, s.seed, s.steps);
+                let before = s;
+                v::game_step(&mut s, a);
+                live.step(&before, a, &s).unwrap_or_else(|e| panic!("game {g}: {e}"));
+            }
+            assert!(live.is_over());
+            live
+        })
+        .collect()
+}
+
+#[test]
+fn a_game_followed_live_sends_exactly_its_mjai_log() {
+    let mut kinds = std::collections::BTreeSet::new();
+    for live in live_games(40, |_, _| {}) {
+        let game = live.game().expect("the game ended by the rules");
+        assert_eq!(live.events(), game_events(game).expect("the game writes").as_slice());
+        kinds.extend(
+            live.events()
+                .iter()
+                .map(|e| serde_json::to_value(e).unwrap()["type"].to_string()),
+        );
+    }
+    // The games cover what the live order has to get right.
+    for kind in [
+        "chi",
+        "pon",
+        "daiminkan",
+        "kakan",
+        "ankan",
+        "dora",
+        "reach",
+        "reach_accepted",
+        "hora",
+        "ryukyoku",
+    ] {
+        assert!(
+            kinds.contains(&format!("\"{kind}\"")),
+            "no {kind} in the games: {kinds:?}"
+        );
+    }
+}
+
+#[test]
+fn at_each_decision_the_stream_ends_where_the_engines_ask() {
+    use rinshan_engine::generated::kernel::{PHASE_CLAIM, PHASE_RIICHI_DISCARD};
+    live_games(10, |live, s| {
+        let p = u64::from(live.mjai_seat(s.current));
+        let last = serde_json::to_value(live.events().last().expect("a stream has events")).unwrap();
+        let kind = last["type"].as_str().unwrap();
+        let actor = last["actor"].as_u64();
+        if s.phase == PHASE_CLAIM {
+            // A claim is asked on a discard, or on an added kan's tile (chankan).
+            assert!(kind == "dahai" || kind == "kakan", "claim asked after {last}");
+            assert_ne!(actor, Some(p));
+        } else if s.phase == PHASE_RIICHI_DISCARD {
+            assert_eq!((kind, actor), ("reach", Some(p)));
+        } else {
+            // The seat's own turn: after its draw (a replacement after a closed kan comes after
+            // the kan's dora), or after its call.
+            assert!(matches!(kind, "tsumo" | "chi" | "pon"), "turn asked after {last}");
+            assert_eq!(actor, Some(p), "{last}");
+        }
+    });
+}
+
+#[test]
+fn a_seat_sees_only_its_own_hand_and_draws() {
+    let live = live_games(1, |_, _| {}).remove(0);
+    for seat in 0..4u8 {
+        for e in live.events() {
+            match view(e, seat) {
+                Event::StartKyoku { tehais, .. } => {
+                    for (s, hand) in tehais.iter().enumerate() {
+                        assert_eq!(hand.len(), 13);
+                        assert_eq!(hand.iter().all(|t| t.0.is_some()), s == usize::from(seat));
+                    }
+                }
+                Event::Tsumo { actor, pai } => assert_eq!(pai.0.is_some(), actor == seat),
+                Event::StartGame { id, .. } => assert_eq!(id, Some(seat)),
+                other => assert_eq!(&other, e),
+            }
+        }
+    }
 }

@@ -32,16 +32,21 @@ pub(crate) const REASONS: [(LoggedDraw, &str); 9] = [
     (LoggedDraw::FourWinds, "sufonrenta"),
 ];
 
-/// Every event of the game, `start_game` to `end_game`.
-pub fn game_events(game: &Game) -> Result<Vec<Event>, LogError> {
-    let east_only = game.rule.contains('東');
-    let mut events = vec![Event::StartGame {
-        names: game.names.clone(),
+/// The `start_game` of a game: `rule` is Tenhou's name of it (`鳳東喰赤` for East only).
+pub(crate) fn start_game(names: &[String; 4], rule: &str, red_fives: bool) -> Event {
+    let east_only = rule.contains('東');
+    Event::StartGame {
+        names: names.clone(),
         id: None,
         kyoku_first: Some(if east_only { 4 } else { 0 }),
-        aka_flag: Some(game.red_fives),
-        rule: (!game.rule.is_empty()).then(|| game.rule.clone()),
-    }];
+        aka_flag: Some(red_fives),
+        rule: (!rule.is_empty()).then(|| rule.to_string()),
+    }
+}
+
+/// Every event of the game, `start_game` to `end_game`.
+pub fn game_events(game: &Game) -> Result<Vec<Event>, LogError> {
+    let mut events = vec![start_game(&game.names, &game.rule, game.red_fives)];
     for round in &game.rounds {
         round_events(round, &mut events).map_err(|message| LogError {
             file: game.path.clone(),
@@ -77,36 +82,16 @@ fn pais(tiles: &[Tile]) -> Vec<Pai> {
 }
 
 /// One round's events, `start_kyoku` to `end_kyoku`.
-fn round_events(round: &Round, out: &mut Vec<Event>) -> Result<(), String> {
+pub(crate) fn round_events(round: &Round, out: &mut Vec<Event>) -> Result<(), String> {
     let plan = plan(round)?;
-    let first_dora = *round.dora.first().ok_or("the round lists no dora indicator")?;
-    let wind = TileType::new(27 + (round.kyoku / 4 % 4) as u8).map(Tile::plain);
-    out.push(Event::StartKyoku {
-        bakaze: Pai(wind),
-        dora_marker: Pai::known(first_dora),
-        kyoku: (round.kyoku % 4 + 1) as u8,
-        honba: round.honba,
-        kyotaku: round.sticks,
-        oya: seat(round.dealer()),
-        scores: round.scores,
-        tehais: std::array::from_fn(|s| pais(&round.hands[s])),
-    });
-    let mut walk = Walk {
-        out,
-        doras: round.dora[1..].iter(),
-        reveal_at_discard: false,
-        reveal_at_tsumo: false,
-        last_draw: [None; 4],
-        last_given: None,
-        scores: round.scores,
-    };
+    let mut walk = Walk::start(round, out)?;
     for played in &plan.order {
-        walk.play(played, &plan.riichi_paid)?;
+        walk.play(played, &plan.riichi_paid, out)?;
     }
     // An indicator the engines' order left unshown (an open kan's, when the kanner wins on its
     // replacement tile) still belongs to the round as logged.
     while walk.doras.len() > 0 {
-        walk.reveal();
+        walk.reveal(out);
     }
     match &round.outcome {
         Outcome::Wins(wins) => {
@@ -117,17 +102,44 @@ fn round_events(round: &Round, out: &mut Vec<Event>) -> Result<(), String> {
                     walk.last_given
                 };
                 let ura = (!round.ura.is_empty()).then(|| pais(&round.ura));
-                walk.out.push(hora(w, pai, ura));
+                out.push(hora(w, pai, ura));
             }
         }
-        Outcome::Draw { kind, deltas } => walk.out.push(ryukyoku(*kind, *deltas)),
+        Outcome::Draw { kind, deltas } => out.push(ryukyoku(*kind, *deltas)),
     }
-    walk.out.push(Event::EndKyoku {});
+    out.push(Event::EndKyoku {});
     Ok(())
 }
 
-struct Walk<'a, 'r> {
-    out: &'a mut Vec<Event>,
+/// The events of a round still in play, from `start_kyoku` to its last entry played (`order`),
+/// as the engines send them live: a riichi discard's `reach_accepted` waits until the discard
+/// has survived its claims (the next entry), and a seat that has `declared` riichi and not yet
+/// discarded has its `reach` sent.
+pub(crate) fn round_so_far(
+    round: &Round,
+    order: &[Played],
+    declared: [bool; 4],
+    out: &mut Vec<Event>,
+) -> Result<(), String> {
+    let mut walk = Walk::start(round, out)?;
+    let mut paid = [1; 4];
+    if let Some(Played::Discard {
+        seat: s,
+        discard: Discard::Riichi(_),
+    }) = order.last()
+    {
+        paid[*s] = 0;
+    }
+    for played in order {
+        walk.play(played, &paid, out)?;
+    }
+    for (s, _) in declared.iter().enumerate().filter(|(_, &d)| d) {
+        out.push(Event::Reach { actor: seat(s) });
+    }
+    Ok(())
+}
+
+struct Walk<'r> {
     doras: std::slice::Iter<'r, Tile>,
     /// An open or added kan's dora waits for the kanner's discard (or the next kan).
     reveal_at_discard: bool,
@@ -139,11 +151,35 @@ struct Walk<'a, 'r> {
     scores: [i32; 4],
 }
 
-impl Walk<'_, '_> {
+impl<'r> Walk<'r> {
+    /// Writes the round's `start_kyoku` and starts walking it.
+    fn start(round: &'r Round, out: &mut Vec<Event>) -> Result<Walk<'r>, String> {
+        let first_dora = *round.dora.first().ok_or("the round lists no dora indicator")?;
+        let wind = TileType::new(27 + (round.kyoku / 4 % 4) as u8).map(Tile::plain);
+        out.push(Event::StartKyoku {
+            bakaze: Pai(wind),
+            dora_marker: Pai::known(first_dora),
+            kyoku: (round.kyoku % 4 + 1) as u8,
+            honba: round.honba,
+            kyotaku: round.sticks,
+            oya: seat(round.dealer()),
+            scores: round.scores,
+            tehais: std::array::from_fn(|s| pais(&round.hands[s])),
+        });
+        Ok(Walk {
+            doras: round.dora[1..].iter(),
+            reveal_at_discard: false,
+            reveal_at_tsumo: false,
+            last_draw: [None; 4],
+            last_given: None,
+            scores: round.scores,
+        })
+    }
+
     /// The next dora indicator; a log that stops listing them (a converter's) just shows none.
-    fn reveal(&mut self) {
+    fn reveal(&mut self, out: &mut Vec<Event>) {
         if let Some(&t) = self.doras.next() {
-            self.out.push(Event::Dora {
+            out.push(Event::Dora {
                 dora_marker: Pai::known(t),
             });
         }
@@ -154,28 +190,28 @@ impl Walk<'_, '_> {
         self.reveal_at_discard = true;
     }
 
-    fn play(&mut self, played: &Played, riichi_paid: &[u32; 4]) -> Result<(), String> {
+    fn play(&mut self, played: &Played, riichi_paid: &[u32; 4], out: &mut Vec<Event>) -> Result<(), String> {
         match *played {
             Played::Draw { seat: s, draw, .. } => {
                 let actor = seat(s);
                 match draw {
                     Draw::Tile(t) => {
                         if std::mem::take(&mut self.reveal_at_tsumo) {
-                            self.reveal();
+                            self.reveal(out);
                         }
                         self.last_draw[s] = Some(t);
-                        self.out.push(Event::Tsumo {
+                        out.push(Event::Tsumo {
                             actor,
                             pai: Pai::known(t),
                         });
                     }
-                    Draw::Chi { called, own } => self.out.push(Event::Chi {
+                    Draw::Chi { called, own } => out.push(Event::Chi {
                         actor,
                         target: seat((s + 3) % 4),
                         pai: Pai::known(called),
                         consumed: own.map(Pai::known),
                     }),
-                    Draw::Pon { called, own, from } => self.out.push(Event::Pon {
+                    Draw::Pon { called, own, from } => out.push(Event::Pon {
                         actor,
                         target: seat(from.seat_of(s)),
                         pai: Pai::known(called),
@@ -183,7 +219,7 @@ impl Walk<'_, '_> {
                     }),
                     Draw::OpenKan { called, own, from } => {
                         self.open_kan();
-                        self.out.push(Event::Daiminkan {
+                        out.push(Event::Daiminkan {
                             actor,
                             target: seat(from.seat_of(s)),
                             pai: Pai::known(called),
@@ -195,14 +231,14 @@ impl Walk<'_, '_> {
             Played::Discard { seat: s, discard } => {
                 let actor = seat(s);
                 match discard {
-                    Discard::Tile(t) => self.dahai(s, t, false),
+                    Discard::Tile(t) => self.dahai(s, t, false, out),
                     Discard::Tsumogiri => {
                         let t =
                             self.last_draw[s].ok_or_else(|| format!("seat {s} discards its draw before drawing"))?;
-                        self.dahai(s, t, true);
+                        self.dahai(s, t, true, out);
                     }
                     Discard::Riichi(t) => {
-                        self.out.push(Event::Reach { actor });
+                        out.push(Event::Reach { actor });
                         let (t, tsumogiri) = match t {
                             Some(t) => (t, false),
                             None => (
@@ -210,12 +246,12 @@ impl Walk<'_, '_> {
                                 true,
                             ),
                         };
-                        self.dahai(s, t, tsumogiri);
+                        self.dahai(s, t, tsumogiri, out);
                         if riichi_paid[s] > 0 {
                             let mut deltas = [0; 4];
                             deltas[s] = -1000;
                             self.scores[s] -= 1000;
-                            self.out.push(Event::ReachAccepted {
+                            out.push(Event::ReachAccepted {
                                 actor,
                                 deltas: Some(deltas),
                                 scores: Some(self.scores),
@@ -225,7 +261,7 @@ impl Walk<'_, '_> {
                     Discard::AddedKan { added, pon, .. } => {
                         self.open_kan();
                         self.last_given = Some(added);
-                        self.out.push(Event::Kakan {
+                        out.push(Event::Kakan {
                             actor,
                             pai: Pai::known(added),
                             consumed: pon.map(Pai::known),
@@ -233,14 +269,14 @@ impl Walk<'_, '_> {
                     }
                     Discard::ClosedKan { tiles } => {
                         if std::mem::take(&mut self.reveal_at_discard) {
-                            self.reveal();
+                            self.reveal(out);
                         }
                         self.last_given = Some(tiles[0]);
-                        self.out.push(Event::Ankan {
+                        out.push(Event::Ankan {
                             actor,
                             consumed: tiles.map(Pai::known),
                         });
-                        self.reveal();
+                        self.reveal(out);
                     }
                     Discard::Nothing => {}
                 }
@@ -249,12 +285,12 @@ impl Walk<'_, '_> {
         Ok(())
     }
 
-    fn dahai(&mut self, s: usize, t: Tile, tsumogiri: bool) {
+    fn dahai(&mut self, s: usize, t: Tile, tsumogiri: bool, out: &mut Vec<Event>) {
         if std::mem::take(&mut self.reveal_at_discard) {
-            self.reveal();
+            self.reveal(out);
         }
         self.last_given = Some(t);
-        self.out.push(Event::Dahai {
+        out.push(Event::Dahai {
             actor: seat(s),
             pai: Pai::known(t),
             tsumogiri,

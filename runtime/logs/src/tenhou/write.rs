@@ -41,7 +41,7 @@ use rinshan_engine::Variant;
 
 use super::log::Game;
 
-pub use game::GameRecorder;
+pub use game::{GameRecorder, InPlay};
 pub use json::game_text;
 pub(crate) use json::round_value;
 pub(crate) use outcome::{base_points, limit_of, payment, points_text, win_yaku};

@@ -7,6 +7,7 @@
 
 use crate::tenhou::log::{round_name, Discard, Game, LoggedDraw, LoggedWin, Outcome, Round};
 use crate::tenhou::plan::wall::{DORA, RINSHAN, URA};
+use crate::tenhou::plan::Played;
 use rinshan_engine::env::{events, DrawRecord, WinRecord};
 use rinshan_engine::generated::kernel::{self, GameState};
 use rinshan_engine::generated::red as k;
@@ -17,6 +18,19 @@ use super::outcome::{
 use super::round::{meld_count, Current};
 
 use events::ROUND_OVER;
+
+/// The round being played, for a live event stream: seats are the log's (East 1's dealer is 0).
+#[derive(Debug, Clone)]
+pub struct InPlay<'a> {
+    /// The round so far, with the dora indicators shown so far; its outcome is a placeholder.
+    pub round: Round,
+    /// Its entries in the order of play.
+    pub order: &'a [Played],
+    /// Seats that declared riichi and have not made the riichi discard yet.
+    pub declared: [bool; 4],
+    /// The engine's seat of East 1's dealer (log seat `s` is engine seat `(s + first) % 4`).
+    pub first: u32,
+}
 
 /// Follows one game (and, with auto-reset, the games after it) and hands out each finished game.
 #[derive(Debug, Clone)]
@@ -51,6 +65,24 @@ impl GameRecorder {
     /// The rounds of the current game finished so far.
     pub fn rounds(&self) -> &[Round] {
         &self.rounds
+    }
+
+    /// Tenhou's name of the game's rule (`鳳南喰赤`).
+    pub fn rule(&self) -> &str {
+        self.rule
+    }
+
+    /// The round being played, as far as it has gone; `None` once the game is over.
+    pub fn in_play(&self) -> Option<InPlay<'_>> {
+        let cur = self.current.as_ref()?;
+        let mut round = cur.round.clone();
+        round.dora = (0..cur.dora).filter_map(|i| cur.wall_tile(DORA + i).ok()).collect();
+        Some(InPlay {
+            round,
+            order: &cur.order,
+            declared: cur.riichi_next,
+            first: cur.first,
+        })
     }
 
     /// Games that ended with an illegal action, left out (they have no Tenhou ending).
@@ -118,12 +150,12 @@ impl GameRecorder {
                 }
             }
             let drawn = if a.kans > b.kans {
-                Some(RINSHAN + b.kans as usize)
+                Some((RINSHAN + b.kans as usize, true))
             } else {
-                (a.next_draw > b.next_draw).then_some(b.next_draw as usize)
+                (a.next_draw > b.next_draw).then_some((b.next_draw as usize, false))
             };
-            if let Some(i) = drawn {
-                cur.draw(a.current, i, a.drawn)?;
+            if let Some((i, replacement)) = drawn {
+                cur.draw(a.current, i, replacement, a.drawn)?;
             }
             cur.dora = a.dora_revealed as usize;
             return Ok(None);

@@ -4,6 +4,7 @@
 
 use crate::tenhou::log::{Discard, Draw, LoggedDraw, Outcome, Rel, Round};
 use crate::tenhou::plan::wall::LIVE_START;
+use crate::tenhou::plan::Played;
 use rinshan_engine::generated::kernel::{self, GameState};
 use rinshan_engine::generated::red as k;
 use rinshan_engine::tile::{Tile, TileType};
@@ -25,6 +26,8 @@ pub(super) struct Current {
     pub(super) pons: Vec<(usize, TileType, [Tile; 3], Rel)>,
     /// Dora indicators revealed so far.
     pub(super) dora: usize,
+    /// The round's entries in the order of play (what an event stream such as MJAI sends live).
+    pub(super) order: Vec<Played>,
 }
 
 pub(super) fn tile(v: u32) -> Result<Tile, String> {
@@ -106,6 +109,11 @@ impl Current {
             riichi_made: [false; 4],
             pons: Vec::new(),
             dora: s.dora_revealed as usize,
+            order: vec![Played::Draw {
+                seat: at(dealer),
+                draw: Draw::Tile(tile(u32::from(wall[LIVE_START]))?),
+                replacement: false,
+            }],
         })
     }
 
@@ -118,15 +126,30 @@ impl Current {
         tile(u32::from(self.wall[i]))
     }
 
-    /// Engine seat `p` drew wall tile `i`, which the state says is value `drawn`.
-    pub(super) fn draw(&mut self, p: u32, i: usize, drawn: u32) -> Result<(), String> {
+    /// Engine seat `p` drew wall tile `i` (a replacement tile after a kan), which the state
+    /// says is value `drawn`.
+    pub(super) fn draw(&mut self, p: u32, i: usize, replacement: bool, drawn: u32) -> Result<(), String> {
         let t = self.wall_tile(i)?;
         if u32::from(t.value()) != drawn {
             return Err(format!("seat {p} drew wall[{i}] = {t}, but the state says {drawn}"));
         }
         let seat = self.at(p);
-        self.round.draws[seat].push(Draw::Tile(t));
+        self.draw_entry(seat, Draw::Tile(t), replacement);
         Ok(())
+    }
+
+    fn draw_entry(&mut self, seat: usize, draw: Draw, replacement: bool) {
+        self.round.draws[seat].push(draw);
+        self.order.push(Played::Draw {
+            seat,
+            draw,
+            replacement,
+        });
+    }
+
+    fn discard_entry(&mut self, seat: usize, discard: Discard) {
+        self.round.discards[seat].push(discard);
+        self.order.push(Played::Discard { seat, discard });
     }
 
     /// A discard of value `v`, or of the drawn tile (`None`).
@@ -138,7 +161,7 @@ impl Current {
         } else {
             t.map_or(Discard::Tsumogiri, Discard::Tile)
         };
-        self.round.discards[p].push(entry);
+        self.discard_entry(p, entry);
         Ok(())
     }
 
@@ -164,7 +187,7 @@ impl Current {
                 tiles: [black, black, black, last],
             },
         };
-        self.round.discards[seat].push(entry);
+        self.discard_entry(seat, entry);
         Ok(())
     }
 
@@ -199,7 +222,7 @@ impl Current {
                 } else {
                     black
                 };
-                self.round.discards[seat].push(Discard::Nothing);
+                self.discard_entry(seat, Discard::Nothing);
                 Draw::OpenKan {
                     called,
                     own: [black, black, last],
@@ -228,7 +251,7 @@ impl Current {
                 }
             }
         };
-        self.round.draws[seat].push(entry);
+        self.draw_entry(seat, entry, false);
         Ok(())
     }
 }
