@@ -18,6 +18,30 @@ pub trait Policy: Sync {
     fn act(&self, planes: &[u8], mask: &[u32; 3]) -> u32;
 }
 
+/// A player that follows every step of its games and keeps its own state, such as an external
+/// program speaking a protocol (rinshan-logs' MJAI bots).
+pub trait Entrant: Sync {
+    /// Starts a game in which the player takes seat `seat`; `state` is the game's first.
+    fn join(&self, seat: u32, state: &GameState) -> Box<dyn Seat + '_>;
+}
+
+/// An [`Entrant`] in one game.
+pub trait Seat {
+    /// The action for `state`, where this seat is to act. `Err` (why it has none) plays an
+    /// illegal action: the game ends with the penalty and the reason is reported as a [`Fault`].
+    fn act(&mut self, state: &GameState) -> Result<u32, String>;
+    /// Told after every step of the game, anyone's; an `Err` is reported as a [`Fault`] (and the
+    /// seat's next `act` should fail).
+    fn stepped(&mut self, before: &GameState, action: u32, after: &GameState) -> Result<(), String>;
+}
+
+/// An action id no state allows: what a seat plays when its player has no action to give.
+pub fn refused_action(mask: &[u32; 3]) -> u32 {
+    (0..96)
+        .find(|&a| mask[a as usize / 32] >> (a % 32) & 1 == 0)
+        .unwrap_or(95)
+}
+
 /// Who plays a seat in the arena.
 #[derive(Clone, Copy)]
 pub enum Player<'a> {
@@ -30,6 +54,13 @@ pub enum Player<'a> {
         /// The policy.
         policy: &'a dyn Policy,
     },
+    /// A player that follows the whole game, reported under `name`.
+    Entrant {
+        /// The name in the report.
+        name: &'a str,
+        /// The player.
+        entrant: &'a dyn Entrant,
+    },
 }
 
 impl Player<'_> {
@@ -37,7 +68,7 @@ impl Player<'_> {
     pub fn name(&self) -> String {
         match self {
             Player::Builtin(a) => a.name().to_string(),
-            Player::Policy { name, .. } => name.to_string(),
+            Player::Policy { name, .. } | Player::Entrant { name, .. } => name.to_string(),
         }
     }
 }
@@ -97,6 +128,23 @@ pub struct Report {
     pub decisions: u64,
     /// One standing per distinct player name, best average rank first.
     pub standings: Vec<Standing>,
+    /// What went wrong with [`Player::Entrant`]s, in game order.
+    pub faults: Vec<Fault>,
+}
+
+/// A game an [`Entrant`] failed in (it gave no action, or could not follow a step).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Fault {
+    /// The player's name.
+    pub player: String,
+    /// The game: set `game / 4`, rotation `game % 4`.
+    pub game: u64,
+    /// The seat it played.
+    pub seat: u32,
+    /// The decision (0 = the game's first) at or after which it failed.
+    pub decision: u64,
+    /// Why.
+    pub message: String,
 }
 
 /// One wall set's results: per name (rank sum, seat-games), then every seat-game's tally and
@@ -106,6 +154,7 @@ struct SetResult {
     tallies: Vec<Tally>,
     who: Vec<String>,
     decisions: u64,
+    faults: Vec<Fault>,
 }
 
 /// Per seat-game tallies.
@@ -122,8 +171,9 @@ struct Tally {
     illegal: u64,
 }
 
-/// Plays one game with `seating[p]` in seat p; returns the tallies per seat and the decisions.
-fn play(arena: &Arena, seed: u64, seating: &[Player; 4]) -> ([Tally; 4], u64) {
+/// Plays game `game` with `seating[p]` in seat p; returns the tallies per seat and the decisions,
+/// and adds its entrants' faults to `faults`.
+fn play(arena: &Arena, seed: u64, seating: &[Player; 4], game: u64, faults: &mut Vec<Fault>) -> ([Tally; 4], u64) {
     with_variant!(arena.variant, v => {
         let mut s: GameState = v::game_new(ResetInput {
             seed: [seed as u32, (seed >> 32) as u32],
@@ -138,6 +188,19 @@ fn play(arena: &Arena, seed: u64, seating: &[Player; 4]) -> ([Tally; 4], u64) {
         let mut t = [Tally::default(); 4];
         let (mut called, mut riichi) = ([false; 4], [false; 4]);
         let mut decisions = 0u64;
+        let mut seats: [Option<Box<dyn Seat>>; 4] = std::array::from_fn(|p| match seating[p] {
+            Player::Entrant { entrant, .. } => Some(entrant.join(p as u32, &s)),
+            _ => None,
+        });
+        let mut fault = |p: usize, decision: u64, message: String| {
+            faults.push(Fault {
+                player: seating[p].name(),
+                game,
+                seat: p as u32,
+                decision,
+                message,
+            })
+        };
         let round_end = kernel::EVENT_RON | kernel::EVENT_TSUMO | kernel::EVENT_EXHAUSTIVE_DRAW | kernel::EVENT_ABORTIVE_DRAW;
         while s.terminated == 0 {
             let p = s.current as usize;
@@ -145,10 +208,24 @@ fn play(arena: &Arena, seed: u64, seating: &[Player; 4]) -> ([Tally; 4], u64) {
             let a = match seating[p] {
                 Player::Builtin(agent) => v::agent_act(agent.kernel(), planes, s.mask, s.seed, s.steps),
                 Player::Policy { policy, .. } => policy.act(bytemuck::bytes_of(&planes), &s.mask),
+                Player::Entrant { .. } => match seats[p].as_mut().map(|seat| seat.act(&s)) {
+                    Some(Ok(a)) => a,
+                    Some(Err(message)) => {
+                        fault(p, decisions, message);
+                        refused_action(&s.mask)
+                    }
+                    None => refused_action(&s.mask),
+                },
             };
             riichi[p] |= a == v::ACTION_RIICHI;
             let melds_before = s.meld_counts;
+            let before = s;
             v::game_step(&mut s, a);
+            for (q, seat) in seats.iter_mut().enumerate() {
+                if let Some(Err(message)) = seat.as_mut().map(|seat| seat.stepped(&before, a, &s)) {
+                    fault(q, decisions, message);
+                }
+            }
             // A call counts once it is made (a chi or pon chosen at a prompt can lose to a pon or
             // a ron): a new meld that is not a closed kan.
             if s.meld_counts != melds_before {
@@ -207,9 +284,11 @@ pub fn run(arena: &Arena, progress: &(dyn Fn(u64) + Sync)) -> Report {
             let mut tallies = Vec::new();
             let mut who = Vec::new();
             let mut decisions = 0;
+            let mut faults = Vec::new();
             for rotation in 0..4 {
                 let seating: [Player; 4] = std::array::from_fn(|p| arena.players[(p + rotation) % 4]);
-                let (t, d) = play(arena, seed, &seating);
+                let game = set as u64 * 4 + rotation as u64;
+                let (t, d) = play(arena, seed, &seating, game, &mut faults);
                 decisions += d;
                 for p in 0..4 {
                     let name = seating[p].name();
@@ -226,6 +305,7 @@ pub fn run(arena: &Arena, progress: &(dyn Fn(u64) + Sync)) -> Report {
                 tallies,
                 who,
                 decisions,
+                faults,
             }
         })
         .collect();
@@ -233,6 +313,7 @@ pub fn run(arena: &Arena, progress: &(dyn Fn(u64) + Sync)) -> Report {
         games: 4 * arena.sets as u64,
         decisions: sets.iter().map(|s| s.decisions).sum(),
         standings: Vec::new(),
+        faults: sets.iter().flat_map(|s| s.faults.iter().cloned()).collect(),
     };
     for (i, name) in names.iter().enumerate() {
         let unit_means: Vec<f64> = sets.iter().map(|s| s.by_name[i].0 / s.by_name[i].1 as f64).collect();

@@ -5,13 +5,19 @@
 //! * [`event`] — the events, with the optional extras real logs carry
 //! * [`write`] — a [`crate::tenhou::log::Game`] as an MJAI log, in the order the engines emit events
 //! * [`live`]  — a game being played as the events sent live, and each seat's view of them
+//! * [`reaction`] — a bot's reaction as the engine's action id
+//! * [`bot`]   — an MJAI bot as a child process, in mjai.app's or Mortal's dialect
+//! * [`seat`]  — such a bot as a seat of the engine's games (the arena's `mjai:` players)
 //! * [`read`]  — an MJAI log as a `Game`, so replay, convert and render take any format; `round`
 //!   reads a round's events, `yaku` a win's yaku
 
+pub mod bot;
 pub mod event;
 pub mod live;
+pub mod reaction;
 pub mod read;
 mod round;
+pub mod seat;
 pub mod tile;
 pub mod write;
 mod yaku;

@@ -1,0 +1,120 @@
+//! MJAI bots as arena seats, driven over their stdin and stdout in both dialects: a bot that
+//! plays by the protocol finishes every game with no fault, and one that misbehaves (garbage,
+//! silence, a crash, a flood, another seat's reaction, an illegal discard) loses that game by the
+//! illegal-action penalty with the reason and its stderr reported, without stopping the others.
+//!
+//! The bot is tests/data/mjai/bots/simple_bot.py (Python's standard library only).
+
+use std::path::PathBuf;
+use std::time::{Duration, Instant};
+
+use rinshan_engine::agents::Agent;
+use rinshan_engine::arena::{self, Arena, Player, Report};
+use rinshan_engine::env::Mode;
+use rinshan_engine::Variant;
+use rinshan_logs::mjai::bot::{BotSpec, Dialect};
+use rinshan_logs::mjai::seat::MjaiEntrant;
+
+fn bot(dialect: Dialect, mode: &str) -> MjaiEntrant {
+    let script: PathBuf = [
+        env!("CARGO_MANIFEST_DIR"),
+        "..",
+        "..",
+        "tests",
+        "data",
+        "mjai",
+        "bots",
+        "simple_bot.py",
+    ]
+    .iter()
+    .collect();
+    let name = match dialect {
+        Dialect::App => "app",
+        Dialect::Stdio => "stdio",
+    };
+    MjaiEntrant {
+        spec: BotSpec {
+            command: format!("python3 {} --dialect {name} --mode {mode}", script.display()),
+            dialect,
+            timeout: Duration::from_secs(2),
+            startup: Duration::from_secs(20),
+        },
+    }
+}
+
+fn play(entrant: &MjaiEntrant, mode: Mode, sets: usize) -> Report {
+    let arena = Arena {
+        variant: Variant::Red,
+        mode,
+        players: [
+            Player::Entrant { name: "bot", entrant },
+            Player::Builtin(Agent::Defensive),
+            Player::Builtin(Agent::Rule),
+            Player::Builtin(Agent::Greedy),
+        ],
+        sets,
+        seed: 3,
+    };
+    arena::run(&arena, &|_| {})
+}
+
+fn standing<'a>(report: &'a Report, name: &str) -> &'a arena::Standing {
+    report
+        .standings
+        .iter()
+        .find(|s| s.name == name)
+        .expect("the player is in the report")
+}
+
+#[test]
+fn a_bot_that_keeps_the_protocol_plays_every_game_in_both_dialects() {
+    for dialect in [Dialect::App, Dialect::Stdio] {
+        let report = play(&bot(dialect, "play"), Mode::Half, 1);
+        assert_eq!(report.faults, vec![], "{dialect:?}");
+        let me = standing(&report, "bot");
+        assert_eq!((me.games, me.illegal), (4, 0), "{dialect:?}");
+        // It pons (its only call) and the games run their course.
+        assert!(me.call_rate > 0.0 && me.rounds >= 4 * 4, "{dialect:?}: {me:?}");
+    }
+}
+
+#[test]
+fn a_bot_that_misbehaves_loses_that_game_by_the_penalty_and_is_reported() {
+    let cases = [
+        ("garbage", "the reply is not JSON"),
+        ("sleep", "no reply within 2.0 s"),
+        ("die", "closed its output"),
+        ("flood", "a line over 1048576 bytes"),
+        ("wrong-actor", "the reaction is for actor"),
+        ("illegal", "is not legal here"),
+    ];
+    for dialect in [Dialect::App, Dialect::Stdio] {
+        for (mode, why) in cases {
+            let started = Instant::now();
+            let report = play(&bot(dialect, mode), Mode::East, 1);
+            let me = standing(&report, "bot");
+            // Each of the 4 games ends at the bot's third turn, with the penalty.
+            assert_eq!((me.games, me.illegal), (4, 4), "{dialect:?} {mode}");
+            assert_eq!(report.faults.len(), 4, "{dialect:?} {mode}: {:?}", report.faults);
+            for f in &report.faults {
+                assert_eq!(f.player, "bot");
+                assert!(f.message.contains(why), "{dialect:?} {mode}: {}", f.message);
+            }
+            if mode == "die" {
+                assert!(
+                    report.faults[0].message.contains("dying on purpose"),
+                    "{}",
+                    report.faults[0].message
+                );
+            }
+            // The other seats finished their games as the rules say: nobody else was penalised.
+            for s in report.standings.iter().filter(|s| s.name != "bot") {
+                assert_eq!(s.illegal, 0, "{dialect:?} {mode}: {s:?}");
+            }
+            assert!(
+                started.elapsed() < Duration::from_secs(60),
+                "{dialect:?} {mode}: no hang"
+            );
+        }
+    }
+}
