@@ -3,12 +3,15 @@
 //! confidence interval, the rank histogram, the final score and per-round rates.
 
 use std::io::IsTerminal;
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 use indicatif::{ProgressBar, ProgressStyle};
 use rinshan_engine::agents::Agent;
 use rinshan_engine::arena::{self, Arena, Player};
 use rinshan_engine::env::Mode;
+use rinshan_engine::Variant;
+use rinshan_logs::mjai::bot::{BotSpec, Dialect};
+use rinshan_logs::mjai::seat::MjaiEntrant;
 use serde_json::json;
 
 use crate::args::VariantArg;
@@ -16,9 +19,20 @@ use crate::error::CliError;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// The four seats' agents, comma-separated (random, rule, greedy, defensive)
+    /// The four seats' agents, comma-separated: random, rule, greedy, defensive, or
+    /// `mjai:COMMAND`, an MJAI bot run as `sh -c "COMMAND SEAT"` over its stdin and stdout
     #[arg(long, default_value = "defensive,greedy,rule,random", value_delimiter = ',')]
-    agents: Vec<Agent>,
+    agents: Vec<SeatArg>,
+    /// How the MJAI bots are spoken to: app (mjai.app: a JSON array of events per line, one
+    /// reaction per line) or stdio (Mortal, mjai-manue: one event per line, replies when asked)
+    #[arg(long, default_value = "app")]
+    mjai_dialect: Dialect,
+    /// Seconds an MJAI bot may take to answer; later, it loses the game by the illegal-action penalty
+    #[arg(long, default_value_t = 5.0)]
+    mjai_timeout: f64,
+    /// Seconds an MJAI bot may take for its first answer of a game (loading a model)
+    #[arg(long, default_value_t = 60.0)]
+    mjai_startup: f64,
     /// Games to play, a multiple of 4 (each wall set is played 4 times, rotated)
     #[arg(long, default_value_t = 400)]
     games: u64,
@@ -38,16 +52,74 @@ pub struct Args {
     json: bool,
 }
 
-pub fn run(args: Args) -> Result<(), CliError> {
-    let players: [Player; 4] = match args.agents.as_slice() {
-        [a, b, c, d] => [*a, *b, *c, *d].map(Player::Builtin),
-        other => {
-            return Err(CliError::input(format!(
-                "--agents needs exactly 4 agents (one per seat), got {}",
-                other.len()
-            )))
+/// One seat's player as `--agents` names it.
+#[derive(Clone, Debug)]
+pub enum SeatArg {
+    /// A built-in agent.
+    Builtin(Agent),
+    /// An MJAI bot's command line.
+    Mjai(String),
+}
+
+impl std::str::FromStr for SeatArg {
+    type Err = String;
+    fn from_str(s: &str) -> Result<SeatArg, String> {
+        match s.strip_prefix("mjai:") {
+            Some(cmd) if cmd.trim().is_empty() => Err("`mjai:` needs the bot's command line after it".into()),
+            Some(cmd) => Ok(SeatArg::Mjai(cmd.trim().to_string())),
+            None => s
+                .parse::<Agent>()
+                .map(SeatArg::Builtin)
+                .map_err(|e| format!("{e} (or mjai:COMMAND)")),
         }
+    }
+}
+
+fn seconds(flag: &str, s: f64) -> Result<Duration, CliError> {
+    Duration::try_from_secs_f64(s)
+        .ok()
+        .filter(|d| !d.is_zero())
+        .ok_or_else(|| CliError::input(format!("{flag} {s} is not a positive number of seconds")))
+}
+
+pub fn run(args: Args) -> Result<(), CliError> {
+    if args.agents.len() != 4 {
+        return Err(CliError::input(format!(
+            "--agents needs exactly 4 agents (one per seat), got {}",
+            args.agents.len()
+        )));
+    }
+    let spec = |command: &String| -> Result<MjaiEntrant, CliError> {
+        Ok(MjaiEntrant {
+            spec: BotSpec {
+                command: command.clone(),
+                dialect: args.mjai_dialect,
+                timeout: seconds("--mjai-timeout", args.mjai_timeout)?,
+                startup: seconds("--mjai-startup", args.mjai_startup)?,
+            },
+        })
     };
+    let bots: Vec<(String, MjaiEntrant)> = args
+        .agents
+        .iter()
+        .filter_map(|a| match a {
+            SeatArg::Mjai(cmd) => Some(spec(cmd).map(|e| (format!("mjai:{cmd}"), e))),
+            SeatArg::Builtin(_) => None,
+        })
+        .collect::<Result<_, _>>()?;
+    if !bots.is_empty() && (args.variant.variant != Variant::Red || args.mode == Mode::Single) {
+        return Err(CliError::input(
+            "MJAI bots play the red rules (--variant red) in east or half games (--mode east|half)",
+        ));
+    }
+    let mut next_bot = bots.iter();
+    let players: [Player; 4] = std::array::from_fn(|p| match &args.agents[p] {
+        SeatArg::Builtin(a) => Player::Builtin(*a),
+        SeatArg::Mjai(_) => match next_bot.next() {
+            Some((name, entrant)) => Player::Entrant { name, entrant },
+            None => Player::Builtin(Agent::Random),
+        },
+    });
     if args.games == 0 || !args.games.is_multiple_of(4) {
         return Err(CliError::input(format!(
             "--games {} is not a positive multiple of 4: each wall set is played once per rotation",
@@ -93,7 +165,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
                     "agent": s.name, "games": s.games, "mean_rank": s.mean_rank, "rank_ci95": s.rank_ci95,
                     "ranks": s.ranks, "mean_score": s.mean_score, "rounds": s.rounds, "win_rate": s.win_rate,
                     "deal_in_rate": s.deal_in_rate, "call_rate": s.call_rate, "riichi_rate": s.riichi_rate,
-                    "points_per_win": s.points_per_win,
+                    "points_per_win": s.points_per_win, "illegal": s.illegal,
                 })
             })
             .collect();
@@ -101,6 +173,9 @@ pub fn run(args: Args) -> Result<(), CliError> {
             "variant": arena.variant.to_string(), "mode": arena.mode.name(), "games": report.games,
             "seed": args.seed, "seconds": seconds, "games_per_second": report.games as f64 / seconds,
             "decisions": report.decisions, "standings": standings,
+            "faults": report.faults.iter().map(|f| json!({
+                "player": f.player, "game": f.game, "seat": f.seat, "decision": f.decision, "message": f.message,
+            })).collect::<Vec<_>>(),
         });
         println!("{out:#}");
         return Ok(());
@@ -138,6 +213,18 @@ pub fn run(args: Args) -> Result<(), CliError> {
             100.0 * s.riichi_rate,
             s.points_per_win
         );
+    }
+    if !report.faults.is_empty() {
+        println!(
+            "{} bot faults (a failed bot's game ends at once with the illegal-action penalty); the first:",
+            report.faults.len()
+        );
+        for f in report.faults.iter().take(5) {
+            println!(
+                "  game {} seat {} ({}), decision {}: {}",
+                f.game, f.seat, f.player, f.decision, f.message
+            );
+        }
     }
     Ok(())
 }

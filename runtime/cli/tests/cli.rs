@@ -453,3 +453,85 @@ fn convert_of_a_folder_reports_bad_files_and_writes_the_rest() {
     assert_eq!(v["report"]["games"], 2);
     std::fs::remove_dir_all(&dir).ok();
 }
+
+fn simple_bot(extra: &str) -> String {
+    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/../../tests/data/mjai/bots/simple_bot.py");
+    format!("mjai:python3 {script} {extra}")
+}
+
+#[test]
+fn arena_seats_an_mjai_bot_and_reports_its_faults() {
+    let bot = simple_bot("--dialect stdio");
+    let agents = format!("defensive,{bot},rule,greedy");
+    let v = json(&rinshan(&[
+        "arena",
+        "--agents",
+        &agents,
+        "--mjai-dialect",
+        "stdio",
+        "--games",
+        "4",
+        "--mode",
+        "east",
+        "--json",
+    ]));
+    assert_eq!(v["faults"], serde_json::json!([]));
+    let me = v["standings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|s| s["agent"] == bot.as_str())
+        .unwrap();
+    assert_eq!((me["games"].as_u64(), me["illegal"].as_u64()), (Some(4), Some(0)));
+
+    let bot = simple_bot("--dialect app --mode garbage");
+    let agents = format!("defensive,{bot},rule,greedy");
+    let v = json(&rinshan(&[
+        "arena", "--agents", &agents, "--games", "4", "--mode", "east", "--json",
+    ]));
+    let faults = v["faults"].as_array().unwrap();
+    assert_eq!(faults.len(), 4);
+    assert!(
+        faults[0]["message"].as_str().unwrap().contains("not JSON"),
+        "{faults:?}"
+    );
+    let me = v["standings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|s| s["agent"] == bot.as_str())
+        .unwrap();
+    assert_eq!(me["ranks"], serde_json::json!([0, 0, 0, 4]));
+}
+
+#[test]
+fn arena_refuses_bad_mjai_seats() {
+    for (args, says) in [
+        (
+            vec!["--agents", "defensive,mjai:,rule,greedy"],
+            "needs the bot's command line",
+        ),
+        (
+            vec!["--agents", "defensive,mjai:x,rule,greedy", "--mode", "single"],
+            "east or half games",
+        ),
+        (
+            vec!["--agents", "defensive,mjai:x,rule,greedy", "--variant", "no-red"],
+            "--variant red",
+        ),
+        (
+            vec!["--agents", "defensive,mjai:x,rule,greedy", "--mjai-timeout", "0"],
+            "--mjai-timeout 0",
+        ),
+        (
+            vec!["--agents", "defensive,mjai:x,rule,greedy", "--mjai-dialect", "tcp"],
+            "unknown MJAI dialect",
+        ),
+        (vec!["--agents", "defensive,mjia:x,rule,greedy"], "mjai:COMMAND"),
+    ] {
+        let out = rinshan(&[&["arena", "--games", "4"], args.as_slice()].concat());
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(says), "{args:?}: {err}");
+    }
+}

@@ -115,7 +115,8 @@ pub struct Standing {
     pub riichi_rate: f64,
     /// Average score change of a winning round for the winner (hand, honba and sticks).
     pub points_per_win: f64,
-    /// Illegal actions played (a built-in agent never plays one).
+    /// Illegal actions played (a built-in agent never plays one). Each ended its game at once,
+    /// with its player placed last and the others in their order at that moment.
     pub illegal: u64,
 }
 
@@ -258,8 +259,15 @@ fn play(arena: &Arena, seed: u64, seating: &[Player; 4], game: u64, faults: &mut
                 riichi = [false; 4];
             }
         }
+        let ranks: [u32; 4] = std::array::from_fn(|q| v::seat_rank(&mut s, q as u32));
         for (q, tq) in t.iter_mut().enumerate() {
-            tq.rank = v::seat_rank(&mut s, q as u32);
+            tq.rank = match s.illegal.checked_sub(1) {
+                // A game lost to an illegal action places its player last and the others in
+                // their order of the moment.
+                Some(o) if o as usize == q => 3,
+                Some(o) => ranks[q] - u32::from(ranks[o as usize] < ranks[q]),
+                None => ranks[q],
+            };
             tq.score = i64::from(s.scores[q]);
         }
         (t, decisions)

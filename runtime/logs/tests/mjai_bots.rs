@@ -93,8 +93,12 @@ fn a_bot_that_misbehaves_loses_that_game_by_the_penalty_and_is_reported() {
             let started = Instant::now();
             let report = play(&bot(dialect, mode), Mode::East, 1);
             let me = standing(&report, "bot");
-            // Each of the 4 games ends at the bot's third turn, with the penalty.
-            assert_eq!((me.games, me.illegal), (4, 4), "{dialect:?} {mode}");
+            // Each of the 4 games ends at the bot's third turn, with the penalty: it places last.
+            assert_eq!(
+                (me.games, me.illegal, me.ranks),
+                (4, 4, [0, 0, 0, 4]),
+                "{dialect:?} {mode}"
+            );
             assert_eq!(report.faults.len(), 4, "{dialect:?} {mode}: {:?}", report.faults);
             for f in &report.faults {
                 assert_eq!(f.player, "bot");

@@ -103,14 +103,11 @@ impl Seat for MjaiSeat {
         live.step(before, action, after)?;
         // Round and game ends are acknowledged as they come (App), or sent at once (Stdio: a
         // bot that is never asked again still hears how its game ended).
-        let ends = live
-            .events()
+        let sent = self.sent.min(live.events().len());
+        let ends = live.events()[sent..]
             .iter()
-            .enumerate()
-            .skip(self.sent)
-            .filter(|(_, e)| matches!(e, Event::EndKyoku {} | Event::EndGame { .. }))
-            .map(|(i, _)| i + 1)
-            .last();
+            .rposition(|e| matches!(e, Event::EndKyoku {} | Event::EndGame { .. }))
+            .map(|i| sent + i + 1);
         match ends {
             Some(end) if self.broken.is_none() => self.acknowledge(end).map_or(Ok(()), Err),
             _ => Ok(()),
