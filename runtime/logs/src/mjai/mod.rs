@@ -8,14 +8,18 @@
 //! * [`reaction`] — a bot's reaction as the engine's action id
 //! * [`bot`]   — an MJAI bot as a child process, in mjai.app's or Mortal's dialect
 //! * [`seat`]  — such a bot as a seat of the engine's games (the arena's `mjai:` players)
+//! * [`player`] — rinshan as an MJAI player: a seat's events in, the engine's state of its
+//!   decision out (`rebuild` deals a wall consistent with what the seat saw and replays the round)
 //! * [`read`]  — an MJAI log as a `Game`, so replay, convert and render take any format; `round`
 //!   reads a round's events, `yaku` a win's yaku
 
 pub mod bot;
 pub mod event;
 pub mod live;
+pub mod player;
 pub mod reaction;
 pub mod read;
+mod rebuild;
 mod round;
 pub mod seat;
 pub mod tile;

@@ -399,3 +399,75 @@ fn a_seat_sees_only_its_own_hand_and_draws() {
         }
     }
 }
+
+/// Seat `seat`'s player, told the game so far in its own view.
+fn told(live: &Live, seat: u8) -> super::player::Player {
+    let mut player = super::player::Player::new(None);
+    for e in live.events() {
+        player
+            .update(view(e, seat))
+            .unwrap_or_else(|err| panic!("seat {seat}: {err} at {e:?}"));
+    }
+    player
+}
+
+#[test]
+fn a_seat_rebuilt_from_its_view_sees_and_may_do_what_the_engine_shows_it() {
+    use rinshan_engine::generated::kernel::{OBSERVE_CURRENT, PHASE_CLAIM};
+    use rinshan_engine::generated::red as v;
+    let decisions = std::cell::Cell::new(0);
+    live_games(40, |live, s| {
+        let p = live.mjai_seat(s.current);
+        let player = told(live, p);
+        let r = player
+            .decision()
+            .unwrap_or_else(|e| {
+                let evs = live.events();
+                let start = evs
+                    .iter()
+                    .rposition(|e| matches!(e, Event::StartKyoku { .. }))
+                    .unwrap_or(0);
+                let round: Vec<String> = evs[start..]
+                    .iter()
+                    .map(|e| serde_json::to_string(&view(e, p)).unwrap())
+                    .collect();
+                panic!("seat {p}: {e}\n{}", round.join("\n"))
+            })
+            .unwrap_or_else(|| panic!("seat {p} is asked, but its rebuilt state has no decision"));
+        assert_eq!(r.mask, s.mask, "seat {p}: legal actions");
+        let (seen, truth) = (
+            v::observe_planes(r, OBSERVE_CURRENT),
+            v::observe_planes(*s, OBSERVE_CURRENT),
+        );
+        assert!(
+            bytemuck::bytes_of(&seen) == bytemuck::bytes_of(&truth),
+            "seat {p}: planes differ"
+        );
+        let (seen, truth) = (
+            v::observe_tokens(r, OBSERVE_CURRENT),
+            v::observe_tokens(*s, OBSERVE_CURRENT),
+        );
+        assert!(
+            bytemuck::bytes_of(&seen) == bytemuck::bytes_of(&truth),
+            "seat {p}: tokens differ"
+        );
+        // On a turn nobody else has anything to decide.
+        if s.phase != PHASE_CLAIM {
+            for q in (0..4).filter(|&q| q != p) {
+                let other = told(live, q).decision().unwrap();
+                assert!(
+                    other.is_none(),
+                    "seat {q} on seat {p}'s turn: phase {} current {} mask {:?}; truth phase {} mask {:?}; last {:?}",
+                    other.map_or(9, |o| o.phase),
+                    other.map_or(9, |o| o.current),
+                    other.map(|o| o.mask),
+                    s.phase,
+                    s.mask,
+                    &live.events()[live.events().len().saturating_sub(4)..]
+                );
+            }
+        }
+        decisions.set(decisions.get() + 1);
+    });
+    assert!(decisions.get() > 1000);
+}
