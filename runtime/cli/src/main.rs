@@ -8,6 +8,7 @@ mod bench;
 mod convert;
 mod dataset;
 mod error;
+mod mjai_bot;
 mod observe;
 mod render;
 mod replay;
@@ -54,8 +55,10 @@ enum Command {
     Render(render::Args),
     /// A web page to play against the agents, watch them or replay a log, e.g. `rinshan serve --port 8000`
     Serve(serve::Args),
-    /// Rate built-in agents by duplicate play, e.g. `rinshan arena --agents greedy,rule,rule,rule --games 4000`
+    /// Rate agents and MJAI bots by duplicate play, e.g. `rinshan arena --agents greedy,rule,rule,mjai:"python bot.py" --games 4000`
     Arena(arena::Args),
+    /// A built-in agent as an MJAI bot on stdin/stdout (mjai.app's or Mortal's dialect), e.g. `rinshan mjai-bot --agent defensive 0`
+    MjaiBot(mjai_bot::Args),
     /// Many whole games with every invariant checked after every step, e.g. `rinshan soak --games 10000`
     Soak(soak::Args),
     /// Benchmarks: `bench hands` (shanten, scoring), `bench env` (environment steps by batch size)
@@ -74,6 +77,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Convert(a) => convert::run(a),
         Command::Dataset(a) => dataset::run(a),
         Command::Arena(a) => arena::run(a),
+        Command::MjaiBot(a) => mjai_bot::run(a),
         Command::Observe(a) => observe::run(a),
         Command::Render(a) => render::run(a),
         Command::Serve(a) => serve::run(a),

@@ -535,3 +535,124 @@ fn arena_refuses_bad_mjai_seats() {
         assert!(err.contains(says), "{args:?}: {err}");
     }
 }
+
+/// The arena's report without the names: standings by average rank, then the faults.
+fn standings_of(v: &serde_json::Value) -> Vec<serde_json::Value> {
+    v["standings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| {
+            let mut s = s.clone();
+            s["agent"] = serde_json::Value::Null;
+            s
+        })
+        .collect()
+}
+
+#[test]
+fn mjai_bot_plays_exactly_as_the_built_in_agent_in_both_dialects() {
+    // The bot rebuilds the engine's state from what its seat saw; an agent that draws no random
+    // numbers (greedy, defensive) then makes the decisions it makes in the engine, so the games
+    // are the same ones.
+    let exe = env!("CARGO_BIN_EXE_rinshan");
+    let base = ["--games", "8", "--mode", "half", "--seed", "4", "--json"];
+    let builtin = json(&rinshan(
+        &[&["arena", "--agents", "random,defensive,greedy,rule"], &base[..]].concat(),
+    ));
+    for dialect in ["app", "stdio"] {
+        let agents = format!("random,mjai:{exe} mjai-bot --agent defensive --dialect {dialect},greedy,rule");
+        let args = [&["arena", "--agents", &agents, "--mjai-dialect", dialect], &base[..]].concat();
+        let v = json(&rinshan(&args));
+        assert_eq!(v["faults"], serde_json::json!([]), "{dialect}");
+        assert_eq!(standings_of(&v), standings_of(&builtin), "{dialect}");
+    }
+}
+
+#[test]
+fn mjai_bot_answers_every_line_and_says_what_it_could_not_read() {
+    use std::io::Write;
+    let mut child = Command::new(env!("CARGO_BIN_EXE_rinshan"))
+        .args(["mjai-bot", "--agent", "greedy"])
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("run rinshan");
+    let hand = r#"["1m","2m","3m","4p","5p","6p","7s","8s","9s","E","E","P","P"]"#;
+    let q = r#"["?","?","?","?","?","?","?","?","?","?","?","?","?"]"#;
+    let lines = [
+        r#"[{"type":"start_game","id":1,"names":["a","b","c","d"]}]"#.to_string(),
+        "this is not JSON".to_string(),
+        r#"[{"type":"teleport","actor":1}]"#.to_string(),
+        format!(
+            r#"[{{"type":"start_kyoku","bakaze":"E","dora_marker":"1s","kyoku":1,"honba":0,"kyotaku":0,"oya":0,"scores":[25000,25000,25000,25000],"tehais":[{q},{hand},{q},{q}]}},{{"type":"tsumo","actor":0,"pai":"?"}},{{"type":"dahai","actor":0,"pai":"9m","tsumogiri":true}}]"#
+        ),
+        r#"[{"type":"tsumo","actor":1,"pai":"N"}]"#.to_string(),
+        r#"[{"type":"dahai","actor":1,"pai":"N","tsumogiri":true},{"type":"tsumo","actor":2,"pai":"?"},{"type":"dahai","actor":2,"pai":"P","tsumogiri":false}]"#.to_string(),
+    ];
+    let mut stdin = child.stdin.take().unwrap();
+    for line in &lines {
+        writeln!(stdin, "{line}").unwrap();
+    }
+    drop(stdin);
+    let out = child.wait_with_output().unwrap();
+    assert!(out.status.success());
+    let replies: Vec<serde_json::Value> = String::from_utf8_lossy(&out.stdout)
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert_eq!(replies.len(), lines.len(), "one reply per line");
+    // Nothing to decide at the start, on garbage, or on a 9m it cannot call.
+    assert!(replies[..4].iter().all(|r| r["type"] == "none"), "{replies:?}");
+    // Its own draw: tenpai (123m 456p 789s EE PP waits on E and P), so riichi or a discard.
+    assert_eq!(replies[4]["actor"], 1, "{replies:?}");
+    assert!(
+        ["dahai", "reach"].contains(&replies[4]["type"].as_str().unwrap()),
+        "{replies:?}"
+    );
+    // A P from seat 2 completes the hand (haku): ron.
+    assert_eq!(
+        replies[5],
+        serde_json::json!({"type": "hora", "actor": 1, "target": 2, "pai": "P"})
+    );
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("not JSON") && err.contains("not an MJAI event"), "{err}");
+}
+
+#[test]
+fn mjai_bot_reactions_pass_libriichi() {
+    // The `mjai` package of PyPI in its test virtualenv (see runtime/logs/tests/mjai_libriichi.rs).
+    let python = match std::env::var("RINSHAN_MJAI_PYTHON") {
+        Ok(p) if !p.is_empty() => p,
+        _ if std::env::var("CI").is_ok_and(|v| v == "true") => panic!("RINSHAN_MJAI_PYTHON is not set"),
+        _ => return eprintln!("RINSHAN_MJAI_PYTHON is not set: the libriichi check does not run here"),
+    };
+    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/../../tests/data/mjai/bots/checked_bot.py");
+    let inner = format!(
+        "{} mjai-bot --dialect stdio --agent defensive",
+        env!("CARGO_BIN_EXE_rinshan")
+    );
+    let bot = format!("mjai:{python} {script} --inner '{inner}'");
+    let agents = format!("{bot},greedy,{bot},rule");
+    let v = json(&rinshan(&[
+        "arena",
+        "--agents",
+        &agents,
+        "--mjai-dialect",
+        "stdio",
+        "--games",
+        "4",
+        "--mode",
+        "half",
+        "--json",
+    ]));
+    assert_eq!(v["faults"], serde_json::json!([]));
+    let me = v["standings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|s| s["agent"] == bot.as_str())
+        .unwrap();
+    assert_eq!((me["games"].as_u64(), me["illegal"].as_u64()), (Some(8), Some(0)));
+}

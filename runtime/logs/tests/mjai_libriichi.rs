@@ -7,7 +7,7 @@
 //! * `RulebaseBot` seats in mjai.app's dialect play duplicate games with no protocol error;
 //! * in Mortal's dialect, a `PlayerState` follows every event rinshan sends the seat, and the bot
 //!   fails the game unless rinshan asks it exactly where libriichi says it can act
-//!   (tests/data/mjai/bots/checked_rulebase.py).
+//!   (tests/data/mjai/bots/checked_bot.py).
 
 use std::time::Duration;
 
@@ -98,10 +98,7 @@ fn rulebase_bots_play_duplicate_games_in_mjai_apps_dialect() {
 #[test]
 fn libriichi_follows_every_event_and_agrees_when_a_seat_can_act() {
     let Some(python) = mjai_python() else { return };
-    let script = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../../tests/data/mjai/bots/checked_rulebase.py"
-    );
+    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/../../tests/data/mjai/bots/checked_bot.py");
     let command = format!("{python} {script}");
     assert_clean(&play(
         &entrant(command, Dialect::Stdio),

@@ -271,3 +271,79 @@ impl Player {
         }
     }
 }
+
+/// One line from the host: its events, and what the last one says of `can_act` (Mortal's hint).
+fn parse_line(line: &str) -> Result<(Vec<Event>, Option<bool>), String> {
+    let value: serde_json::Value = serde_json::from_str(line).map_err(|e| format!("not JSON: {e}"))?;
+    let items = match value {
+        serde_json::Value::Array(items) => items,
+        other => vec![other],
+    };
+    let can_act = items
+        .last()
+        .and_then(|v| v.get("can_act"))
+        .and_then(serde_json::Value::as_bool);
+    let events = items
+        .into_iter()
+        .map(|v| serde_json::from_value::<Event>(v).map_err(|e| format!("not an MJAI event: {e}")))
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok((events, can_act))
+}
+
+impl Player {
+    /// Answers one line from the host in `dialect`: the reply line, if one is due. `decide` gives
+    /// the action id for a decision's state; what goes wrong is passed to `log` and answered with
+    /// the [`Player::fallback`] (or `none`), so a bot never stops answering.
+    pub fn respond(
+        &mut self,
+        line: &str,
+        dialect: super::bot::Dialect,
+        decide: &mut dyn FnMut(&GameState) -> Result<u32, String>,
+        log: &mut dyn FnMut(String),
+    ) -> Option<String> {
+        let stdio = dialect == super::bot::Dialect::Stdio;
+        let (events, can_act) = match parse_line(line.trim()) {
+            Ok(parsed) => parsed,
+            Err(e) => {
+                log(format!(
+                    "line ignored, {e}: {}",
+                    line.chars().take(200).collect::<String>()
+                ));
+                return (!stdio).then(|| r#"{"type":"none"}"#.to_string());
+            }
+        };
+        for e in events {
+            if let Err(err) = self.update(e) {
+                log(format!("event ignored: {err}"));
+            }
+        }
+        if stdio && can_act == Some(false) {
+            return None;
+        }
+        let reaction = match self.decision() {
+            Ok(Some(state)) => Some(
+                decide(&state)
+                    .and_then(|a| self.reaction(&state, a))
+                    .unwrap_or_else(|e| {
+                        log(format!("no decision ({e}): answering {}", self.fallback().kind()));
+                        self.fallback()
+                    }),
+            ),
+            Ok(None) => None,
+            Err(e) => {
+                let fallback = self.fallback();
+                log(format!(
+                    "the state cannot be rebuilt ({e}): answering {}",
+                    fallback.kind()
+                ));
+                (fallback != Event::None {}).then_some(fallback)
+            }
+        };
+        let reply = match (reaction, stdio && can_act.is_none()) {
+            (Some(r), _) => r,
+            (None, true) => return None,
+            (None, false) => Event::None {},
+        };
+        serde_json::to_string(&reply).ok()
+    }
+}

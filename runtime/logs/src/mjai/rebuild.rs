@@ -436,8 +436,11 @@ fn play(
             pass_claims(&mut s, None).map_err(at)?;
         }
     }
+    // Others asked before the seat pass; when the window closes without asking it, the seat has
+    // nothing to decide (what comes next is the next event's).
+    let claim = s.phase == PHASE_CLAIM;
     pass_claims(&mut s, Some(seat))?;
-    Ok(Some(s))
+    Ok((!claim || s.phase == PHASE_CLAIM).then_some(s))
 }
 
 /// In a claim window, every seat asked before `until` passes (the next event says they did).
