@@ -4,11 +4,13 @@ use pyo3::prelude::*;
 
 mod dataset;
 mod env;
+mod mjai;
 mod tools;
 
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<env::PyEnv>()?;
+    m.add_class::<mjai::PyMjaiPlayer>()?;
     tools::register(m)?;
     dataset::register(m)
 }

@@ -4,7 +4,8 @@
 //! Python `RINSHAN_MJAI_PYTHON` names. Without it the tests say so and pass, except under
 //! `CI=true`, where a missing virtualenv is a failure.
 //!
-//! * `RulebaseBot` seats in mjai.app's dialect play duplicate games with no protocol error;
+//! * `RulebaseBot` seats in mjai.app's dialect play duplicate games with no protocol error (see
+//!   `assert_clean` for the one rule it breaks);
 //! * in Mortal's dialect, a `PlayerState` follows every event rinshan sends the seat, and the bot
 //!   fails the game unless rinshan asks it exactly where libriichi says it can act
 //!   (tests/data/mjai/bots/checked_bot.py).
@@ -64,10 +65,20 @@ fn play(bot: &MjaiEntrant, others: [Agent; 2], sets: usize) -> Report {
     arena::run(&arena, &|_| {})
 }
 
+/// No protocol error. The one fault a RulebaseBot may commit is a rule's, not the protocol's:
+/// after `reach` it sometimes discards a tile that breaks its tenpai, which libriichi's
+/// `validate_reaction` lets through and Tenhou's rules (rinshan's) do not.
 fn assert_clean(report: &Report) {
-    assert_eq!(report.faults, vec![]);
+    for f in &report.faults {
+        assert!(
+            f.message.contains(r#"illegal reaction {"type":"dahai""#)
+                && f.message.contains("the riichi discard; legal:"),
+            "{f:?}"
+        );
+    }
     for s in &report.standings {
-        assert_eq!(s.illegal, 0, "{s:?}");
+        let faults = report.faults.iter().filter(|f| f.player == s.name).count() as u64;
+        assert_eq!(s.illegal, faults, "{s:?}");
     }
     let bot = report
         .standings

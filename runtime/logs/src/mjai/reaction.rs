@@ -112,7 +112,7 @@ pub fn action_of(reaction: &Event, seat: u8, s: &GameState) -> Result<u32, Strin
             .collect();
         let name = names.get(action as usize).map_or("?", String::as_str);
         return Err(format!(
-            "`{name}` is not legal here (seat {seat}, {}; legal: {})",
+            "`{name}` is not legal here (MJAI seat {seat}, {}; legal: {})",
             match s.phase {
                 kernel::PHASE_CLAIM => "a claim on a discard",
                 kernel::PHASE_RIICHI_DISCARD => "the riichi discard",
