@@ -656,3 +656,45 @@ fn mjai_bot_reactions_pass_libriichi() {
         .unwrap();
     assert_eq!((me["games"].as_u64(), me["illegal"].as_u64()), (Some(8), Some(0)));
 }
+
+#[test]
+fn mjai_logs_replay_in_riichienv_with_every_decision_legal_and_every_win_scored_alike() {
+    // PyPI's riichienv in the test virtualenv (see runtime/logs/tests/mjai_libriichi.rs); the
+    // check and RiichiEnv's replay quirks it corrects: tests/data/mjai/riichienv_check.py.
+    let python = match std::env::var("RINSHAN_MJAI_PYTHON") {
+        Ok(p) if !p.is_empty() => p,
+        _ if std::env::var("CI").is_ok_and(|v| v == "true") => panic!("RINSHAN_MJAI_PYTHON is not set"),
+        _ => return eprintln!("RINSHAN_MJAI_PYTHON is not set: the RiichiEnv check does not run here"),
+    };
+    let dir = std::env::temp_dir().join(format!("rinshan-riichienv-{}", std::process::id()));
+    let export = dir.to_string_lossy().to_string();
+    let out = rinshan(&[
+        "selfplay",
+        "--games",
+        "40",
+        "--batch",
+        "8",
+        "--seed",
+        "3",
+        "--export",
+        &export,
+        "--export-format",
+        "mjai",
+    ]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/../../tests/data/mjai/riichienv_check.py");
+    let out = Command::new(python)
+        .args([script, &export])
+        .output()
+        .expect("run python");
+    let _ = std::fs::remove_dir_all(&dir);
+    let report: serde_json::Value = serde_json::from_slice(&out.stdout)
+        .unwrap_or_else(|_| panic!("no report: {}", String::from_utf8_lossy(&out.stderr)));
+    assert!(out.status.success(), "{report}");
+    let stats = &report["stats"];
+    assert_eq!(stats["games"], 40);
+    assert!(
+        stats["decisions"].as_u64() > Some(10_000) && stats["wins"].as_u64() > Some(100),
+        "{report}"
+    );
+}
