@@ -4,11 +4,12 @@ fu and points in RiichiEnv's hand evaluator.
 
     python riichienv_check.py FOLDER   (prints a JSON summary; exit status 1 on a disagreement)
 
-RiichiEnv's MJAI replay has three quirks (0.4.11) that this check corrects from the log itself
-rather than count as disagreements: it marks every ron as houtei (the last-tile flags are taken
-from the log's live draws), it counts an added or open kan's dora indicator twice (the indicators
-are taken from the log's `start_kyoku` and `dora` events), and it sometimes misreads a closed
-kan's tiles, leaving a hand with no winning shape (counted apart as `riichienv_misread`).
+RiichiEnv's MJAI replay has quirks (0.4.11) that this check corrects from the log itself rather
+than count as disagreements: it marks every ron as houtei and no win as rinshan kaihou (the
+last-tile and replacement-tile flags are taken from the log's draws), it counts an added or open
+kan's dora indicator twice (the indicators are taken from the log's `start_kyoku` and `dora`
+events), and it misreads some closed kans' tiles (as 1m: such wins are counted apart as
+`riichienv_misread`). Ura indicators count for a winner that declared riichi.
 """
 
 import collections
@@ -36,24 +37,32 @@ def key(action):
 
 def check_win(hora, before, context, stats, bad):
     tsumo = hora["actor"] == hora["target"]
-    live, replacement = 0, False
+    live, after_kan, replacement = 0, False, False
     for e in before:
         if e["type"] in ("ankan", "kakan", "daiminkan"):
-            replacement = True
+            after_kan = True
         elif e["type"] == "tsumo":
-            live += not replacement
-            replacement = False
+            live += not after_kan
+            replacement, after_kan = after_kan, False
     kans = sum(e["type"] in ("ankan", "kakan", "daiminkan") for e in before)
     cond = context.conditions
     cond.houtei = not tsumo and live == 70 - kans
     cond.haitei = tsumo and live == 70 - kans and not replacement
+    cond.rinshan = tsumo and replacement
     shown = [before[0]["dora_marker"]] + [e["dora_marker"] for e in before if e["type"] == "dora"]
-    ura = [tile_id(x) for x in hora.get("ura_markers") or []]
+    riichi = any(e["type"] == "reach" and e["actor"] == hora["actor"] for e in before)
+    ura = [tile_id(x) for x in hora.get("ura_markers") or []] if riichi else []
     res = context.create_calculator().calc(
         context.agari_tile, [tile_id(x) for x in shown], ura, cond
     )
     stats["wins"] += 1
-    if not res.has_win_shape:
+    closed_kans = sorted(
+        tile_id(e["consumed"][0]) // 4
+        for e in before
+        if e["type"] == "ankan" and e["actor"] == hora["actor"]
+    )
+    read = sorted(m.tiles[0] // 4 for m in context.melds if "Ankan" in str(m.meld_type))
+    if not res.has_win_shape or read != closed_kans:
         stats["riichienv_misread"] += 1
         return
     oya = before[0]["oya"]
