@@ -3,18 +3,16 @@
 //! confidence interval, the rank histogram, the final score and per-round rates.
 
 use std::io::IsTerminal;
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
 use indicatif::{ProgressBar, ProgressStyle};
 use rinshan_engine::agents::Agent;
 use rinshan_engine::arena::{self, Arena, Player};
 use rinshan_engine::env::Mode;
-use rinshan_engine::Variant;
-use rinshan_logs::mjai::bot::{BotSpec, Dialect};
 use rinshan_logs::mjai::seat::MjaiEntrant;
 use serde_json::json;
 
-use crate::args::VariantArg;
+use crate::args::{MjaiArgs, SeatArg, VariantArg};
 use crate::error::CliError;
 
 #[derive(clap::Args)]
@@ -23,16 +21,8 @@ pub struct Args {
     /// `mjai:COMMAND`, an MJAI bot run as `sh -c "COMMAND SEAT"` over its stdin and stdout
     #[arg(long, default_value = "defensive,greedy,rule,random", value_delimiter = ',')]
     agents: Vec<SeatArg>,
-    /// How the MJAI bots are spoken to: app (mjai.app: a JSON array of events per line, one
-    /// reaction per line) or stdio (Mortal, mjai-manue: one event per line, replies when asked)
-    #[arg(long, default_value = "app")]
-    mjai_dialect: Dialect,
-    /// Seconds an MJAI bot may take to answer; later, it loses the game by the illegal-action penalty
-    #[arg(long, default_value_t = 5.0)]
-    mjai_timeout: f64,
-    /// Seconds an MJAI bot may take for its first answer of a game (loading a model)
-    #[arg(long, default_value_t = 60.0)]
-    mjai_startup: f64,
+    #[command(flatten)]
+    mjai: MjaiArgs,
     /// Games to play, a multiple of 4 (each wall set is played 4 times, rotated)
     #[arg(long, default_value_t = 400)]
     games: u64,
@@ -52,36 +42,6 @@ pub struct Args {
     json: bool,
 }
 
-/// One seat's player as `--agents` names it.
-#[derive(Clone, Debug)]
-pub enum SeatArg {
-    /// A built-in agent.
-    Builtin(Agent),
-    /// An MJAI bot's command line.
-    Mjai(String),
-}
-
-impl std::str::FromStr for SeatArg {
-    type Err = String;
-    fn from_str(s: &str) -> Result<SeatArg, String> {
-        match s.strip_prefix("mjai:") {
-            Some(cmd) if cmd.trim().is_empty() => Err("`mjai:` needs the bot's command line after it".into()),
-            Some(cmd) => Ok(SeatArg::Mjai(cmd.trim().to_string())),
-            None => s
-                .parse::<Agent>()
-                .map(SeatArg::Builtin)
-                .map_err(|e| format!("{e} (or mjai:COMMAND)")),
-        }
-    }
-}
-
-fn seconds(flag: &str, s: f64) -> Result<Duration, CliError> {
-    Duration::try_from_secs_f64(s)
-        .ok()
-        .filter(|d| !d.is_zero())
-        .ok_or_else(|| CliError::input(format!("{flag} {s} is not a positive number of seconds")))
-}
-
 pub fn run(args: Args) -> Result<(), CliError> {
     if args.agents.len() != 4 {
         return Err(CliError::input(format!(
@@ -89,28 +49,16 @@ pub fn run(args: Args) -> Result<(), CliError> {
             args.agents.len()
         )));
     }
-    let spec = |command: &String| -> Result<MjaiEntrant, CliError> {
-        Ok(MjaiEntrant {
-            spec: BotSpec {
-                command: command.clone(),
-                dialect: args.mjai_dialect,
-                timeout: seconds("--mjai-timeout", args.mjai_timeout)?,
-                startup: seconds("--mjai-startup", args.mjai_startup)?,
-            },
-        })
-    };
     let bots: Vec<(String, MjaiEntrant)> = args
         .agents
         .iter()
         .filter_map(|a| match a {
-            SeatArg::Mjai(cmd) => Some(spec(cmd).map(|e| (format!("mjai:{cmd}"), e))),
+            SeatArg::Mjai(cmd) => Some(args.mjai.entrant(cmd).map(|e| (a.to_string(), e))),
             SeatArg::Builtin(_) => None,
         })
         .collect::<Result<_, _>>()?;
-    if !bots.is_empty() && (args.variant.variant != Variant::Red || args.mode == Mode::Single) {
-        return Err(CliError::input(
-            "MJAI bots play the red rules (--variant red) in east or half games (--mode east|half)",
-        ));
+    if !bots.is_empty() {
+        MjaiArgs::check_rules(args.variant.variant, args.mode, None)?;
     }
     let mut next_bot = bots.iter();
     let players: [Player; 4] = std::array::from_fn(|p| match &args.agents[p] {

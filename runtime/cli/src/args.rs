@@ -1,8 +1,15 @@
 //! Arguments several commands take, declared once: the same names, defaults, help and errors
 //! everywhere (`--variant blue` fails the same way in `selfplay`, `score` and `bench`).
 
+use std::time::Duration;
+
+use rinshan_engine::agents::Agent;
 use rinshan_engine::env::{Backend, Config, Mode};
 use rinshan_engine::Variant;
+use rinshan_logs::mjai::bot::{BotSpec, Dialect};
+use rinshan_logs::mjai::seat::MjaiEntrant;
+
+use crate::error::CliError;
 
 /// `--variant`.
 #[derive(clap::Args, Clone, Debug)]
@@ -77,5 +84,88 @@ impl GameArgs {
             auto_reset: true,
             ..Config::new(self.variant.variant, batch)
         }
+    }
+}
+
+/// One seat's player as `--agents` names it.
+#[derive(Clone, Debug)]
+pub enum SeatArg {
+    /// A built-in agent.
+    Builtin(Agent),
+    /// An MJAI bot's command line.
+    Mjai(String),
+}
+
+impl std::str::FromStr for SeatArg {
+    type Err = String;
+    fn from_str(s: &str) -> Result<SeatArg, String> {
+        match s.strip_prefix("mjai:") {
+            Some(cmd) if cmd.trim().is_empty() => Err("`mjai:` needs the bot's command line after it".into()),
+            Some(cmd) => Ok(SeatArg::Mjai(cmd.trim().to_string())),
+            None => s
+                .parse::<Agent>()
+                .map(SeatArg::Builtin)
+                .map_err(|e| format!("{e} (or mjai:COMMAND)")),
+        }
+    }
+}
+
+fn seconds(flag: &str, s: f64) -> Result<Duration, CliError> {
+    Duration::try_from_secs_f64(s)
+        .ok()
+        .filter(|d| !d.is_zero())
+        .ok_or_else(|| CliError::input(format!("{flag} {s} is not a positive number of seconds")))
+}
+
+impl std::fmt::Display for SeatArg {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            SeatArg::Builtin(a) => write!(f, "{a}"),
+            SeatArg::Mjai(cmd) => write!(f, "mjai:{cmd}"),
+        }
+    }
+}
+
+/// How `mjai:` seats are run.
+#[derive(clap::Args, Clone, Debug)]
+pub struct MjaiArgs {
+    /// How the MJAI bots are spoken to: app (mjai.app: a JSON array of events per line, one
+    /// reaction per line) or stdio (Mortal, mjai-manue: one event per line, replies when asked)
+    #[arg(long, default_value = "app")]
+    pub mjai_dialect: Dialect,
+    /// Seconds an MJAI bot may take to answer; later, it loses the game by the illegal-action penalty
+    #[arg(long, default_value_t = 5.0)]
+    pub mjai_timeout: f64,
+    /// Seconds an MJAI bot may take for its first answer of a game (loading a model)
+    #[arg(long, default_value_t = 60.0)]
+    pub mjai_startup: f64,
+}
+
+impl MjaiArgs {
+    /// The seat player that runs `command`.
+    pub fn entrant(&self, command: &str) -> Result<MjaiEntrant, CliError> {
+        Ok(MjaiEntrant {
+            spec: BotSpec {
+                command: command.to_string(),
+                dialect: self.mjai_dialect,
+                timeout: seconds("--mjai-timeout", self.mjai_timeout)?,
+                startup: seconds("--mjai-startup", self.mjai_startup)?,
+            },
+        })
+    }
+
+    /// Why MJAI bots cannot play these games, if they cannot.
+    pub fn check_rules(variant: Variant, mode: Mode, backend: Option<Backend>) -> Result<(), CliError> {
+        if variant != Variant::Red || mode == Mode::Single {
+            return Err(CliError::input(
+                "MJAI bots play the red rules (--variant red) in east or half games (--mode east|half)",
+            ));
+        }
+        if backend == Some(Backend::Gpu) {
+            return Err(CliError::input(
+                "MJAI bots need --backend cpu: each bot follows its game's state after every step",
+            ));
+        }
+        Ok(())
     }
 }

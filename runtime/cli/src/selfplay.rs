@@ -8,15 +8,19 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use indicatif::{ProgressBar, ProgressStyle};
+use rayon::prelude::*;
 use rinshan_engine::agents::Agent;
+use rinshan_engine::arena::{refused_action, Seat};
 use rinshan_engine::env::{env_seed, events, Backend, Config, Env, Mode};
+use rinshan_engine::generated::kernel::GameState;
 use rinshan_engine::random::Rng;
 use rinshan_engine::Variant;
 use rinshan_logs::file::write_log;
+use rinshan_logs::mjai::seat::{MjaiEntrant, MjaiSeat};
 use rinshan_logs::tenhou::write::{Finished, Recorder};
 use serde_json::json;
 
-use crate::args::{FormatArg, GameArgs};
+use crate::args::{FormatArg, GameArgs, MjaiArgs, SeatArg};
 use crate::error::CliError;
 
 #[derive(clap::Args)]
@@ -32,12 +36,14 @@ pub struct Args {
     /// Print the summary as JSON
     #[arg(long)]
     json: bool,
-    /// Who plays the four seats: built-in agents (random, rule, greedy, defensive); env i seats
-    /// agent (p + i) mod 4 of the list at seat p, so over a batch of 4k envs each agent plays every
-    /// seat equally; or `uniform` for a uniformly random legal policy drawn on the host (most such
-    /// games end in draws)
+    /// Who plays the four seats: built-in agents (random, rule, greedy, defensive) or MJAI bots
+    /// (`mjai:COMMAND`, see `arena`); env i seats agent (p + i) mod 4 of the list at seat p, so
+    /// over a batch of 4k envs each agent plays every seat equally; or `uniform` for a uniformly
+    /// random legal policy drawn on the host (most such games end in draws)
     #[arg(long, value_delimiter = ',', default_value = "defensive,greedy,rule,random")]
     agents: Vec<String>,
+    #[command(flatten)]
+    mjai: MjaiArgs,
     /// Also write each counted game as DIR/game-<n>.json (n = 1..games), a tenhou.net/6 log that
     /// `rinshan replay` reads (or .mjson, see --export-format). Red variant, east or half games,
     /// CPU backend only (the games' states are read after every step)
@@ -129,30 +135,121 @@ impl AgentTally {
     }
 }
 
-/// The seatings of `--agents` (None: the host's uniform random policy).
-fn seatings(agents: &[String], batch: usize) -> Result<Option<Vec<[Agent; 4]>>, CliError> {
+/// The players of `--agents`, and each env's kernel seating (None: the host's uniform random
+/// policy). An MJAI bot's seats hold `random` in the kernel's seating: the bot's action replaces it.
+#[allow(clippy::type_complexity)]
+fn seatings(agents: &[String], batch: usize) -> Result<Option<([SeatArg; 4], Vec<[Agent; 4]>)>, CliError> {
     if agents.len() == 1 && agents[0] == "uniform" {
         return Ok(None);
     }
-    let parsed: Vec<Agent> = agents
+    let parsed: Vec<SeatArg> = agents
         .iter()
         .map(|a| a.parse().map_err(CliError::input))
         .collect::<Result<_, _>>()?;
-    let [a, b, c, d] = parsed[..] else {
+    let Ok(four) = <[SeatArg; 4]>::try_from(parsed) else {
         return Err(CliError::input(format!(
             "--agents needs 4 agents (one per seat) or `uniform`, got {}",
-            parsed.len()
+            agents.len()
         )));
     };
-    let four = [a, b, c, d];
-    Ok(Some(
-        (0..batch).map(|i| std::array::from_fn(|p| four[(p + i) % 4])).collect(),
-    ))
+    let kernel = four.clone().map(|a| match a {
+        SeatArg::Builtin(a) => a,
+        SeatArg::Mjai(_) => Agent::Random,
+    });
+    Ok(Some((
+        four,
+        (0..batch)
+            .map(|i| std::array::from_fn(|p| kernel[(p + i) % 4]))
+            .collect(),
+    )))
+}
+
+/// The MJAI bots' seats of each env's game, played alongside the kernel's agents.
+struct Bots {
+    /// Per entry of `--agents`, its bot (None: a built-in agent).
+    entrants: [Option<MjaiEntrant>; 4],
+    /// Per env and seat, the bot playing it in the current game.
+    seats: Vec<[Option<MjaiSeat>; 4]>,
+    faults: Vec<String>,
+}
+
+impl Bots {
+    /// Seats the bots of env `i`'s game that starts in `state`.
+    fn join(entrants: &[Option<MjaiEntrant>; 4], i: usize, state: &GameState) -> [Option<MjaiSeat>; 4] {
+        std::array::from_fn(|p| entrants[(p + i) % 4].as_ref().map(|e| e.start(p as u32, state)))
+    }
+
+    /// Replaces the actions of the envs whose current player is a bot by the bot's.
+    fn act(&mut self, states: &[GameState], actions: &mut [u32]) {
+        let faults: Vec<String> = self
+            .seats
+            .par_iter_mut()
+            .zip(actions.par_iter_mut())
+            .zip(states.par_iter())
+            .enumerate()
+            .filter_map(|(i, ((seats, a), s))| {
+                // A finished game's state asks nothing (with auto-reset, `terminated` marks the
+                // first state of the next game, which does ask).
+                let seat = seats[s.current as usize].as_mut().filter(|_| s.mask != [0; 3])?;
+                match seat.act(s) {
+                    Ok(x) => *a = x,
+                    Err(e) => {
+                        *a = refused_action(&s.mask);
+                        return Some(format!("env {i} seat {}: {e}", s.current));
+                    }
+                }
+                None
+            })
+            .collect();
+        self.faults.extend(faults);
+    }
+
+    /// Tells every bot the step each env took; a finished game's bots give way to the next's.
+    fn stepped(&mut self, before: &[GameState], actions: &[u32], after: &[GameState], ended: &[bool]) {
+        let entrants = &self.entrants;
+        let faults: Vec<String> = self
+            .seats
+            .par_iter_mut()
+            .enumerate()
+            .flat_map_iter(|(i, seats)| {
+                let mut out = Vec::new();
+                for (p, seat) in seats.iter_mut().enumerate() {
+                    if let Some(Err(e)) = seat.as_mut().map(|s| s.stepped(&before[i], actions[i], &after[i])) {
+                        out.push(format!("env {i} seat {p}: {e}"));
+                    }
+                }
+                if ended[i] {
+                    *seats = Bots::join(entrants, i, &after[i]);
+                }
+                out
+            })
+            .collect();
+        self.faults.extend(faults);
+    }
 }
 
 pub fn run(args: Args) -> Result<(), CliError> {
     let config = args.game.config(args.batch);
-    let seatings = seatings(&args.agents, args.batch)?;
+    let (players, seatings) = match seatings(&args.agents, args.batch)? {
+        Some((players, seatings)) => (Some(players), Some(seatings)),
+        None => (None, None),
+    };
+    let entrants: [Option<MjaiEntrant>; 4] = match &players {
+        Some(players) => {
+            let mut out: [Option<MjaiEntrant>; 4] = Default::default();
+            for (slot, p) in out.iter_mut().zip(players) {
+                if let SeatArg::Mjai(cmd) = p {
+                    *slot = Some(args.mjai.entrant(cmd)?);
+                }
+            }
+            out
+        }
+        None => Default::default(),
+    };
+    let with_bots = entrants.iter().any(Option::is_some);
+    if with_bots {
+        MjaiArgs::check_rules(config.variant, config.mode, Some(config.backend))?;
+    }
     let (variant, seed) = (config.variant, config.seed);
     if args.games == 0 {
         return Err(CliError::input("--games must be at least 1"));
@@ -177,7 +274,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
     let mut total = Tally::new(yaku_names.len());
     // Per distinct agent name of --agents, in the order first named.
     let mut agent_names: Vec<String> = Vec::new();
-    for agent in seatings.iter().flat_map(|s| s[0]) {
+    for agent in players.iter().flatten() {
         let name = agent.to_string();
         if !agent_names.contains(&name) {
             agent_names.push(name);
@@ -187,6 +284,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
     let start = f64::from(variant.starting_points());
     let mut games = 0u64;
     let mut env_steps = 0u64;
+    let mut faults = 0u64;
     let mut actions = vec![0u32; b];
 
     let bar = if args.json || !std::io::stderr().is_terminal() {
@@ -205,6 +303,21 @@ pub fn run(args: Args) -> Result<(), CliError> {
         Some(_) => Some(Recorder::new(&env).map_err(CliError::failure)?),
         None => None,
     };
+    let mut bots = match with_bots {
+        true => {
+            let states = env.game_states().map_err(CliError::failure)?;
+            Some(Bots {
+                seats: states
+                    .iter()
+                    .enumerate()
+                    .map(|(i, s)| Bots::join(&entrants, i, s))
+                    .collect(),
+                entrants,
+                faults: Vec::new(),
+            })
+        }
+        false => None,
+    };
     while games < args.games {
         match &seatings {
             Some(seats) => actions = env.agent_actions(seats).map_err(CliError::failure)?,
@@ -215,7 +328,23 @@ pub fn run(args: Args) -> Result<(), CliError> {
                 }
             }
         }
+        let before = match &mut bots {
+            Some(bots) => {
+                let states = env.game_states().map_err(CliError::failure)?;
+                bots.act(&states, &mut actions);
+                states
+            }
+            None => Vec::new(),
+        };
         env.step(&actions).map_err(CliError::failure)?;
+        if let Some(bots) = &mut bots {
+            let after = env.game_states().map_err(CliError::failure)?;
+            bots.stepped(&before, &actions, &after, &env.last().terminated);
+            for fault in bots.faults.drain(..) {
+                eprintln!("rinshan selfplay: {fault}");
+                faults += 1;
+            }
+        }
         let mut recorded = match &mut recorder {
             Some(r) => {
                 r.observe(&env, &actions).map_err(CliError::failure)?;
@@ -266,10 +395,11 @@ pub fn run(args: Args) -> Result<(), CliError> {
                 let finished = std::mem::replace(t, Tally::new(yaku_names.len()));
                 // Games are counted in env order within a step, so the same seed counts the same games.
                 if games < args.games {
-                    if let Some(seats) = &seatings {
-                        for (p, agent) in seats[i].iter().enumerate() {
-                            let k = agent_names.iter().position(|n| *n == agent.to_string());
-                            if let Some(k) = k {
+                    if let Some(players) = &players {
+                        for p in 0..4 {
+                            // Env i seats entry (p + i) mod 4 of --agents at seat p.
+                            let name = players[(p + i) % 4].to_string();
+                            if let Some(k) = agent_names.iter().position(|n| *n == name) {
                                 per_agent[k].add(&finished, p, step.ranks[i][p], start);
                             }
                         }
@@ -297,6 +427,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
         &agent_names,
         &per_agent,
         yaku_names,
+        faults,
     );
     Ok(())
 }
@@ -351,6 +482,7 @@ fn summary(
     agent_names: &[String],
     per_agent: &[AgentTally],
     yaku_names: &[&str],
+    faults: u64,
 ) {
     let wins = t.ron + t.tsumo;
     let start = f64::from(variant.starting_points());
@@ -402,6 +534,7 @@ fn summary(
             "avg_final_score": scores,
             "per_agent": agents_json,
             "yaku": yaku.iter().map(|(name, n)| json!({"name": name, "count": n, "per_win": ratio(*n, wins)})).collect::<Vec<_>>(),
+            "bot_faults": faults,
             "env_steps": env_steps,
             "seconds": seconds,
             "steps_per_second": steps_per_s,
@@ -418,6 +551,9 @@ fn summary(
         args.agents.join(",")
     );
     println!("  games                 {games}");
+    if faults > 0 {
+        println!("  bot faults            {faults} (each ended its game with the illegal-action penalty; see stderr)");
+    }
     println!(
         "  steps                 {} in the counted games ({:.1} per game), {env_steps} env steps in all",
         t.steps,

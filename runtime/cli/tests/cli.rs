@@ -698,3 +698,43 @@ fn mjai_logs_replay_in_riichienv_with_every_decision_legal_and_every_win_scored_
         "{report}"
     );
 }
+
+#[test]
+fn selfplay_seats_mjai_bots_that_play_the_same_games_as_the_agents_they_run() {
+    let exe = env!("CARGO_BIN_EXE_rinshan");
+    let base = [
+        "selfplay", "--games", "8", "--batch", "4", "--mode", "east", "--seed", "9", "--json",
+    ];
+    let summary = |agents: &str, extra: &[&str]| json(&rinshan(&[&base[..], &["--agents", agents], extra].concat()));
+    let builtin = summary("greedy,rule,defensive,random", &[]);
+    for dialect in ["app", "stdio"] {
+        let bot = format!("mjai:{exe} mjai-bot --agent defensive --dialect {dialect}");
+        let v = summary(&format!("greedy,rule,{bot},random"), &["--mjai-dialect", dialect]);
+        assert_eq!(v["bot_faults"], 0, "{dialect}");
+        for field in ["steps", "rounds", "avg_final_score", "yaku"] {
+            assert_eq!(v[field], builtin[field], "{dialect}: {field}");
+        }
+        let by_name = |v: &serde_json::Value, name: &str| {
+            let a = v["per_agent"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .find(|a| a["agent"] == name)
+                .cloned();
+            a.map(|mut a| {
+                a["agent"] = serde_json::Value::Null;
+                a
+            })
+        };
+        assert_eq!(by_name(&v, &bot), by_name(&builtin, "defensive"), "{dialect}");
+    }
+    let out = rinshan(
+        &[
+            &base[..],
+            &["--agents", "greedy,rule,mjai:x,random", "--backend", "gpu"],
+        ]
+        .concat(),
+    );
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--backend cpu"));
+}

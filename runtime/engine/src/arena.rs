@@ -26,7 +26,7 @@ pub trait Entrant: Sync {
 }
 
 /// An [`Entrant`] in one game.
-pub trait Seat {
+pub trait Seat: Send {
     /// The action for `state`, where this seat is to act. `Err` (why it has none) plays an
     /// illegal action: the game ends with the penalty and the reason is reported as a [`Fault`].
     fn act(&mut self, state: &GameState) -> Result<u32, String>;

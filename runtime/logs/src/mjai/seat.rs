@@ -32,8 +32,9 @@ pub struct MjaiSeat {
     broken: Option<String>,
 }
 
-impl Entrant for MjaiEntrant {
-    fn join(&self, seat: u32, state: &GameState) -> Box<dyn Seat + '_> {
+impl MjaiEntrant {
+    /// Starts the bot for seat `seat` (the engine's) of the game that starts in `state`.
+    pub fn start(&self, seat: u32, state: &GameState) -> MjaiSeat {
         let live = Live::new(state, ["", "", "", ""].map(String::from));
         let mjai_seat = live.as_ref().map_or(0, |l| l.mjai_seat(seat));
         let mut s = MjaiSeat {
@@ -47,7 +48,13 @@ impl Entrant for MjaiEntrant {
             // mjai.app asks for a `none` to `start_game` before the first round.
             s.acknowledge(1);
         }
-        Box::new(s)
+        s
+    }
+}
+
+impl Entrant for MjaiEntrant {
+    fn join(&self, seat: u32, state: &GameState) -> Box<dyn Seat + '_> {
+        Box::new(self.start(seat, state))
     }
 }
 
