@@ -454,6 +454,45 @@ fn convert_of_a_folder_reports_bad_files_and_writes_the_rest() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
+/// The Python of the test virtualenv with PyPI's `mjai` and `riichienv` (`.ci/mjai-venv`; see
+/// runtime/logs/tests/mjai_libriichi.rs); `None` says so outside CI, where it may be missing.
+fn mjai_python() -> Option<String> {
+    match std::env::var("RINSHAN_MJAI_PYTHON") {
+        Ok(p) if !p.is_empty() => Some(p),
+        _ if std::env::var("CI").is_ok_and(|v| v == "true") => panic!("RINSHAN_MJAI_PYTHON is not set"),
+        _ => {
+            eprintln!("RINSHAN_MJAI_PYTHON is not set: the checks against mjai and riichienv do not run here");
+            None
+        }
+    }
+}
+
+/// `rinshan arena --json` for 4 games with `agents`, bots spoken to in `dialect`.
+fn arena_json(agents: &str, dialect: &str, mode: &str) -> serde_json::Value {
+    json(&rinshan(&[
+        "arena",
+        "--agents",
+        agents,
+        "--mjai-dialect",
+        dialect,
+        "--games",
+        "4",
+        "--mode",
+        mode,
+        "--json",
+    ]))
+}
+
+/// The standing of `name` in an arena report.
+fn standing<'a>(v: &'a serde_json::Value, name: &str) -> &'a serde_json::Value {
+    v["standings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|s| s["agent"] == name)
+        .expect("the agent played")
+}
+
 fn simple_bot(extra: &str) -> String {
     let script = concat!(env!("CARGO_MANIFEST_DIR"), "/../../tests/data/mjai/bots/simple_bot.py");
     format!("mjai:python3 {script} {extra}")
@@ -462,46 +501,20 @@ fn simple_bot(extra: &str) -> String {
 #[test]
 fn arena_seats_an_mjai_bot_and_reports_its_faults() {
     let bot = simple_bot("--dialect stdio");
-    let agents = format!("defensive,{bot},rule,greedy");
-    let v = json(&rinshan(&[
-        "arena",
-        "--agents",
-        &agents,
-        "--mjai-dialect",
-        "stdio",
-        "--games",
-        "4",
-        "--mode",
-        "east",
-        "--json",
-    ]));
+    let v = arena_json(&format!("defensive,{bot},rule,greedy"), "stdio", "east");
     assert_eq!(v["faults"], serde_json::json!([]));
-    let me = v["standings"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|s| s["agent"] == bot.as_str())
-        .unwrap();
+    let me = standing(&v, &bot);
     assert_eq!((me["games"].as_u64(), me["illegal"].as_u64()), (Some(4), Some(0)));
 
     let bot = simple_bot("--dialect app --mode garbage");
-    let agents = format!("defensive,{bot},rule,greedy");
-    let v = json(&rinshan(&[
-        "arena", "--agents", &agents, "--games", "4", "--mode", "east", "--json",
-    ]));
+    let v = arena_json(&format!("defensive,{bot},rule,greedy"), "app", "east");
     let faults = v["faults"].as_array().unwrap();
     assert_eq!(faults.len(), 4);
     assert!(
         faults[0]["message"].as_str().unwrap().contains("not JSON"),
         "{faults:?}"
     );
-    let me = v["standings"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|s| s["agent"] == bot.as_str())
-        .unwrap();
-    assert_eq!(me["ranks"], serde_json::json!([0, 0, 0, 4]));
+    assert_eq!(standing(&v, &bot)["ranks"], serde_json::json!([0, 0, 0, 4]));
 }
 
 #[test]
@@ -623,37 +636,16 @@ fn mjai_bot_answers_every_line_and_says_what_it_could_not_read() {
 #[test]
 fn mjai_bot_reactions_pass_libriichi() {
     // The `mjai` package of PyPI in its test virtualenv (see runtime/logs/tests/mjai_libriichi.rs).
-    let python = match std::env::var("RINSHAN_MJAI_PYTHON") {
-        Ok(p) if !p.is_empty() => p,
-        _ if std::env::var("CI").is_ok_and(|v| v == "true") => panic!("RINSHAN_MJAI_PYTHON is not set"),
-        _ => return eprintln!("RINSHAN_MJAI_PYTHON is not set: the libriichi check does not run here"),
-    };
+    let Some(python) = mjai_python() else { return };
     let script = concat!(env!("CARGO_MANIFEST_DIR"), "/../../tests/data/mjai/bots/checked_bot.py");
     let inner = format!(
         "{} mjai-bot --dialect stdio --agent defensive",
         env!("CARGO_BIN_EXE_rinshan")
     );
     let bot = format!("mjai:{python} {script} --inner '{inner}'");
-    let agents = format!("{bot},greedy,{bot},rule");
-    let v = json(&rinshan(&[
-        "arena",
-        "--agents",
-        &agents,
-        "--mjai-dialect",
-        "stdio",
-        "--games",
-        "4",
-        "--mode",
-        "half",
-        "--json",
-    ]));
+    let v = arena_json(&format!("{bot},greedy,{bot},rule"), "stdio", "half");
     assert_eq!(v["faults"], serde_json::json!([]));
-    let me = v["standings"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|s| s["agent"] == bot.as_str())
-        .unwrap();
+    let me = standing(&v, &bot);
     assert_eq!((me["games"].as_u64(), me["illegal"].as_u64()), (Some(8), Some(0)));
 }
 
@@ -661,11 +653,7 @@ fn mjai_bot_reactions_pass_libriichi() {
 fn mjai_logs_replay_in_riichienv_with_every_decision_legal_and_every_win_scored_alike() {
     // PyPI's riichienv in the test virtualenv (see runtime/logs/tests/mjai_libriichi.rs); the
     // check and RiichiEnv's replay quirks it corrects: tests/data/mjai/riichienv_check.py.
-    let python = match std::env::var("RINSHAN_MJAI_PYTHON") {
-        Ok(p) if !p.is_empty() => p,
-        _ if std::env::var("CI").is_ok_and(|v| v == "true") => panic!("RINSHAN_MJAI_PYTHON is not set"),
-        _ => return eprintln!("RINSHAN_MJAI_PYTHON is not set: the RiichiEnv check does not run here"),
-    };
+    let Some(python) = mjai_python() else { return };
     let dir = std::env::temp_dir().join(format!("rinshan-riichienv-{}", std::process::id()));
     let export = dir.to_string_lossy().to_string();
     let out = rinshan(&[

@@ -141,49 +141,16 @@ impl Live {
 /// `event` as MJAI seat `seat` sees it: others' starting hands and draws hidden, its own seat
 /// named in `start_game`.
 pub fn view(event: &Event, seat: u8) -> Event {
-    match event {
-        Event::StartGame {
-            names,
-            kyoku_first,
-            aka_flag,
-            rule,
-            ..
-        } => Event::StartGame {
-            names: names.clone(),
-            id: Some(seat),
-            kyoku_first: *kyoku_first,
-            aka_flag: *aka_flag,
-            rule: rule.clone(),
-        },
-        Event::StartKyoku {
-            bakaze,
-            dora_marker,
-            kyoku,
-            honba,
-            kyotaku,
-            oya,
-            scores,
-            tehais,
-        } => Event::StartKyoku {
-            bakaze: *bakaze,
-            dora_marker: *dora_marker,
-            kyoku: *kyoku,
-            honba: *honba,
-            kyotaku: *kyotaku,
-            oya: *oya,
-            scores: *scores,
-            tehais: std::array::from_fn(|s| {
-                if s == usize::from(seat) {
-                    tehais[s].clone()
-                } else {
-                    vec![Pai::HIDDEN; tehais[s].len()]
-                }
-            }),
-        },
-        Event::Tsumo { actor, .. } if *actor != seat => Event::Tsumo {
-            actor: *actor,
-            pai: Pai::HIDDEN,
-        },
-        other => other.clone(),
+    let mut seen = event.clone();
+    match &mut seen {
+        Event::StartGame { id, .. } => *id = Some(seat),
+        Event::StartKyoku { tehais, .. } => {
+            for (_, hand) in tehais.iter_mut().enumerate().filter(|(s, _)| *s != usize::from(seat)) {
+                *hand = vec![Pai::HIDDEN; hand.len()];
+            }
+        }
+        Event::Tsumo { actor, pai } if *actor != seat => *pai = Pai::HIDDEN,
+        _ => {}
     }
+    seen
 }
