@@ -122,3 +122,75 @@ fn a_bot_that_misbehaves_loses_that_game_by_the_penalty_and_is_reported() {
         }
     }
 }
+
+/// The `mjai_player` fuzz target's corpus (a seat's view of a game in either dialect, and
+/// garbage) through the player as the target drives it: an answer to every line in mjai.app's
+/// dialect, every answer an MJAI event, and in Mortal's a reaction at each of the seat's turns.
+#[test]
+fn the_player_answers_its_fuzz_corpus() {
+    use rinshan_engine::generated::kernel::{GameState, OBSERVE_CURRENT};
+    use rinshan_engine::generated::red as v;
+    use rinshan_logs::mjai::player::Player;
+    use rinshan_logs::mjai::Event;
+    let dir: PathBuf = [
+        env!("CARGO_MANIFEST_DIR"),
+        "..",
+        "..",
+        "tests",
+        "fuzz",
+        "corpus",
+        "mjai_player",
+    ]
+    .iter()
+    .collect();
+    let agent = Agent::Defensive.kernel();
+    let mut decide = |s: &GameState| {
+        Ok(v::agent_act(
+            agent,
+            v::observe_planes(*s, OBSERVE_CURRENT),
+            s.mask,
+            s.seed,
+            s.steps,
+        ))
+    };
+    for entry in std::fs::read_dir(&dir).expect("the corpus") {
+        let data = std::fs::read(entry.expect("an entry").path()).expect("a corpus file");
+        let (&first, rest) = data.split_first().expect("a dialect byte");
+        let dialect = if first & 1 == 0 { Dialect::App } else { Dialect::Stdio };
+        let seat = (first >> 1) % 5;
+        let mut player = Player::new((seat < 4).then_some(seat));
+        let (mut lines, mut replies, mut own_turns) = (0, 0, 0);
+        for line in String::from_utf8_lossy(rest).lines() {
+            lines += 1;
+            let value: Option<serde_json::Value> = serde_json::from_str(line).ok();
+            let own_tsumo = value.as_ref().is_some_and(|e| {
+                e["type"] == "tsumo" && e["actor"].as_u64() == player.seat().map(u64::from) && e["pai"] != "?"
+            });
+            own_turns += u32::from(own_tsumo && dialect == Dialect::Stdio);
+            if let Some(reply) = player.respond(line, dialect, &mut decide, &mut |_| {}) {
+                replies += 1;
+                let reply: Event = serde_json::from_str(&reply).expect("an MJAI event");
+                if own_tsumo {
+                    assert!(
+                        matches!(
+                            reply,
+                            Event::Dahai { .. }
+                                | Event::Reach { .. }
+                                | Event::Hora { .. }
+                                | Event::Ankan { .. }
+                                | Event::Kakan { .. }
+                        ),
+                        "{reply:?}"
+                    );
+                }
+            }
+        }
+        match dialect {
+            Dialect::App => assert_eq!(replies, lines),
+            Dialect::Stdio => assert!(
+                replies >= own_turns && own_turns > 0 || lines < 10,
+                "{replies} {own_turns}"
+            ),
+        }
+    }
+}

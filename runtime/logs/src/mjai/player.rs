@@ -198,7 +198,7 @@ impl Player {
                 let t = u8::from(c.kind());
                 let step = (a - k::ACTION_CHI_LEFT) / 2;
                 let red = (a - k::ACTION_CHI_LEFT) % 2 == 1;
-                let low = t - step as u8;
+                let low = t.checked_sub(step as u8).ok_or("chi off the suit")?;
                 let mut consumed = Vec::new();
                 for j in (low..low + 3).filter(|&j| j != t) {
                     let kind = TileType::try_from(j).map_err(|_| "chi off the suit")?;

@@ -15,7 +15,7 @@ use rinshan_engine::tile::{Tile, TileType};
 
 use super::event::Event;
 use super::reaction::action_of;
-use crate::tenhou::plan::wall::{DORA, LIVE_START, RINSHAN};
+use crate::tenhou::plan::wall::{DORA, LIVE_END, LIVE_START, RINSHAN};
 
 /// Copies of each tile value in the red rules' set (a red five is one of its suit's four fives).
 fn full_set() -> [u8; 37] {
@@ -276,6 +276,11 @@ pub fn rebuild(seat: u8, mode: u32, round: &[Event]) -> Result<Option<GameState>
                     live += 1;
                     LIVE_START + live - 1
                 };
+                if rinshan > 4 || LIVE_START + live > LIVE_END - rinshan {
+                    return Err(format!(
+                        "{live} draws and {rinshan} replacement draws: more than the wall holds"
+                    ));
+                }
                 if let Some(t) = pai.0 {
                     w.set(pos, t)?;
                 } else if q == me {
