@@ -194,3 +194,17 @@ fn the_player_answers_its_fuzz_corpus() {
         }
     }
 }
+
+#[test]
+fn a_seat_that_cannot_follow_its_game_is_one_fault_per_game() {
+    // A one-hand game has no MJAI form (the recorder follows east and half games): each game
+    // reports it once, at the bot's first decision, and ends with the penalty.
+    let report = play(&bot(Dialect::Stdio, "play"), Mode::Single, 1);
+    assert_eq!(report.faults.len(), 4, "{:?}", report.faults);
+    assert!(
+        report.faults.iter().all(|f| f.message.contains("one-hand game")),
+        "{:?}",
+        report.faults
+    );
+    assert_eq!(standing(&report, "bot").illegal, 4);
+}

@@ -14,7 +14,8 @@ use super::event::Event;
 use super::live::{view, Live};
 use super::reaction::action_of;
 
-/// Runs `spec`'s bot in each game it joins.
+/// Runs `spec`'s bot in each game it joins: games of the red rules, east or half (what MJAI
+/// and the log recorder describe; `rinshan arena` and `selfplay` check it before they start).
 #[derive(Debug, Clone)]
 pub struct MjaiEntrant {
     /// The bot.
@@ -106,8 +107,14 @@ impl Seat for MjaiSeat {
     }
 
     fn stepped(&mut self, before: &GameState, action: u32, after: &GameState) -> Result<(), String> {
-        let live = self.live.as_mut().map_err(|e| e.clone())?;
-        live.step(before, action, after)?;
+        // A seat that cannot follow its game says why once, at its next decision.
+        let (Ok(live), None) = (self.live.as_mut(), &self.broken) else {
+            return Ok(());
+        };
+        if let Err(e) = live.step(before, action, after) {
+            self.broken = Some(e.clone());
+            return Err(e);
+        }
         // Round and game ends are acknowledged as they come (App), or sent at once (Stdio: a
         // bot that is never asked again still hears how its game ended).
         let sent = self.sent.min(live.events().len());
@@ -116,8 +123,8 @@ impl Seat for MjaiSeat {
             .rposition(|e| matches!(e, Event::EndKyoku {} | Event::EndGame { .. }))
             .map(|i| sent + i + 1);
         match ends {
-            Some(end) if self.broken.is_none() => self.acknowledge(end).map_or(Ok(()), Err),
-            _ => Ok(()),
+            Some(end) => self.acknowledge(end).map_or(Ok(()), Err),
+            None => Ok(()),
         }
     }
 }
