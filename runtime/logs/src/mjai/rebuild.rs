@@ -74,6 +74,7 @@ impl Wall {
 
 /// A complete hand of `sets` sets and a pair from the kinds `pool`, kinds at or after `from`,
 /// with exactly one tile not from the pool (the wait); the pool tiles used go to `out`.
+#[allow(clippy::too_many_arguments)]
 fn complete(
     pool: &mut [u8; 34],
     avoid: &[bool; 34],
@@ -82,7 +83,14 @@ fn complete(
     pair: bool,
     joker: bool,
     out: &mut Vec<u8>,
+    budget: &mut u32,
 ) -> bool {
+    // The search is depth first over few sets; a pool with no shape could make it long, so it
+    // gives up after a fixed number of steps (the seat's state is then not rebuilt).
+    *budget = match budget.checked_sub(1) {
+        Some(b) => b,
+        None => return false,
+    };
     if sets == 0 && !pair {
         // The wait (the joker, marked by 100 + its kind) must not be a fifth copy of a kind the
         // hand holds four of: the engine does not count that as tenpai.
@@ -132,7 +140,7 @@ fn complete(
                 out.extend(used.iter().map(|&t| t as u8));
                 out.extend(joker_at.map(|i| 100 + tiles[i] as u8));
                 let (s, p) = if is_pair { (sets, false) } else { (sets - 1, pair) };
-                if complete(pool, avoid, k, s, p, joker && joker_at.is_none(), out) {
+                if complete(pool, avoid, k, s, p, joker && joker_at.is_none(), out, budget) {
                     return true;
                 }
                 out.truncate(mark);
@@ -171,7 +179,7 @@ fn tenpai_shape(n: usize, known: &[Tile], left: &mut [u8; 37]) -> Option<Vec<Til
         }
     }
     let mut kinds = Vec::new();
-    let found = complete(&mut pool, &avoid, 0, wait_n / 3, true, true, &mut kinds)
+    let found = complete(&mut pool, &avoid, 0, wait_n / 3, true, true, &mut kinds, &mut 100_000)
         // Seven pairs, one of them waited on.
         || (wait_n == 13 && {
             kinds.clear();
@@ -460,4 +468,49 @@ fn pass_claims(s: &mut GameState, until: Option<u8>) -> Result<(), String> {
         return Err("the round ended while replaying it".into());
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn kinds(tiles: &[Tile]) -> Vec<usize> {
+        let mut k: Vec<usize> = tiles.iter().map(|t| t.kind().index()).collect();
+        k.sort();
+        k
+    }
+
+    #[test]
+    fn a_tenpai_shape_is_tenpai_and_leaves_the_kan_alone() {
+        let mut left = full_set();
+        let kan = Tile::plain(TileType::try_from(4).unwrap()); // 5m
+        let shape = tenpai_shape(10, &[kan, kan, kan], &mut left).expect("a shape");
+        assert_eq!(shape.len(), 10);
+        // Nothing within two of the kan's 5m: 3m..7m.
+        assert!(kinds(&shape).iter().all(|&k| !(2..=6).contains(&k)), "{shape:?}");
+        let hand: Vec<u8> = shape
+            .iter()
+            .chain([kan; 3].iter())
+            .map(|t| t.kind().index() as u8)
+            .collect();
+        let mut counts = [0u8; 34];
+        for k in hand {
+            counts[usize::from(k)] += 1;
+        }
+        assert_eq!(rinshan_engine::hand::shanten(&counts).shanten, 0, "tenpai: {shape:?}");
+        // The tiles came out of the unseen ones.
+        assert_eq!(left.iter().map(|&c| u32::from(c)).sum::<u32>(), 136 - 10);
+    }
+
+    #[test]
+    fn no_shape_in_a_pool_without_one_is_refused_quickly() {
+        // 13 tiles, no two of a kind and none within two of another of its suit: no tenpai hand.
+        let mut left = [0u8; 37];
+        for v in [0, 3, 6, 9, 12, 15, 18, 21, 24, 27, 28, 29, 30] {
+            left[v] = 1;
+        }
+        let started = std::time::Instant::now();
+        assert_eq!(tenpai_shape(13, &[], &mut left), None);
+        assert!(started.elapsed() < std::time::Duration::from_secs(5));
+    }
 }
