@@ -6,8 +6,7 @@
 use std::io::{BufRead, Write};
 
 use rinshan_engine::agents::Agent;
-use rinshan_engine::generated::kernel::OBSERVE_CURRENT;
-use rinshan_engine::generated::red as v;
+use rinshan_engine::Variant;
 use rinshan_logs::mjai::bot::Dialect;
 use rinshan_logs::mjai::player::Player;
 
@@ -32,16 +31,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
         return Err(CliError::input("the seat is 0, 1, 2 or 3"));
     }
     let mut player = Player::new(args.seat);
-    let agent = args.agent.kernel();
-    let mut decide = |s: &rinshan_engine::generated::kernel::GameState| {
-        Ok(v::agent_act(
-            agent,
-            v::observe_planes(*s, OBSERVE_CURRENT),
-            s.mask,
-            s.seed,
-            s.steps,
-        ))
-    };
+    let mut decide = |s: &rinshan_engine::generated::kernel::GameState| Ok(args.agent.act(Variant::Red, s));
     let mut log = |message: String| eprintln!("rinshan mjai-bot: {message}");
     let stdin = std::io::stdin();
     let mut stdout = std::io::stdout().lock();

@@ -45,6 +45,13 @@ impl Agent {
             Agent::Defensive => k::AGENT_DEFENSIVE,
         }
     }
+
+    /// The action this agent plays for the player to move in `state`, a game of `variant`'s
+    /// rules (the kernel's `game_agent_action`), for hosts that hold one state rather than an env.
+    pub fn act(self, variant: crate::Variant, state: &k::GameState) -> u32 {
+        let seats = seats_word(&[Some(self); 4]);
+        with_variant!(variant, v => v::game_agent_action(*state, seats))
+    }
 }
 
 impl std::fmt::Display for Agent {

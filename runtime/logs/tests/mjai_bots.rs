@@ -128,8 +128,7 @@ fn a_bot_that_misbehaves_loses_that_game_by_the_penalty_and_is_reported() {
 /// dialect, every answer an MJAI event, and in Mortal's a reaction at each of the seat's turns.
 #[test]
 fn the_player_answers_its_fuzz_corpus() {
-    use rinshan_engine::generated::kernel::{GameState, OBSERVE_CURRENT};
-    use rinshan_engine::generated::red as v;
+    use rinshan_engine::generated::kernel::GameState;
     use rinshan_logs::mjai::player::Player;
     use rinshan_logs::mjai::Event;
     let dir: PathBuf = [
@@ -143,16 +142,7 @@ fn the_player_answers_its_fuzz_corpus() {
     ]
     .iter()
     .collect();
-    let agent = Agent::Defensive.kernel();
-    let mut decide = |s: &GameState| {
-        Ok(v::agent_act(
-            agent,
-            v::observe_planes(*s, OBSERVE_CURRENT),
-            s.mask,
-            s.seed,
-            s.steps,
-        ))
-    };
+    let mut decide = |s: &GameState| Ok(Agent::Defensive.act(Variant::Red, s));
     for entry in std::fs::read_dir(&dir).expect("the corpus") {
         let data = std::fs::read(entry.expect("an entry").path()).expect("a corpus file");
         let (&first, rest) = data.split_first().expect("a dialect byte");

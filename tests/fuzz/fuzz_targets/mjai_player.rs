@@ -7,8 +7,8 @@
 
 use libfuzzer_sys::fuzz_target;
 use rinshan_engine::agents::Agent;
-use rinshan_engine::generated::kernel::{GameState, OBSERVE_CURRENT};
-use rinshan_engine::generated::red as v;
+use rinshan_engine::generated::kernel::GameState;
+use rinshan_engine::Variant;
 use rinshan_logs::mjai::bot::Dialect;
 use rinshan_logs::mjai::player::Player;
 use rinshan_logs::mjai::Event;
@@ -20,16 +20,7 @@ fuzz_target!(|data: &[u8]| {
     let dialect = if first & 1 == 0 { Dialect::App } else { Dialect::Stdio };
     let seat = (first >> 1) % 5;
     let mut player = Player::new((seat < 4).then_some(seat));
-    let agent = Agent::Defensive.kernel();
-    let mut decide = |s: &GameState| {
-        Ok(v::agent_act(
-            agent,
-            v::observe_planes(*s, OBSERVE_CURRENT),
-            s.mask,
-            s.seed,
-            s.steps,
-        ))
-    };
+    let mut decide = |s: &GameState| Ok(Agent::Defensive.act(Variant::Red, s));
     for line in String::from_utf8_lossy(rest).lines().take(400) {
         let reply = player.respond(line, dialect, &mut decide, &mut |_| {});
         if let Some(reply) = reply {

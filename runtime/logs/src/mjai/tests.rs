@@ -313,8 +313,7 @@ fn live_games(games: u64, check_each_step: impl Fn(&Live, &GameState)) -> Vec<Li
             while s.terminated == 0 {
                 check_each_step(&live, &s);
                 let agent = agents[(s.current as usize + g as usize) % 4];
-                let planes = v::observe_planes(s, kernel::OBSERVE_CURRENT);
-                let a = v::agent_act(agent.kernel(), planes, s.mask, s.seed, s.steps);
+                let a = agent.act(rinshan_engine::Variant::Red, &s);
                 let before = s;
                 v::game_step(&mut s, a);
                 live.step(&before, a, &s).unwrap_or_else(|e| panic!("game {g}: {e}"));
