@@ -12,7 +12,8 @@ fn tile(p: &Pai, what: &str) -> Result<Tile, String> {
     p.0.ok_or_else(|| format!("the {what} tile is `?`"))
 }
 
-fn legal(s: &GameState, a: u32) -> bool {
+/// Action `a` is legal in `s`.
+pub(super) fn legal(s: &GameState, a: u32) -> bool {
     a < k::ACTION_DUMMY && s.mask[(a / 32) as usize] >> (a % 32) & 1 == 1
 }
 

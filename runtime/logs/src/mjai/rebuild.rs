@@ -14,18 +14,8 @@ use rinshan_engine::generated::red as v;
 use rinshan_engine::tile::{Tile, TileType};
 
 use super::event::Event;
-use super::reaction::action_of;
-use crate::tenhou::plan::wall::{DORA, LIVE_END, LIVE_START, RINSHAN};
-
-/// Copies of each tile value in the red rules' set (a red five is one of its suit's four fives).
-fn full_set() -> [u8; 37] {
-    let mut left = [4u8; 37];
-    for suit in 0..3 {
-        left[suit * 9 + 4] = 3;
-        left[34 + suit] = 1;
-    }
-    left
-}
+use super::reaction::{action_of, legal};
+use crate::tenhou::plan::wall::{tile_set, DORA, LIVE_END, LIVE_START, RINSHAN};
 
 struct Wall {
     slots: [Option<Tile>; 136],
@@ -351,7 +341,7 @@ pub fn rebuild(seat: u8, mode: u32, round: &[Event]) -> Result<Option<GameState>
     for q in (0..4).filter(|&q| declared[q]) {
         w.riichi_hands.push(w.hands[q].clone());
     }
-    let mut left = full_set();
+    let mut left = tile_set();
     for t in w.slots.iter().flatten() {
         let v = usize::from(t.value());
         left[v] = left[v]
@@ -459,7 +449,7 @@ fn play(
 /// In a claim window, every seat asked before `until` passes (the next event says they did).
 fn pass_claims(s: &mut GameState, until: Option<u8>) -> Result<(), String> {
     while s.phase == PHASE_CLAIM && until.map(u32::from) != Some(s.current) && s.terminated == 0 {
-        if s.mask[(v::ACTION_PASS / 32) as usize] >> (v::ACTION_PASS % 32) & 1 == 0 {
+        if !legal(s, v::ACTION_PASS) {
             return Err(format!("seat {} cannot pass here", s.current));
         }
         v::game_step(s, v::ACTION_PASS);
@@ -482,7 +472,7 @@ mod tests {
 
     #[test]
     fn a_tenpai_shape_is_tenpai_and_leaves_the_kan_alone() {
-        let mut left = full_set();
+        let mut left = tile_set();
         let kan = Tile::plain(TileType::try_from(4).unwrap()); // 5m
         let shape = tenpai_shape(10, &[kan, kan, kan], &mut left).expect("a shape");
         assert_eq!(shape.len(), 10);

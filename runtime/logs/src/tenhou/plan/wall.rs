@@ -11,6 +11,17 @@ pub(crate) const DORA: usize = kernel::WALL_DORA as usize;
 pub(crate) const URA: usize = kernel::WALL_URA as usize;
 pub(crate) const RINSHAN: usize = kernel::WALL_RINSHAN as usize;
 
+/// Copies of each tile value in the red rules' set: four of each type, one of them red for the
+/// fives of the three suits.
+pub(crate) fn tile_set() -> [u8; 37] {
+    let mut left = [4u8; 37];
+    for suit in 0..3 {
+        left[suit * 9 + 4] = 3;
+        left[34 + suit] = 1;
+    }
+    left
+}
+
 /// Places the logged tiles where the engine reads them and fills the rest with the unused tiles.
 pub(super) fn build_wall(round: &Round, live: &[Tile], rinshan: &[Tile]) -> Result<[Tile; 136], String> {
     if rinshan.len() > 4 || round.dora.len() > 5 || round.ura.len() > 5 {
@@ -48,24 +59,18 @@ pub(super) fn build_wall(round: &Round, live: &[Tile], rinshan: &[Tile]) -> Resu
             slots[start + i] = Some(*t);
         }
     }
-    // Every value's copies: four of each type, one of them red for the fives of the three suits.
-    let mut left = [4i32; 37];
-    for suit in 0..3 {
-        left[suit * 9 + 4] = 3;
-        left[34 + suit] = 1;
-    }
+    let mut left = tile_set();
     for t in slots.iter().flatten() {
         let v = usize::from(t.value());
-        left[v] -= 1;
-        if left[v] < 0 {
-            return Err(format!(
+        left[v] = left[v].checked_sub(1).ok_or_else(|| {
+            format!(
                 "tile {} appears more often than the set holds (hands, draws and indicators together)",
                 t.name()
-            ));
-        }
+            )
+        })?;
     }
     let mut spare = (0..37u8)
-        .flat_map(|v| std::iter::repeat_n(v, left[usize::from(v)].max(0) as usize))
+        .flat_map(|v| std::iter::repeat_n(v, usize::from(left[usize::from(v)])))
         .filter_map(Tile::from_value);
     let wall = slots
         .iter()
