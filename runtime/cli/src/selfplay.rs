@@ -170,7 +170,8 @@ struct Bots {
     entrants: [Option<MjaiEntrant>; 4],
     /// Per env and seat, the bot playing it in the current game.
     seats: Vec<[Option<MjaiSeat>; 4]>,
-    faults: Vec<String>,
+    /// Each env's state now: after a step it is the state before the next one.
+    states: Vec<GameState>,
 }
 
 impl Bots {
@@ -179,13 +180,13 @@ impl Bots {
         std::array::from_fn(|p| entrants[(p + i) % 4].as_ref().map(|e| e.start(p as u32, state)))
     }
 
-    /// Replaces the actions of the envs whose current player is a bot by the bot's.
-    fn act(&mut self, states: &[GameState], actions: &mut [u32]) {
-        let faults: Vec<String> = self
-            .seats
+    /// Replaces the actions of the envs whose current player is a bot by the bot's; returns
+    /// the bots' faults.
+    fn act(&mut self, actions: &mut [u32]) -> Vec<String> {
+        self.seats
             .par_iter_mut()
             .zip(actions.par_iter_mut())
-            .zip(states.par_iter())
+            .zip(self.states.par_iter())
             .enumerate()
             .filter_map(|(i, ((seats, a), s))| {
                 // A finished game's state asks nothing (with auto-reset, `terminated` marks the
@@ -200,14 +201,14 @@ impl Bots {
                 }
                 None
             })
-            .collect();
-        self.faults.extend(faults);
+            .collect()
     }
 
-    /// Tells every bot the step each env took; a finished game's bots give way to the next's.
-    fn stepped(&mut self, before: &[GameState], actions: &[u32], after: &[GameState], ended: &[bool]) {
-        let entrants = &self.entrants;
-        let faults: Vec<String> = self
+    /// Tells every bot the step each env took to `after`; a finished game's bots give way to
+    /// the next's. Returns the bots' faults.
+    fn stepped(&mut self, actions: &[u32], after: Vec<GameState>, ended: &[bool]) -> Vec<String> {
+        let (entrants, before) = (&self.entrants, &self.states);
+        let faults = self
             .seats
             .par_iter_mut()
             .enumerate()
@@ -224,7 +225,8 @@ impl Bots {
                 out
             })
             .collect();
-        self.faults.extend(faults);
+        self.states = after;
+        faults
     }
 }
 
@@ -313,7 +315,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
                     .map(|(i, s)| Bots::join(&entrants, i, s))
                     .collect(),
                 entrants,
-                faults: Vec::new(),
+                states,
             })
         }
         false => None,
@@ -328,22 +330,18 @@ pub fn run(args: Args) -> Result<(), CliError> {
                 }
             }
         }
-        let before = match &mut bots {
-            Some(bots) => {
-                let states = env.game_states().map_err(CliError::failure)?;
-                bots.act(&states, &mut actions);
-                states
-            }
+        let mut bot_faults = match &mut bots {
+            Some(bots) => bots.act(&mut actions),
             None => Vec::new(),
         };
         env.step(&actions).map_err(CliError::failure)?;
         if let Some(bots) = &mut bots {
             let after = env.game_states().map_err(CliError::failure)?;
-            bots.stepped(&before, &actions, &after, &env.last().terminated);
-            for fault in bots.faults.drain(..) {
-                eprintln!("rinshan selfplay: {fault}");
-                faults += 1;
-            }
+            bot_faults.extend(bots.stepped(&actions, after, &env.last().terminated));
+        }
+        for fault in bot_faults {
+            eprintln!("rinshan selfplay: {fault}");
+            faults += 1;
         }
         let mut recorded = match &mut recorder {
             Some(r) => {
