@@ -15,12 +15,18 @@ use rinshan_serve::{app, Limits};
 use serde_json::{json, Value};
 use tower::ServiceExt;
 
-async fn send(app: &Router, method: Method, uri: &str, body: Option<&str>, json_type: bool) -> (StatusCode, String) {
+pub(crate) async fn send(
+    app: &Router,
+    method: Method,
+    uri: &str,
+    body: Option<&str>,
+    json_type: bool,
+) -> (StatusCode, String) {
     send_from(app, "127.0.0.1:1", method, uri, body, json_type).await
 }
 
 /// As [`send`], from the client at `from` (what the listener tells the app).
-async fn send_from(
+pub(crate) async fn send_from(
     app: &Router,
     from: &str,
     method: Method,
@@ -42,26 +48,26 @@ async fn send_from(
     (status, String::from_utf8_lossy(&bytes).into_owned())
 }
 
-async fn get(app: &Router, uri: &str) -> (StatusCode, String) {
+pub(crate) async fn get(app: &Router, uri: &str) -> (StatusCode, String) {
     send(app, Method::GET, uri, None, false).await
 }
 
-async fn post(app: &Router, uri: &str, body: &Value) -> (StatusCode, String) {
+pub(crate) async fn post(app: &Router, uri: &str, body: &Value) -> (StatusCode, String) {
     send(app, Method::POST, uri, Some(&body.to_string()), true).await
 }
 
-fn parsed(body: &str) -> Value {
+pub(crate) fn parsed(body: &str) -> Value {
     serde_json::from_str(body).unwrap_or_else(|e| panic!("JSON ({e}): {body}"))
 }
 
-async fn new_game(app: &Router, body: Value) -> Value {
+pub(crate) async fn new_game(app: &Router, body: Value) -> Value {
     let (status, text) = post(app, "/api/games", &body).await;
     assert_eq!(status, StatusCode::CREATED, "{text}");
     parsed(&text)
 }
 
 /// Waits until the agents have moved up to a state the test acts on.
-async fn settled(app: &Router, id: &str) -> Value {
+pub(crate) async fn settled(app: &Router, id: &str) -> Value {
     for _ in 0..2000 {
         let (status, text) = get(app, &format!("/api/games/{id}?board=0")).await;
         assert_eq!(status, StatusCode::OK, "{text}");

@@ -18,6 +18,7 @@ mod rules_as_data;
 mod scenarios;
 mod scoring_cases;
 mod serve_http;
+mod serve_mjai;
 mod shanten_data;
 mod soak;
 mod tenhou_replay;

@@ -4,8 +4,9 @@ use std::net::SocketAddr;
 use std::path::PathBuf;
 use std::time::Duration;
 
-use rinshan_serve::Limits;
+use rinshan_serve::{Limits, NamedBot};
 
+use crate::args::MjaiArgs;
 use crate::error::CliError;
 
 #[derive(clap::Args)]
@@ -44,6 +45,37 @@ pub struct Args {
     /// Keep no finished games
     #[arg(long)]
     no_data_dir: bool,
+    /// An MJAI bot the page offers as an opponent, `NAME=COMMAND` (repeatable): each seat it
+    /// takes runs `sh -c "COMMAND SEAT"`; visitors choose it by NAME, never give a command
+    #[arg(long = "mjai-bot", value_name = "NAME=COMMAND")]
+    mjai_bots: Vec<String>,
+    #[command(flatten)]
+    mjai: MjaiArgs,
+}
+
+/// The bots of `--mjai-bot`, each `NAME=COMMAND`.
+fn bots(args: &Args) -> Result<Vec<NamedBot>, CliError> {
+    let mut out: Vec<NamedBot> = Vec::new();
+    for given in &args.mjai_bots {
+        let (name, command) = given
+            .split_once('=')
+            .map(|(n, c)| (n.trim(), c.trim()))
+            .filter(|(n, c)| !n.is_empty() && !c.is_empty())
+            .ok_or_else(|| CliError::input(format!("--mjai-bot {given:?}: give NAME=COMMAND")))?;
+        if !name.chars().all(|c| c.is_ascii_alphanumeric() || "-_.".contains(c)) {
+            return Err(CliError::input(format!(
+                "--mjai-bot {given:?}: a bot's name is letters, digits, `-`, `_` and `.`"
+            )));
+        }
+        if out.iter().any(|b| b.name == name) {
+            return Err(CliError::input(format!("--mjai-bot: two bots are named `{name}`")));
+        }
+        out.push(NamedBot {
+            name: name.to_string(),
+            spec: args.mjai.entrant(command)?.spec,
+        });
+    }
+    Ok(out)
 }
 
 pub fn run(args: Args) -> Result<(), CliError> {
@@ -59,6 +91,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
     if let Some((name, _)) = counts.iter().find(|(_, n)| *n == 0) {
         return Err(CliError::input(format!("{name} must be at least 1")));
     }
+    let bots = bots(&args)?;
     let data_dir = match (args.no_data_dir, args.data_dir) {
         (true, _) => None,
         (false, Some(dir)) => Some(dir),
@@ -75,7 +108,11 @@ pub fn run(args: Args) -> Result<(), CliError> {
         header_timeout: Duration::from_secs(args.header_timeout_seconds),
         data_dir,
         fixed_seed: None,
+        bots,
     };
+    for b in &limits.bots {
+        println!("MJAI bot `{}` offered as mjai:{}: {}", b.name, b.name, b.spec.command);
+    }
     match &limits.data_dir {
         Some(dir) => println!("finished games are kept in {}", dir.join("games").display()),
         None => println!("finished games are not kept (no data directory)"),

@@ -549,6 +549,23 @@ fn arena_refuses_bad_mjai_seats() {
     }
 }
 
+#[test]
+fn serve_refuses_bad_mjai_bots() {
+    // Refused before the server listens: nothing starts.
+    for (args, says) in [
+        (vec!["--mjai-bot", "nocommand"], "give NAME=COMMAND"),
+        (vec!["--mjai-bot", "=x"], "give NAME=COMMAND"),
+        (vec!["--mjai-bot", "a b=x"], "a bot's name is letters"),
+        (vec!["--mjai-bot", "a=x", "--mjai-bot", "a=y"], "two bots are named `a`"),
+        (vec!["--mjai-bot", "a=x", "--mjai-timeout", "0"], "--mjai-timeout 0"),
+    ] {
+        let out = rinshan(&[&["serve", "--no-data-dir", "--port", "0"], args.as_slice()].concat());
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(says), "{args:?}: {err}");
+    }
+}
+
 /// The arena's report without the names: standings by average rank, then the faults.
 fn standings_of(v: &serde_json::Value) -> Vec<serde_json::Value> {
     v["standings"]

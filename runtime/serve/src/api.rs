@@ -18,7 +18,7 @@ use serde_json::{json, Value};
 
 use super::extract::{ApiError, Client, Json, Path, Query, Text};
 use super::pages;
-use super::session::{Refusal, Session, Setup};
+use super::session::{Opponent, Refusal, Session, Setup};
 use super::store::{Limits, Refused, Store};
 use rinshan_engine::agents::Agent;
 use rinshan_engine::env::Mode;
@@ -74,9 +74,12 @@ pub(super) fn app_with_store(limits: Limits) -> (Router, Store) {
     (router, store)
 }
 
-async fn agents() -> axum::Json<Value> {
+/// `GET /api/agents`: what a new game may choose; the server's MJAI bots are agents named
+/// `mjai:NAME`.
+async fn agents(State(store): State<Store>) -> axum::Json<Value> {
+    let bots = store.limits().bots.iter().map(|b| format!("{MJAI}{}", b.name));
     axum::Json(json!({
-        "agents": Agent::ALL.iter().map(|a| a.name()).collect::<Vec<_>>(),
+        "agents": Agent::ALL.iter().map(|a| a.name().to_string()).chain(bots).collect::<Vec<_>>(),
         "variants": Variant::ALL.iter().map(|v| v.to_string()).collect::<Vec<_>>(),
         "modes": Mode::ALL.iter().map(|m| m.name()).collect::<Vec<_>>(),
         "tiles": TileMode::ALL.iter().map(|m| m.name()).collect::<Vec<_>>(),
@@ -93,7 +96,8 @@ struct NewGame {
     mode: String,
     /// The person's seat; absent or null: four agents (spectating).
     seat: Option<u32>,
-    /// Three agents (the other seats in seat order) with a seat, four without.
+    /// Three agents (the other seats in seat order) with a seat, four without: built-in ones by
+    /// name, the server's MJAI bots as `mjai:NAME`.
     agents: Vec<String>,
     /// A spectated game's seed, as a string (a JavaScript number loses digits above 2^53); a game
     /// with a person takes none: the server draws it from the OS.
@@ -138,10 +142,28 @@ fn seed_of(g: &NewGame, limits: &Limits) -> Result<u64, ApiError> {
     }
 }
 
+/// How a new game names one of the server's MJAI bots among its agents.
+const MJAI: &str = "mjai:";
+
+/// A new game's agent: a built-in one by name, or a bot the server offers as `mjai:NAME`.
+fn opponent(name: &str, limits: &Limits) -> Result<Opponent, ApiError> {
+    let Some(bot) = name.strip_prefix(MJAI) else {
+        return parse("agent", name).map(Opponent::Agent);
+    };
+    if let Some(b) = limits.bots.iter().find(|b| b.name == bot) {
+        return Ok(Opponent::Bot(b.clone()));
+    }
+    let offered: Vec<&str> = limits.bots.iter().map(|b| b.name.as_str()).collect();
+    Err(unprocessable(match offered.is_empty() {
+        true => format!("no MJAI bot `{bot}`: this server offers none (rinshan serve --mjai-bot NAME=COMMAND)"),
+        false => format!("no MJAI bot `{bot}`: this server offers {}", offered.join(", ")),
+    }))
+}
+
 fn setup(g: NewGame, limits: &Limits) -> Result<Setup, ApiError> {
     let variant: Variant = parse("variant", &g.variant)?;
     let mode: Mode = parse("mode", &g.mode)?;
-    let agents: Vec<Agent> = g.agents.iter().map(|a| parse("agent", a)).collect::<Result<_, _>>()?;
+    let agents: Vec<Opponent> = g.agents.iter().map(|a| opponent(a, limits)).collect::<Result<_, _>>()?;
     let want = if g.seat.is_some() { 3 } else { 4 };
     if agents.len() != want {
         return Err(unprocessable(format!(
@@ -154,7 +176,7 @@ fn setup(g: NewGame, limits: &Limits) -> Result<Setup, ApiError> {
             }
         )));
     }
-    let mut seats = [None; 4];
+    let mut seats: [Option<Opponent>; 4] = Default::default();
     let mut rest = agents.into_iter();
     for (p, s) in seats.iter_mut().enumerate() {
         match g.seat {

@@ -1,5 +1,5 @@
-//! rinshan-serve, behind `rinshan serve`: a web page to play against the built-in agents, watch
-//! four of them, or replay a log (axum on hyper and tokio). Every game is a [`session::Session`]
+//! rinshan-serve, behind `rinshan serve`: a web page to play against the built-in agents and the
+//! operator's MJAI bots, watch four of them, or replay a log (axum on hyper and tokio). Every game is a [`session::Session`]
 //! behind a lock; a driver task per game plays the agents' moves after the chosen delay and
 //! announces each change over server-sent events. The store bounds the games it keeps (in all and
 //! per client, idle time and total time) and the event streams per client; the listener bounds
@@ -15,6 +15,7 @@
 
 mod api;
 mod archive;
+pub mod bots;
 mod extract;
 mod pages;
 pub mod session;
@@ -32,6 +33,7 @@ use tower::ServiceExt as _;
 
 pub use api::app;
 pub use archive::{Archive, Saved};
+pub use bots::NamedBot;
 pub use store::Limits;
 
 /// Serves the page on `addr` until the process ends; prints the address it listens on.

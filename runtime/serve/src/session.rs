@@ -1,6 +1,8 @@
 //! One game on the web page: an env of one game, who plays each seat, the counter that makes a
 //! repeated click stale, and the picture of a round's end held until the player moves on. Pure
-//! and synchronous: the HTTP layer locks it, the driver task calls [`Session::agent_move`].
+//! and synchronous: the HTTP layer locks it, the driver task calls [`Session::agent_move`] for the
+//! built-in agents and hands the MJAI bots their work ([`Session::bot_work`], done off the lock,
+//! and [`Session::bot_done`]).
 
 use std::time::{Duration, Instant};
 
@@ -8,11 +10,32 @@ use bytemuck::Zeroable as _;
 use serde::Serialize;
 
 use rinshan_engine::agents::Agent;
+use rinshan_engine::arena::refused_action;
 use rinshan_engine::env::{events as ev, Config, Env, Mode};
 use rinshan_engine::generated::kernel::{self, GameState};
 use rinshan_engine::{Tile, Variant};
 use rinshan_logs::tenhou::write::Recorder;
 use rinshan_render::{Board, Options, RoundEndInput, TileMode};
+
+use super::bots::{Ask, Bots, Done, NamedBot, Stepped, Work};
+
+/// Who plays a seat that is not the person's.
+#[derive(Debug, Clone)]
+pub enum Opponent {
+    /// A built-in agent, played at once.
+    Agent(Agent),
+    /// One of the server's MJAI bots.
+    Bot(NamedBot),
+}
+
+impl std::fmt::Display for Opponent {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Opponent::Agent(a) => write!(f, "{a}"),
+            Opponent::Bot(b) => f.write_str(&b.name),
+        }
+    }
+}
 
 /// What a new game is: who sits where, and how fast the agents move.
 #[derive(Debug, Clone)]
@@ -21,8 +44,8 @@ pub struct Setup {
     pub variant: Variant,
     /// The game's length.
     pub mode: Mode,
-    /// Each seat's agent; `None` = the person (at most one seat; none = spectating).
-    pub seats: [Option<Agent>; 4],
+    /// Who plays each seat; `None` = the person (at most one seat; none = spectating).
+    pub seats: [Option<Opponent>; 4],
     /// Seeds the walls.
     pub seed: u64,
     /// Pause before each agent's turn (its calls are decided at once: who may call is hidden);
@@ -84,6 +107,10 @@ pub struct Session {
     pass: u32,
     /// When a client's request last touched the game (the agents' moves do not count).
     pub touched: Instant,
+    /// The game's MJAI bots, while they are here (not at work, and the game has some).
+    bots: Option<Bots>,
+    /// Steps the bots have not heard yet.
+    untold: Vec<Stepped>,
 }
 
 fn err(e: impl std::fmt::Display) -> String {
@@ -104,11 +131,28 @@ impl Session {
         })
         .map_err(err)?;
         env.reset().map_err(err)?;
+        let bot_seats = setup.seats.clone().map(|s| match s {
+            Some(Opponent::Bot(b)) => Some(b),
+            _ => None,
+        });
+        if bot_seats.iter().any(Option::is_some) && (setup.variant != Variant::Red || setup.mode == Mode::Single) {
+            return Err("MJAI bots play the red rules in east or half games".into());
+        }
+        let bots = match bot_seats.iter().any(Option::is_some) {
+            true => Some(Bots::new(
+                std::array::from_fn(|p| bot_seats[p].as_ref()),
+                env.game_states().map_err(err)?.pop().ok_or("the env holds no game")?,
+            )),
+            false => None,
+        };
         // Tenhou logs exist for red-rule east and half games only.
         let logged = setup.variant == Variant::Red && setup.mode != Mode::Single;
         let recorder = logged.then(|| Recorder::new(&env)).transpose().map_err(err)?;
-        let names: [String; 4] =
-            std::array::from_fn(|p| setup.seats[p].map_or_else(|| "You".to_string(), |a| format!("{a} {p}")));
+        let names: [String; 4] = std::array::from_fn(|p| {
+            setup.seats[p]
+                .as_ref()
+                .map_or_else(|| "You".to_string(), |a| format!("{a} {p}"))
+        });
         let pass = rinshan_engine::env::action_names(setup.variant)
             .iter()
             .position(|n| n == "pass")
@@ -125,6 +169,8 @@ impl Session {
             told: 0,
             pass,
             touched: Instant::now(),
+            bots,
+            untold: Vec::new(),
         };
         if let Some(r) = &mut s.recorder {
             r.set_names(s.names.clone());
@@ -169,7 +215,21 @@ impl Session {
     pub fn board(&self) -> Result<Board, String> {
         let mut board = match &self.ended {
             Some(b) => b.clone(),
-            None => Board::from_state(&self.state()?),
+            None => {
+                let state = self.state()?;
+                let mut board = Board::from_state(&state);
+                if self.claim_pending() {
+                    // A bot considering a call: the page shows the seat that plays on if nobody
+                    // calls (the next to draw; the kan's own seat after an added kan), not who may
+                    // take the tile.
+                    board.current = match state.claim_kan {
+                        0 => (state.claim_from + 1) % 4,
+                        _ => state.claim_from,
+                    };
+                    board.claim = None;
+                }
+                board
+            }
         };
         board.names = self.names.clone();
         Ok(board)
@@ -228,9 +288,14 @@ impl Session {
         if self.recorder.is_none() {
             return Err("Tenhou logs are written for red-rule east and half games only".into());
         }
-        self.log
-            .as_deref()
-            .ok_or_else(|| "the log is ready when the game is over".to_string())
+        match (&self.log, self.phase()) {
+            (Some(log), _) => Ok(log),
+            (None, Phase::Over) if self.env.last().illegal[0] => {
+                Err("the game ended by an illegal action: its log is not written".into())
+            }
+            (None, Phase::Over) => Err("the game stopped before its end: it has no log".into()),
+            (None, _) => Err("the log is ready when the game is over".into()),
+        }
     }
 
     /// The person plays `action`, named at decision `step` of the game.
@@ -258,9 +323,10 @@ impl Session {
         self.apply(action).map_err(Refusal::Illegal)
     }
 
-    /// The agent to move plays, if one is to move; `true` if it did.
+    /// The built-in agent to move plays, if one is to move; `true` if it did (a bot's move is
+    /// the driver's: see [`Session::bot_work`]).
     pub fn agent_move(&mut self) -> Result<bool, String> {
-        if self.phase() != Phase::Agent {
+        if self.phase() != Phase::Agent || self.bot_to_move() {
             return Ok(false);
         }
         let action = self.agent_action()?;
@@ -270,7 +336,9 @@ impl Session {
 
     fn agent_action(&mut self) -> Result<u32, String> {
         let current = self.current() as usize;
-        let agent = self.setup.seats[current].ok_or("no agent sits there")?;
+        let Some(Opponent::Agent(agent)) = self.setup.seats[current] else {
+            return Err("no built-in agent sits there".into());
+        };
         // Every seat gets the deciding seat's agent; only the current player's entry is read.
         let action = self.env.agent_actions(&[[agent; 4]]).map_err(err)?;
         Ok(action[0])
@@ -279,6 +347,75 @@ impl Session {
     /// The current decision is a claim prompt (whether to call a discard or an added kan).
     fn claim_prompt(&self) -> bool {
         self.env.last().legal_actions(0).any(|a| a == self.pass)
+    }
+
+    /// An agent or bot decides whether to call: the page must not learn who may.
+    pub fn claim_pending(&self) -> bool {
+        self.ended.is_none() && self.phase() == Phase::Agent && self.claim_prompt()
+    }
+
+    /// A bot is to move.
+    fn bot_to_move(&self) -> bool {
+        self.phase() == Phase::Agent && matches!(self.setup.seats[self.current() as usize], Some(Opponent::Bot(_)))
+    }
+
+    /// The bots have work: to start, to hear steps, or to move.
+    pub fn bot_due(&self) -> bool {
+        self.bots
+            .as_ref()
+            .is_some_and(|b| b.waiting() || !self.untold.is_empty() || self.bot_to_move())
+    }
+
+    /// The bots' work, taken out of the session until [`Session::bot_done`] hands it back;
+    /// `None` when they have none or are already at work.
+    pub fn bot_work(&mut self) -> Option<Work> {
+        if !self.bot_due() {
+            return None;
+        }
+        let ask = match self.bot_to_move() {
+            true => Some(Ask {
+                seat: self.current() as usize,
+                state: self.state().ok()?,
+                step: self.step,
+            }),
+            false => None,
+        };
+        let bots = self.bots.take()?;
+        Some(bots.work(std::mem::take(&mut self.untold), ask))
+    }
+
+    /// Takes the bots back from their work and plays the answer, if the game still waits for
+    /// it; `true` if a move was made. A bot that failed is told on the page, and its failure at
+    /// a decision plays an illegal action: the game ends with the rules' penalty.
+    pub fn bot_done(&mut self, done: Done) -> Result<bool, String> {
+        self.bots = Some(done.bots);
+        for (p, why) in done.faults {
+            self.bot_failed(p, &why);
+        }
+        let Some((ask, answer)) = done.answer else {
+            return Ok(false);
+        };
+        if ask.step != self.step || !self.bot_to_move() || self.current() as usize != ask.seat {
+            return Ok(false);
+        }
+        let action = answer.unwrap_or_else(|why| {
+            self.bot_failed(ask.seat, &why);
+            refused_action(&ask.state.mask)
+        });
+        if self.claim_prompt() {
+            self.step_once(action)?;
+            self.answer_claims()?;
+        } else {
+            self.apply(action)?;
+        }
+        Ok(true)
+    }
+
+    fn bot_failed(&mut self, seat: usize, why: &str) {
+        // The page lists events in a narrow column: the bot's stderr tail stays in the message's
+        // first few hundred characters.
+        let short: String = why.chars().take(300).collect();
+        self.events.push(format!("{} failed: {short}", self.names[seat]));
     }
 
     /// The seed the game deals from, where the page may see it: always for a spectated game, and
@@ -320,7 +457,12 @@ impl Session {
     fn apply(&mut self, action: u32) -> Result<(), String> {
         self.step_once(action)?;
         self.step += 1;
-        while self.phase() == Phase::Agent && self.claim_prompt() {
+        self.answer_claims()
+    }
+
+    /// The built-in agents' claim prompts that follow, answered at once; a bot's waits for it.
+    fn answer_claims(&mut self) -> Result<(), String> {
+        while self.phase() == Phase::Agent && self.claim_prompt() && !self.bot_to_move() {
             let a = self.agent_action()?;
             self.step_once(a)?;
         }
@@ -330,6 +472,13 @@ impl Session {
     fn step_once(&mut self, action: u32) -> Result<(), String> {
         let before = self.state()?;
         let step = self.env.step(&[action]).map_err(err)?.clone();
+        if self.setup.seats.iter().any(|s| matches!(s, Some(Opponent::Bot(_)))) {
+            self.untold.push(Stepped {
+                before,
+                action,
+                after: self.state()?,
+            });
+        }
         if let Some(r) = &mut self.recorder {
             r.observe(&self.env, &[action]).map_err(err)?;
             if let Some(done) = r.take_finished().pop() {
@@ -466,7 +615,7 @@ mod tests {
         Setup {
             variant: Variant::Red,
             mode: Mode::East,
-            seats,
+            seats: seats.map(|s| s.map(Opponent::Agent)),
             seed: 5,
             delay: Duration::ZERO,
         }
@@ -497,6 +646,62 @@ mod tests {
         assert_eq!(label("pon", rinshan_engine::notation::parse_tile("7z").ok()), "Pon Rd");
         assert_eq!(label("discard_0s", None), "Discard red 5s");
         assert_eq!(label("self_kan_1z", None), "Kan E");
+    }
+
+    #[test]
+    fn bots_decide_their_calls_out_of_sight() {
+        // The stdlib test bot pons every pair it can; with a person at seat 0 and bots at 1 and
+        // 3, the page never shows who is considering a call.
+        let script = concat!(env!("CARGO_MANIFEST_DIR"), "/../../tests/data/mjai/bots/simple_bot.py");
+        let bot = |name: &str| NamedBot {
+            name: name.into(),
+            spec: rinshan_logs::mjai::bot::BotSpec {
+                command: format!("python3 {script} --dialect app"),
+                dialect: rinshan_logs::mjai::bot::Dialect::App,
+                timeout: Duration::from_secs(5),
+                startup: Duration::from_secs(20),
+            },
+        };
+        let seats = [
+            None,
+            Some(Opponent::Bot(bot("a"))),
+            Some(Opponent::Agent(Agent::Rule)),
+            Some(Opponent::Bot(bot("b"))),
+        ];
+        let mut s = Session::new(Setup {
+            seats,
+            ..setup([None; 4])
+        })
+        .expect("a game");
+        let (mut hidden, mut moves) = (0, 0);
+        while s.phase() != Phase::Over {
+            if s.claim_pending() {
+                // The table as it would be if nobody could call: the next seat to draw, no
+                // tile marked as claimed, whoever is really deciding.
+                let (state, board) = (s.state().expect("a state"), s.board().expect("a board"));
+                let next = if state.claim_kan != 0 {
+                    state.claim_from
+                } else {
+                    (state.claim_from + 1) % 4
+                };
+                assert_eq!((board.current, board.claim), (next, None));
+                hidden += 1;
+            }
+            if let Some(work) = s.bot_work() {
+                s.bot_done(work.run()).expect("the bots' move");
+                continue;
+            }
+            match s.phase() {
+                Phase::Agent => assert!(s.agent_move().expect("a move")),
+                Phase::Human => s.play(s.choices()[0].id, s.step).expect("a legal move"),
+                Phase::Result => s.next_round().expect("the next round"),
+                Phase::Over => {}
+            }
+            moves += 1;
+            assert!(moves < 20_000);
+        }
+        assert!(hidden > 0, "no bot was asked about a call");
+        assert!(!s.events.iter().any(|e| e.contains("failed")), "{:?}", s.events);
     }
 
     #[test]

@@ -13,6 +13,7 @@ use std::time::{Duration, Instant};
 use tokio::sync::{watch, Notify};
 
 use super::archive::Archive;
+use super::bots::NamedBot;
 use super::session::{Phase, Session, Setup};
 
 /// How much the server keeps, and for whom.
@@ -37,6 +38,8 @@ pub struct Limits {
     /// Every game deals from this seed instead of the OS random source: for tests and demos that
     /// must repeat a game (clients never choose the seed of a game they play in).
     pub fixed_seed: Option<u64>,
+    /// The MJAI bots a game may seat, by name (each seat runs its own process of the command).
+    pub bots: Vec<NamedBot>,
 }
 
 impl Default for Limits {
@@ -51,6 +54,7 @@ impl Default for Limits {
             header_timeout: Duration::from_secs(10),
             data_dir: None,
             fixed_seed: None,
+            bots: Vec::new(),
         }
     }
 }
@@ -242,8 +246,10 @@ impl Store {
 }
 
 /// Plays a game's agent moves, each after the game's delay, until the game is dropped. A
-/// spectated game also moves on past each round's result. Once the game is over its log is
-/// written to the archive.
+/// spectated game also moves on past each round's result. The MJAI bots hear each step as soon as
+/// it is played and answer on a blocking thread, the session unlocked meanwhile (a bot may take
+/// its whole timeout; the page is not held). Once the game is over its log is written to the
+/// archive.
 async fn drive(held: Arc<Held>, id: u64, archive: Option<Archive>) {
     let mut saved = false;
     loop {
@@ -262,13 +268,22 @@ async fn drive(held: Arc<Held>, id: u64, archive: Option<Archive>) {
                 }
             }
         }
-        let (phase, delay, spectating) = {
+        let (phase, delay, spectating, bots, claim) = {
             let s = held.lock();
-            (s.phase(), s.setup().delay, s.human().is_none())
+            (
+                s.phase(),
+                s.setup().delay,
+                s.human().is_none(),
+                s.bot_due(),
+                s.claim_pending(),
+            )
         };
         let due = match phase {
+            // Calls are considered out of sight: no pause shows that one was possible.
+            Phase::Agent if claim => Some(Duration::ZERO),
             Phase::Agent => Some(delay),
             Phase::Result if spectating => Some(delay * 4 + Duration::from_millis(500)),
+            _ if bots => Some(Duration::ZERO),
             _ => None,
         };
         let Some(wait) = due else {
@@ -279,6 +294,28 @@ async fn drive(held: Arc<Held>, id: u64, archive: Option<Archive>) {
             tokio::time::sleep(wait).await;
         } else {
             tokio::task::yield_now().await;
+        }
+        let work = held.lock().bot_work();
+        if let Some(work) = work {
+            let done = tokio::task::spawn_blocking(move || work.run()).await;
+            let moved = {
+                let mut s = held.lock();
+                match done {
+                    Ok(done) => s.bot_done(done).unwrap_or_else(|e| {
+                        s.stop(&e);
+                        true
+                    }),
+                    // The bots went with the panic: the game cannot go on.
+                    Err(e) => {
+                        s.stop(&format!("the MJAI bots failed: {e}"));
+                        true
+                    }
+                }
+            };
+            if moved {
+                held.changed();
+            }
+            continue;
         }
         let moved = {
             let mut s = held.lock();

@@ -44,7 +44,8 @@ function fillAgents(names) {
   document.querySelectorAll("select.agent").forEach((sel, i) => {
     names.forEach((n) => {
       const o = document.createElement("option");
-      o.value = n; o.textContent = n;
+      // The server's MJAI bots come as mjai:NAME.
+      o.value = n; o.textContent = n.startsWith("mjai:") ? n.slice(5) + " (MJAI bot)" : n;
       sel.appendChild(o);
     });
     sel.value = defaults[i % defaults.length];
