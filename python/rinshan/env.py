@@ -143,6 +143,9 @@ class Env:
         opponents: Optional[str] = None,
         hero_seats: Union[int, Sequence[int], np.ndarray, None] = None,
         penalty: Optional[float] = None,
+        mjai_dialect: str = "app",
+        mjai_timeout: float = 5.0,
+        mjai_startup: float = 60.0,
     ):
         if not isinstance(num_envs, (int, np.integer)) or isinstance(num_envs, bool):
             raise TypeError(f"num_envs must be an int, not {type(num_envs).__name__}")
@@ -182,6 +185,9 @@ class Env:
             opponents,
             seats,
             penalty,
+            mjai_dialect,
+            float(mjai_timeout),
+            float(mjai_startup),
         )
         self.num_envs = int(num_envs)
         self.oracle_enabled = oracle

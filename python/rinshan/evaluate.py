@@ -28,12 +28,16 @@ class Evaluation:
     average_score: float
     illegal: int
     """Games the policy ended with an illegal action (each counted as a last place)."""
+    opponent_faults: int = 0
+    """Games an MJAI opponent lost by failing (the policy placed among the others by score)."""
 
     def __str__(self) -> str:
         return (
             f"average rank {self.average_rank:.3f} ± {self.ci95:.3f} over {self.games} games "
             f"(places {self.rank_counts}, average score {self.average_score:.0f}, "
-            f"illegal {self.illegal})"
+            f"illegal {self.illegal}"
+            + (f", opponent faults {self.opponent_faults}" if self.opponent_faults else "")
+            + ")"
         )
 
 
@@ -54,7 +58,9 @@ def evaluate(
     `policy` and `opponents` are each a built-in agent's name or a function from the TimeStep
     (observation of each env's current player and its legal mask) to one action per env; only the
     rows of envs where that side is to act are used. Built-in opponents play inside `step` (hero
-    mode); a function as opponents is called for every decision the policy does not make.
+    mode); `"mjai:COMMAND"` seats an MJAI bot (one process per seat and game, asked inside
+    `step`; keep `games` to a few hundred); a function as opponents is called for every decision
+    the policy does not make.
     """
     if games < 1:
         raise ValueError("games must be at least 1")
@@ -80,10 +86,13 @@ def evaluate(
     score = np.zeros(n)
     illegal = np.zeros(n, dtype=bool)
     finished = np.zeros(n, dtype=bool)
+    bot_faults = np.zeros(n, dtype=bool)
     while not finished.all():
         actions = _act(policy, env, ts)
-        # In hero mode every decision returned is the policy's; otherwise the seat tells whose.
-        own = np.ones(n, dtype=bool) if builtin else ts.current_player == hero
+        # In hero mode the env says which decisions are the policy's (a bot's are played inside
+        # `step`); otherwise the seat tells whose.
+        own = ts.info["hero"].copy() if builtin else ts.current_player == hero
+        actor = ts.current_player.copy()
         if not builtin and not own.all():
             actions = np.where(own, actions, _act(opponents, env, ts))
         ts = env.step(actions)
@@ -92,10 +101,17 @@ def evaluate(
         rank[idx] = ts.info["final_rank"][idx, hero[idx]]
         score[idx] = ts.info["final_scores"][idx, hero[idx]]
         bad = ts.info["illegal"][idx]
-        if (bad & ~own[idx]).any():
+        theirs = idx[bad & ~own[idx]]
+        if len(theirs) and not (builtin and opponents.startswith("mjai:")):
             env.close()
             raise ValueError("the opponents function played an illegal action")
-        illegal[idx] = bad
+        for i in theirs:
+            # A failed bot places last, the others in their order of the moment.
+            scores = ts.info["final_scores"][i]
+            others = [q for q in range(4) if q not in (hero[i], actor[i])]
+            rank[i] = sum(scores[q] > scores[hero[i]] for q in others)
+            bot_faults[i] = True
+        illegal[idx] = bad & own[idx]
     env.close()
     # A game the policy ended with an illegal action counts as a last place.
     places = np.where(illegal, 4, rank + 1)
@@ -108,6 +124,7 @@ def evaluate(
         rank_counts=[int((places == k).sum()) for k in range(1, 5)],
         average_score=float(score.mean()),
         illegal=int(illegal.sum()),
+        opponent_faults=int(bot_faults.sum()),
     )
 
 

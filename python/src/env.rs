@@ -10,6 +10,8 @@ use rinshan_engine::env::{env_seed, Backend, Config, Env, EnvError, Mode, Observ
 use rinshan_engine::observe::Form;
 use rinshan_engine::Variant;
 
+use crate::opponents::{BotOptions, Opponents};
+
 pub(crate) fn env_error(e: EnvError) -> PyErr {
     match e {
         EnvError::Gpu(g) => PyRuntimeError::new_err(g.to_string()),
@@ -119,6 +121,8 @@ pub struct PyEnv {
     actions: Vec<u32>,
     /// Per env: which seats the caller plays (hero mode), a bit per seat.
     caller_seats: Vec<u8>,
+    /// MJAI bots playing the other seats (`opponents="mjai:COMMAND"`).
+    bots: Option<Opponents>,
     num_actions: usize,
     num_yaku: usize,
 }
@@ -313,7 +317,7 @@ pub(crate) fn form_of(name: &str) -> PyResult<Form> {
 #[pymethods]
 impl PyEnv {
     #[new]
-    #[pyo3(signature = (variant, mode, num_envs, backend, num_threads, seed, forms, auto_reset, opponents, hero_seats, penalty))]
+    #[pyo3(signature = (variant, mode, num_envs, backend, num_threads, seed, forms, auto_reset, opponents, hero_seats, penalty, mjai_dialect="app", mjai_timeout=5.0, mjai_startup=60.0))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         py: Python<'_>,
@@ -328,6 +332,9 @@ impl PyEnv {
         opponents: Option<&str>,
         hero_seats: Option<Vec<u32>>,
         penalty: Option<f32>,
+        mjai_dialect: &str,
+        mjai_timeout: f64,
+        mjai_startup: f64,
     ) -> PyResult<PyEnv> {
         let variant: Variant = parse("variant", variant)?;
         let mode: Mode = parse("mode", mode)?;
@@ -348,15 +355,15 @@ impl PyEnv {
                 "the oracle is not an observation: ask for it with env.oracle()",
             ));
         }
+        let (mut bots, mut hero_bits) = (None, Vec::new());
         let agents = match (opponents, hero_seats) {
             (None, None) => Vec::new(),
             (None, Some(_)) => {
                 return Err(PyValueError::new_err(
-                    "hero_seats needs opponents (random, rule, greedy or defensive)",
+                    "hero_seats needs opponents (random, rule, greedy, defensive or mjai:COMMAND)",
                 ))
             }
             (Some(name), seats) => {
-                let agent: Agent = parse("opponents", name)?;
                 let seats = seats.unwrap_or_else(|| vec![0]);
                 if seats.len() != 1 && seats.len() != num_envs {
                     return Err(PyValueError::new_err(format!(
@@ -367,18 +374,42 @@ impl PyEnv {
                 if let Some(s) = seats.iter().find(|&&s| s > 3) {
                     return Err(PyValueError::new_err(format!("hero seat {s}: seats are 0..3")));
                 }
-                seats
-                    .iter()
-                    .map(|&h| std::array::from_fn(|p| (p as u32 != h).then_some(agent)))
-                    .collect()
+                if let Some(command) = name.strip_prefix("mjai:") {
+                    let options = BotOptions {
+                        dialect: mjai_dialect,
+                        timeout: mjai_timeout,
+                        startup: mjai_startup,
+                    };
+                    bots = Some(Opponents::new(
+                        command,
+                        &seats,
+                        num_envs,
+                        (variant, mode, backend),
+                        &options,
+                    )?);
+                    // The kernel plays no seat: the caller's and the bots' actions go in by step.
+                    hero_bits = (0..num_envs)
+                        .map(|i| 1u8 << seats[if seats.len() == 1 { 0 } else { i }])
+                        .collect();
+                    Vec::new()
+                } else {
+                    let agent: Agent = parse("opponents", name)?;
+                    seats
+                        .iter()
+                        .map(|&h| std::array::from_fn(|p| (p as u32 != h).then_some(agent)))
+                        .collect()
+                }
             }
         };
-        let caller_seats: Vec<u8> = (0..if agents.is_empty() { 0 } else { num_envs })
-            .map(|i| {
-                let seats: &[Option<Agent>; 4] = &agents[if agents.len() == 1 { 0 } else { i }];
-                (0..4).filter(|&p| seats[p].is_none()).map(|p| 1u8 << p).sum()
-            })
-            .collect();
+        let caller_seats: Vec<u8> = match agents.is_empty() {
+            true => hero_bits,
+            false => (0..num_envs)
+                .map(|i| {
+                    let seats: &[Option<Agent>; 4] = &agents[if agents.len() == 1 { 0 } else { i }];
+                    (0..4).filter(|&p| seats[p].is_none()).map(|p| 1u8 << p).sum()
+                })
+                .collect(),
+        };
         let config = Config {
             mode,
             backend,
@@ -427,6 +458,7 @@ impl PyEnv {
             },
             actions: vec![0; b],
             caller_seats,
+            bots,
             num_actions: na,
             num_yaku: ny,
         })
@@ -475,7 +507,11 @@ impl PyEnv {
         self.run(py, Begin::New, move |env, _| match &seeds {
             Some(s) => env.reset_with_seeds(s).map(|_| ()),
             None => env.reset().map(|_| ()),
-        })
+        })?;
+        if let (Some(bots), Some(env)) = (self.bots.as_mut(), self.env.as_ref()) {
+            bots.restart(py, env)?;
+        }
+        Ok(())
     }
 
     /// One decision per env: `actions[i]` is env i's action id (int64). Out-of-range ids raise;
@@ -502,7 +538,14 @@ impl PyEnv {
         for (dst, &src) in self.actions.iter_mut().zip(a) {
             *dst = src as u32;
         }
-        self.run(py, Begin::Step, |env, actions| env.step(actions).map(|_| ()))
+        if let Some(bots) = self.bots.as_mut() {
+            bots.act(py, &mut self.actions)?;
+        }
+        self.run(py, Begin::Step, |env, actions| env.step(actions).map(|_| ()))?;
+        if let (Some(bots), Some(env)) = (self.bots.as_mut(), self.env.as_ref()) {
+            bots.stepped(py, env, &self.actions)?;
+        }
+        Ok(())
     }
 
     /// One `form` record per env for the seats in `seats` (0..3 each; 4 = the current player):
@@ -575,6 +618,12 @@ impl PyEnv {
 
     /// Restores games from `get_state` (this variant and batch size).
     fn set_state(&mut self, py: Python<'_>, state: PyReadonlyArray2<'_, u32>) -> PyResult<()> {
+        if self.bots.is_some() {
+            // A bot has followed its game from the start; it cannot be put in the middle of another.
+            return Err(PyValueError::new_err(
+                "an env with MJAI opponents cannot restore states (its bots cannot follow a restored game)",
+            ));
+        }
         let env = self.env()?;
         let (b, w) = (env.batch(), env.saved_words());
         if state.shape() != [b, w] {
@@ -590,9 +639,10 @@ impl PyEnv {
         self.run(py, Begin::Restored, move |env, _| env.load_states(&words).map(|_| ()))
     }
 
-    /// Releases the env; later calls raise.
+    /// Releases the env (and stops its MJAI opponents); later calls raise.
     fn close(&mut self) {
         self.env = None;
+        self.bots = None;
     }
 
     /// Whether `close` was called.

@@ -5,6 +5,7 @@ use pyo3::prelude::*;
 mod dataset;
 mod env;
 mod mjai;
+mod opponents;
 mod tools;
 
 #[pymodule]

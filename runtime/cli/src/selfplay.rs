@@ -8,15 +8,13 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use indicatif::{ProgressBar, ProgressStyle};
-use rayon::prelude::*;
 use rinshan_engine::agents::Agent;
-use rinshan_engine::arena::{refused_action, Seat};
 use rinshan_engine::env::{env_seed, events, Backend, Config, Env, Mode};
-use rinshan_engine::generated::kernel::GameState;
 use rinshan_engine::random::Rng;
 use rinshan_engine::Variant;
 use rinshan_logs::file::write_log;
-use rinshan_logs::mjai::seat::{MjaiEntrant, MjaiSeat};
+use rinshan_logs::mjai::batch::BatchBots;
+use rinshan_logs::mjai::seat::MjaiEntrant;
 use rinshan_logs::tenhou::write::{Finished, Recorder};
 use serde_json::json;
 
@@ -164,72 +162,6 @@ fn seatings(agents: &[String], batch: usize) -> Result<Option<([SeatArg; 4], Vec
     )))
 }
 
-/// The MJAI bots' seats of each env's game, played alongside the kernel's agents.
-struct Bots {
-    /// Per entry of `--agents`, its bot (None: a built-in agent).
-    entrants: [Option<MjaiEntrant>; 4],
-    /// Per env and seat, the bot playing it in the current game.
-    seats: Vec<[Option<MjaiSeat>; 4]>,
-    /// Each env's state now: after a step it is the state before the next one.
-    states: Vec<GameState>,
-}
-
-impl Bots {
-    /// Seats the bots of env `i`'s game that starts in `state`.
-    fn join(entrants: &[Option<MjaiEntrant>; 4], i: usize, state: &GameState) -> [Option<MjaiSeat>; 4] {
-        std::array::from_fn(|p| entrants[(p + i) % 4].as_ref().map(|e| e.start(p as u32, state)))
-    }
-
-    /// Replaces the actions of the envs whose current player is a bot by the bot's; returns
-    /// the bots' faults.
-    fn act(&mut self, actions: &mut [u32]) -> Vec<String> {
-        self.seats
-            .par_iter_mut()
-            .zip(actions.par_iter_mut())
-            .zip(self.states.par_iter())
-            .enumerate()
-            .filter_map(|(i, ((seats, a), s))| {
-                // A finished game's state asks nothing (with auto-reset, `terminated` marks the
-                // first state of the next game, which does ask).
-                let seat = seats[s.current as usize].as_mut().filter(|_| s.mask != [0; 3])?;
-                match seat.act(s) {
-                    Ok(x) => *a = x,
-                    Err(e) => {
-                        *a = refused_action(&s.mask);
-                        return Some(format!("env {i} seat {}: {e}", s.current));
-                    }
-                }
-                None
-            })
-            .collect()
-    }
-
-    /// Tells every bot the step each env took to `after`; a finished game's bots give way to
-    /// the next's. Returns the bots' faults.
-    fn stepped(&mut self, actions: &[u32], after: Vec<GameState>, ended: &[bool]) -> Vec<String> {
-        let (entrants, before) = (&self.entrants, &self.states);
-        let faults = self
-            .seats
-            .par_iter_mut()
-            .enumerate()
-            .flat_map_iter(|(i, seats)| {
-                let mut out = Vec::new();
-                for (p, seat) in seats.iter_mut().enumerate() {
-                    if let Some(Err(e)) = seat.as_mut().map(|s| s.stepped(&before[i], actions[i], &after[i])) {
-                        out.push(format!("env {i} seat {p}: {e}"));
-                    }
-                }
-                if ended[i] {
-                    *seats = Bots::join(entrants, i, &after[i]);
-                }
-                out
-            })
-            .collect();
-        self.states = after;
-        faults
-    }
-}
-
 pub fn run(args: Args) -> Result<(), CliError> {
     let config = args.game.config(args.batch);
     let (players, seatings) = match seatings(&args.agents, args.batch)? {
@@ -308,15 +240,11 @@ pub fn run(args: Args) -> Result<(), CliError> {
     let mut bots = match with_bots {
         true => {
             let states = env.game_states().map_err(CliError::failure)?;
-            Some(Bots {
-                seats: states
-                    .iter()
-                    .enumerate()
-                    .map(|(i, s)| Bots::join(&entrants, i, s))
-                    .collect(),
-                entrants,
-                states,
-            })
+            // Env i seats the players rotated by i, as the kernel's agents are.
+            let seating = (0..states.len())
+                .map(|i| std::array::from_fn(|p| entrants[(p + i) % 4].clone()))
+                .collect();
+            Some(BatchBots::new(seating, states))
         }
         false => None,
     };

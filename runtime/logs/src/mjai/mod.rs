@@ -13,6 +13,7 @@
 //! * [`read`]  — an MJAI log as a `Game`, so replay, convert and render take any format; `round`
 //!   reads a round's events, `yaku` a win's yaku
 
+pub mod batch;
 pub mod bot;
 pub mod event;
 pub mod live;

@@ -1,0 +1,103 @@
+"""MJAI bots as the env's opponents (`opponents="mjai:COMMAND"`): the bot plays every seat but
+the hero's, asked inside `step`. `rinshan mjai-bot --agent defensive` plays exactly as the built-in
+defensive agent, so games against it through MJAI are the games of hero mode against the built-in
+agent; a failing bot loses its game by the penalty with a warning; bad settings raise."""
+
+import pathlib
+import warnings
+
+import numpy as np
+import pytest
+
+import rinshan
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+SIMPLE = ROOT / "tests" / "data" / "mjai" / "bots" / "simple_bot.py"
+
+
+def finals(env, seeds):
+    """Plays every env's game to its end, the hero by the greedy agent; the final scores."""
+    ts = env.reset(seeds=seeds)
+    done = np.zeros(env.num_envs, dtype=bool)
+    scores = np.zeros((env.num_envs, 4), dtype=np.int64)
+    for _ in range(100_000):
+        ts = env.step(env.agent_actions("greedy"))
+        idx = np.flatnonzero(ts.terminated & ~done)
+        scores[idx] = ts.info["final_scores"][idx]
+        done[idx] = True
+        if done.all():
+            return scores
+    raise AssertionError("the games did not end")
+
+
+@pytest.mark.parametrize("dialect", ["app", "stdio"])
+def test_a_bot_opponent_plays_the_games_of_the_built_in_agent(cli, dialect):
+    seeds = [3, 4, 5, 6]
+    hero = [0, 1, 2, 3]
+    common = dict(mode="east", num_envs=4, auto_reset=False, hero_seats=hero, observation=())
+    builtin = finals(rinshan.make("red", opponents="defensive", **common), seeds)
+    bot = f"mjai:{cli} mjai-bot --agent defensive --dialect {dialect}"
+    env = rinshan.make("red", opponents=bot, mjai_dialect=dialect, **common)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        mjai = finals(env, seeds)
+    env.close()
+    np.testing.assert_array_equal(mjai, builtin)
+
+
+def test_evaluate_takes_a_bot_as_opponents(cli):
+    bot = f"mjai:{cli} mjai-bot --agent defensive"
+    kw = dict(games=4, mode="east", seed=2, observation=())
+    assert str(rinshan.evaluate("greedy", opponents=bot, **kw)) == str(
+        rinshan.evaluate("greedy", opponents="defensive", **kw)
+    )
+
+
+def test_a_failing_bot_loses_its_game_with_a_warning():
+    env = rinshan.make(
+        "red",
+        mode="east",
+        num_envs=2,
+        observation=(),
+        auto_reset=False,
+        opponents=f"mjai:python3 {SIMPLE} --dialect app --mode die",
+    )
+    ts = env.reset(seeds=[1, 2])
+    lost = np.zeros(2, dtype=bool)
+    with pytest.warns(RuntimeWarning, match="dying on purpose"):
+        for _ in range(10_000):
+            ts = env.step(np.argmax(ts.legal_action_mask, axis=1))
+            lost |= ts.info["illegal"]
+            if ts.terminated.all():
+                break
+    # Each game ended at its bot's third decision, by the penalty.
+    assert ts.terminated.all() and lost.all()
+    env.close()
+
+
+@pytest.mark.parametrize(
+    "kwargs, words",
+    [
+        (dict(opponents="mjai:"), "needs the bot's command line"),
+        (dict(opponents="mjai:x", variant="no-red"), "red rules"),
+        (dict(opponents="mjai:x", mode="single"), "east or half"),
+        (dict(opponents="mjai:x", num_envs=300), "at most 256 envs"),
+        (dict(opponents="mjai:x", mjai_dialect="tcp"), "unknown MJAI dialect"),
+        (dict(opponents="mjai:x", mjai_timeout=0), "mjai_timeout 0"),
+    ],
+)
+def test_bad_settings_raise(kwargs, words):
+    kw = dict(variant="red", num_envs=2, observation=())
+    kw.update(kwargs)
+    with pytest.raises(ValueError, match=words):
+        rinshan.make(kw.pop("variant"), **kw)
+
+
+def test_a_bot_opponent_env_restores_no_state():
+    env = rinshan.make(
+        "red", num_envs=1, observation=(), opponents=f"mjai:python3 {SIMPLE} --dialect app"
+    )
+    env.reset()
+    with pytest.raises(ValueError, match="cannot restore states"):
+        env.set_state(env.get_state())
+    env.close()
