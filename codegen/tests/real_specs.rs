@@ -54,9 +54,12 @@ const ALL_YAKU: [&str; 45] = [
 ];
 
 #[test]
-fn both_variants_load() {
-    assert_eq!(rinshan_codegen::variant_names(&rules_dir()), ["no_red", "red"]);
-    for v in ["red", "no_red"] {
+fn every_variant_loads() {
+    assert_eq!(
+        rinshan_codegen::variant_names(&rules_dir()),
+        ["mjsoul", "no_red", "red"]
+    );
+    for v in ["red", "no_red", "mjsoul"] {
         let spec = load_real(v);
         assert_eq!(spec.variant.name, v);
     }
@@ -68,7 +71,7 @@ fn unknown_variant_lists_the_known_ones() {
         panic!("loaded")
     };
     assert!(
-        e[0].message.contains("no variant `blue`") && e[0].message.contains("no_red, red"),
+        e[0].message.contains("no variant `blue`") && e[0].message.contains("mjsoul, no_red, red"),
         "{}",
         e[0]
     );
@@ -240,6 +243,32 @@ fn variant_options() {
     }
     // Tenhou counts the "double" yakuman once; no_red keeps the reference's doubles.
     assert!(!flag(&red, "double_yakuman") && flag(&no_red, "double_yakuman"));
+    // Mahjong Soul differs from Tenhou in exactly the four rules its spec's header names.
+    let mjsoul = load_real("mjsoul").variant;
+    let differ: Vec<&str> = red
+        .options
+        .iter()
+        .zip(&mjsoul.options)
+        .filter(|(a, b)| a.name != b.name || a.value != b.value)
+        .map(|(a, _)| a.name.as_str())
+        .collect();
+    assert_eq!(
+        differ,
+        [
+            "double_yakuman",
+            "triple_ron_abort",
+            "kokushi_robs_closed_kan",
+            "pao_share_only"
+        ]
+    );
+    assert!(!flag(&mjsoul, "triple_ron_abort") && flag(&mjsoul, "pao_share_only"));
+    assert_eq!(
+        (mjsoul.uma, mjsoul.illegal_action_penalty),
+        (red.uma, red.illegal_action_penalty)
+    );
+    for v in [&red, &no_red] {
+        assert!(!flag(v, "pao_share_only"), "{}", v.name);
+    }
     for v in [&red, &no_red] {
         assert!(!flag(v, "kiriage_mangan") && flag(v, "kazoe_yakuman") && flag(v, "multiple_yakuman"));
         assert_eq!(
@@ -275,6 +304,7 @@ fn variant_options() {
                 "abortive_draws",
                 "nagashi_mangan",
                 "pao",
+                "pao_share_only",
                 "starting_points",
                 "riichi_min_points",
                 "bust_below_zero",

@@ -117,6 +117,24 @@ fn liable_seat(s: &mut GameState, winner: u32, out: ScoreOutput) -> u32 {
     4u32
 }
 
+// The part of a hand's value the liable seat covers, as [numerator, denominator]: the whole hand,
+// or with PAO_SHARE_ONLY the pao yakuman's weight over the hand's yakuman total (daisangen in a
+// daisangen + tsuuiisou double: half).
+fn pao_share(out: ScoreOutput) -> [u32; 2] {
+    if !PAO_SHARE_ONLY || out.yakuman == 0u32 {
+        return [1u32, 1u32];
+    }
+    let mut pao: u32 = YAKU_DAISANGEN;
+    if !has_yaku(out.yaku_lo, out.yaku_hi, YAKU_DAISANGEN) {
+        pao = YAKU_DAISUUSHI;
+    }
+    let mut weight: u32 = YAKU_YAKUMAN[pao as usize];
+    if !DOUBLE_YAKUMAN {
+        weight = 1u32;
+    }
+    [weight.min(out.yakuman), out.yakuman]
+}
+
 fn note_win(s: &mut GameState, seat: u32, out: ScoreOutput) {
     s.winners |= 1u32 << seat;
     s.yaku[0] |= out.yaku_lo;
@@ -140,10 +158,13 @@ fn settle_ron(s: &mut GameState, winner: u32, from: u32, v: u32, chankan: bool, 
     let out: ScoreOutput = score_hand(inp);
     let liable: u32 = liable_seat(s, winner, out);
     if liable < 4u32 && liable != from {
+        // The liable seat pays half of what it covers; the discarder the rest and the honba.
         let honba: u32 = inp.honba * HONBA_RON_POINTS;
         let value: u32 = out.ron - honba;
-        pay(s, liable, winner, value / 2u32);
-        pay(s, from, winner, value - value / 2u32 + honba);
+        let share: [u32; 2] = pao_share(out);
+        let covered: u32 = value / share[1] * share[0];
+        pay(s, liable, winner, covered / 2u32);
+        pay(s, from, winner, value - covered / 2u32 + honba);
     } else {
         pay(s, from, winner, out.ron);
     }
@@ -156,15 +177,23 @@ fn settle_ron(s: &mut GameState, winner: u32, from: u32, v: u32, chankan: bool, 
 }
 
 fn settle_tsumo(s: &mut GameState, winner: u32) {
-    let out: ScoreOutput = score_hand(win_input(s, winner, s.drawn, true, false));
+    let inp: ScoreInput = win_input(s, winner, s.drawn, true, false);
+    let out: ScoreOutput = score_hand(inp);
     let liable: u32 = liable_seat(s, winner, out);
+    let share: [u32; 2] = pao_share(out);
     for p in 0u32..4u32 {
         if p != winner {
             let mut amount: u32 = out.others_pay;
             if p == s.dealer && winner != s.dealer {
                 amount = out.dealer_pays;
             }
-            if liable < 4u32 {
+            if liable < 4u32 && share[0] < share[1] {
+                // A composite hand: the liable seat pays the pao yakuman's part of each payment,
+                // the payer the rest and its honba.
+                let covered: u32 = (amount - inp.honba * HONBA_TSUMO_POINTS) / share[1] * share[0];
+                pay(s, liable, winner, covered);
+                pay(s, p, winner, amount - covered);
+            } else if liable < 4u32 {
                 pay(s, liable, winner, amount);
             } else {
                 pay(s, p, winner, amount);

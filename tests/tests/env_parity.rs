@@ -129,6 +129,11 @@ fn no_red_half_games_are_identical_on_cpu_and_gpu() {
     parity(Variant::NoRed);
 }
 
+#[test]
+fn mjsoul_half_games_are_identical_on_cpu_and_gpu() {
+    parity(Variant::Mjsoul);
+}
+
 /// Hero mode on both backends: the caller plays one seat at random, the three agents the others.
 #[test]
 fn hero_mode_is_identical_on_cpu_and_gpu() {

@@ -157,6 +157,17 @@ invariant_suite!(
     10_688_958,
     "30f711726af75d0d"
 );
+// Mahjong Soul's rules: pinned when the variant was added (red and no-red kept their pins: the
+// option it brought, pao_share_only, is off in both). Random play meets none of its four
+// differences from red (triple ron, kokushi on a closed kan, a pattern double yakuman, pao in a
+// composite yakuman) in these games, so it plays red's games; the scenarios pin each difference.
+invariant_suite!(
+    mjsoul_random_games_keep_the_invariants,
+    mjsoul,
+    10_000,
+    10_663_486,
+    "b72dc0a9ccda8e89"
+);
 
 #[test]
 fn game_state_fits_in_one_kib() {

@@ -9,10 +9,7 @@ fn body(wgsl: &str) -> &str {
 }
 
 fn wgsl(variant: Variant) -> &'static str {
-    match variant {
-        Variant::Red => rinshan_engine::generated::red::WGSL,
-        Variant::NoRed => rinshan_engine::generated::no_red::WGSL,
-    }
+    rinshan_engine::with_variant!(variant, v => v::WGSL)
 }
 
 #[test]
@@ -38,6 +35,11 @@ fn red_wgsl_snapshot() {
 #[test]
 fn no_red_wgsl_snapshot() {
     insta::assert_snapshot!("no_red_wgsl", body(wgsl(Variant::NoRed)));
+}
+
+#[test]
+fn mjsoul_wgsl_snapshot() {
+    insta::assert_snapshot!("mjsoul_wgsl", body(wgsl(Variant::Mjsoul)));
 }
 
 /// Size and member offsets of struct `name` in a WGSL module, as naga lays it out.
