@@ -62,13 +62,13 @@ fn gather(s: &mut GameState, seat: u32) -> Seen {
     let mut dora: [u32; 34] = [0u32; 34];
     for q in 0u32..4u32 {
         for i in 0u32..byte_of(s.river_lens, q) {
+            // Tiles called away are counted in the caller's meld.
             let e: u32 = river_entry(s, q, i);
-            if (e & 64u32) == 0u32 {
-                let v: u32 = e & 63u32;
-                seen[value_type(v) as usize] += 1u32;
-                if v >= 34u32 {
-                    red_seen |= 1u32 << (v - 34u32);
-                }
+            let v: u32 = e & 63u32;
+            let kept: u32 = 1u32 - ((e >> 6u32) & 1u32);
+            seen[value_type(v) as usize] += kept;
+            if v >= 34u32 {
+                red_seen |= kept << (v - 34u32);
             }
         }
         for i in 0u32..meld_count(s, q) {
@@ -119,9 +119,32 @@ fn add_plane(out: &mut [u32; 544], row: u32, t: u32, v: u32) {
     out[(i / 4u32) as usize] += v << ((i % 4u32) * 8u32);
 }
 
-fn get_plane(out: &mut [u32; 544], row: u32, t: u32) -> u32 {
+fn set_plane(out: &mut [u32; 544], row: u32, t: u32, v: u32) {
     let i: u32 = row * 34u32 + t;
-    (out[(i / 4u32) as usize] >> ((i % 4u32) * 8u32)) & 255u32
+    let at: u32 = (i % 4u32) * 8u32;
+    out[(i / 4u32) as usize] = (out[(i / 4u32) as usize] & !(255u32 << at)) | (v << at);
+}
+
+// Four bits to the low bit of four bytes (the shifted copies of `n` do not overlap, so no carry).
+fn spread4(n: u32) -> u32 {
+    ((n & 15u32) * 0x204081u32) & 0x01010101u32
+}
+
+// Sets the cells of a row whose types are in `set` (34 bits) to 1, a word (four cells) at a time.
+// A row starts at a word boundary (even rows) or half-way into one (odd rows: 34 = 8 * 4 + 2).
+fn put_set(out: &mut [u32; 544], row: u32, set: [u32; 2]) {
+    let w: u32 = row * 34u32 / 4u32;
+    if (row & 1u32) == 0u32 {
+        for j in 0u32..8u32 {
+            out[(w + j) as usize] |= spread4(set[0] >> (j * 4u32));
+        }
+        out[(w + 8u32) as usize] |= spread4(set[1] & 3u32);
+    } else {
+        out[w as usize] |= spread4(set[0] & 3u32) << 16u32;
+        for j in 0u32..8u32 {
+            out[(w + 1u32 + j) as usize] |= spread4((set[0] >> (2u32 + j * 4u32)) | (set[1] << (30u32 - j * 4u32)));
+        }
+    }
 }
 
 fn put_scalar(sc: &mut [u32; 24], i: u32, v: i32) {
@@ -223,6 +246,17 @@ fn set_add(set: &mut [u32; 2], t: u32) {
     set[(t / 32u32) as usize] |= 1u32 << (t % 32u32);
 }
 
+// A type's bit in the low and the high word of a 34-bit set. Sets updated in a loop are kept as
+// two words indexed by constants, not as [u32; 2] indexed by `t / 32`: a variable index keeps the
+// set in memory, and the CPU then stalls reading a word just written as part of a wider store.
+fn bit_lo(t: u32) -> u32 {
+    (1u32 << (t % 32u32)) * ((t < 32u32) as u32)
+}
+
+fn bit_hi(t: u32) -> u32 {
+    (1u32 << (t % 32u32)) * ((t >= 32u32) as u32)
+}
+
 // One pass over the round's log: the riichi tile and called-in rows of each seat, and the tiles
 // safe against each seat (genbutsu), by absolute seat: its own discards, anything discarded
 // since its last discard, and anything discarded after its riichi declaration.
@@ -245,15 +279,16 @@ fn log_planes(s: &mut GameState, seat: u32, out: &mut [u32; 544]) -> [u32; 8] {
             if (log_flags(e) & LOG_RIICHI_TILE) != 0u32 {
                 put_plane(out, P_SEAT + rel(seat, a) * P_SEAT_ROWS + P_SEAT_RIICHI_TILE, t, 1u32);
             }
-            since[(a * 2u32) as usize] = 0u32;
-            since[(a * 2u32 + 1u32) as usize] = 0u32;
+            // The discarder's set starts again; every other seat's gains the tile.
+            let lo: u32 = bit_lo(t);
+            let hi: u32 = bit_hi(t);
             for q in 0u32..4u32 {
-                if q != a {
-                    since[(q * 2u32 + t / 32u32) as usize] |= 1u32 << (t % 32u32);
-                    if ((riichi >> q) & 1u32) != 0u32 {
-                        after_riichi[(q * 2u32 + t / 32u32) as usize] |= 1u32 << (t % 32u32);
-                    }
-                }
+                let other: u32 = (q != a) as u32;
+                since[(q * 2u32) as usize] = (since[(q * 2u32) as usize] | lo) * other;
+                since[(q * 2u32 + 1u32) as usize] = (since[(q * 2u32 + 1u32) as usize] | hi) * other;
+                let open: u32 = other & (riichi >> q);
+                after_riichi[(q * 2u32) as usize] |= lo * open;
+                after_riichi[(q * 2u32 + 1u32) as usize] |= hi * open;
             }
         }
     }
@@ -279,27 +314,24 @@ fn planes_of(s: &mut GameState, arg: u32) -> ObsPlanes {
     let seat: u32 = observer(s, arg);
     let v: Seen = gather(s, seat);
     let mut out: [u32; 544] = [0u32; 544];
+    // Branch-free throughout: which cells are set depends on the hand and the table, so a branch
+    // per cell would be mispredicted about half the time, and that was most of the view's cost.
+    let mut held: [u32; 8] = [0u32; 8];
     for t in 0u32..34u32 {
         let c: u32 = v.hand[t as usize];
         for k in 0u32..4u32 {
-            if c > k {
-                put_plane(&mut out, P_HAND + k, t, 1u32);
-            }
+            held[(k * 2u32) as usize] |= bit_lo(t) * ((c > k) as u32);
+            held[(k * 2u32 + 1u32) as usize] |= bit_hi(t) * ((c > k) as u32);
         }
-        if v.seen[t as usize] != 0u32 {
-            put_plane(&mut out, P_SEEN, t, v.seen[t as usize]);
-        }
-        if v.dora[t as usize] != 0u32 {
-            put_plane(&mut out, P_DORA, t, v.dora[t as usize]);
-        }
+        put_plane(&mut out, P_SEEN, t, v.seen[t as usize]);
+        put_plane(&mut out, P_DORA, t, v.dora[t as usize]);
+    }
+    for k in 0u32..4u32 {
+        put_set(&mut out, P_HAND + k, [held[(k * 2u32) as usize], held[(k * 2u32 + 1u32) as usize]]);
     }
     for suit in 0u32..3u32 {
-        if holds_red(s, seat, suit) {
-            put_plane(&mut out, P_RED, suit * 9u32 + 4u32, 1u32);
-        }
-        if ((v.red_seen >> suit) & 1u32) != 0u32 {
-            put_plane(&mut out, P_RED_SEEN, suit * 9u32 + 4u32, 1u32);
-        }
+        put_plane(&mut out, P_RED, suit * 9u32 + 4u32, holds_red(s, seat, suit) as u32);
+        put_plane(&mut out, P_RED_SEEN, suit * 9u32 + 4u32, (v.red_seen >> suit) & 1u32);
     }
     if v.decision == DECISION_TURN || v.decision == DECISION_RIICHI_DISCARD {
         if s.drawn != NO_TILE_VALUE {
@@ -309,20 +341,15 @@ fn planes_of(s: &mut GameState, arg: u32) -> ObsPlanes {
         // A red and a black five are one type here.
         let mut legal: [u32; 2] = [0u32; 2];
         for a in 0u32..ACTION_DISCARD_COUNT {
-            if mask_has(m, ACTION_DISCARD + a) {
-                set_add(&mut legal, value_type(a));
-            }
+            let t: u32 = value_type(a);
+            legal[(t / 32u32) as usize] |= (mask_has(m, ACTION_DISCARD + a) as u32) << (t % 32u32);
         }
         if mask_has(m, ACTION_TSUMOGIRI) {
             set_add(&mut legal, value_type(s.drawn));
         }
+        put_set(&mut out, P_LEGAL_DISCARD, legal);
         for t in 0u32..34u32 {
-            if set_has(legal, t) {
-                put_plane(&mut out, P_LEGAL_DISCARD, t, 1u32);
-            }
-        }
-        for t in 0u32..34u32 {
-            mask_row(&mut out, m, ACTION_SELF_KAN + t, P_SELF_KAN, t);
+            put_plane(&mut out, P_SELF_KAN, t, mask_has(m, ACTION_SELF_KAN + t) as u32);
         }
     }
     if v.decision == DECISION_CLAIM || v.decision == DECISION_CHANKAN {
@@ -343,12 +370,7 @@ fn planes_of(s: &mut GameState, arg: u32) -> ObsPlanes {
         }
         mask_row(&mut out, m, ACTION_OPEN_KAN, P_OPEN_KAN, t);
     }
-    let w: [u32; 2] = own_waits(s, seat);
-    for t in 0u32..34u32 {
-        if set_has(w, t) {
-            put_plane(&mut out, P_WAITS, t, 1u32);
-        }
-    }
+    put_set(&mut out, P_WAITS, own_waits(s, seat));
     let round_wind: u32 = EAST + (s.round / 4u32) % 4u32;
     let seat_wind: u32 = EAST + rel(s.dealer, seat);
     put_plane(&mut out, P_YAKUHAI, round_wind, 1u32 + (round_wind == seat_wind) as u32);
@@ -376,33 +398,29 @@ fn view_seat_planes(s: &mut GameState, seat: u32, out: &mut [u32; 544]) {
     for j in 0u32..4u32 {
         let q: u32 = (seat + j) % 4u32;
         let base: u32 = P_SEAT + j * P_SEAT_ROWS;
-        // Straight into the (zeroed) rows: counts add up in their bytes (at most 4 or 24), the
-        // first turn is written once, the last turn on a backwards pass.
+        // One pass, straight into the (zeroed) rows: counts add up in their bytes (at most 4 or
+        // 24), the first turn is written once, the last turn overwritten by each later discard.
         let len: u32 = byte_of(s.river_lens, q);
+        let mut before_lo: u32 = 0u32;
+        let mut before_hi: u32 = 0u32;
+        let mut last: u32 = 0u32;
         for i in 0u32..len {
             let e: u32 = river_entry(s, q, i);
             let t: u32 = value_type(e & 63u32);
+            last = t;
             add_plane(out, base + P_SEAT_DISCARDED, t, 1u32);
-            if (e & 128u32) == 0u32 {
-                add_plane(out, base + P_SEAT_TEDASHI, t, 1u32);
-            }
-            if get_plane(out, base + P_SEAT_FIRST_TURN, t) == 0u32 {
-                add_plane(out, base + P_SEAT_FIRST_TURN, t, i + 1u32);
-            }
-            if (e & 64u32) != 0u32 {
-                add_plane(out, base + P_SEAT_CALLED_AWAY, t, 1u32);
-            }
+            add_plane(out, base + P_SEAT_TEDASHI, t, ((e & 128u32) == 0u32) as u32);
+            let lo: u32 = bit_lo(t);
+            let hi: u32 = bit_hi(t);
+            let first: bool = ((before_lo & lo) | (before_hi & hi)) == 0u32;
+            add_plane(out, base + P_SEAT_FIRST_TURN, t, (i + 1u32) * (first as u32));
+            before_lo |= lo;
+            before_hi |= hi;
+            add_plane(out, base + P_SEAT_CALLED_AWAY, t, (e >> 6u32) & 1u32);
+            set_plane(out, base + P_SEAT_LAST_TURN, t, i + 1u32);
         }
-        let mut i: u32 = len;
-        while i > 0u32 {
-            i -= 1u32;
-            let t: u32 = value_type(river_entry(s, q, i) & 63u32);
-            if i + 1u32 == len {
-                add_plane(out, base + P_SEAT_LAST_DISCARD, t, 1u32);
-            }
-            if get_plane(out, base + P_SEAT_LAST_TURN, t) == 0u32 {
-                add_plane(out, base + P_SEAT_LAST_TURN, t, i + 1u32);
-            }
+        if len > 0u32 {
+            put_plane(out, base + P_SEAT_LAST_DISCARD, last, 1u32);
         }
         for i in 0u32..meld_count(s, q) {
             let m: u32 = s.melds[(q * 4u32 + i) as usize];
@@ -421,14 +439,7 @@ fn view_seat_planes(s: &mut GameState, seat: u32, out: &mut [u32; 544]) {
                 add_plane(out, base + P_SEAT_CLOSED_KAN, t, 1u32);
             }
         }
-        for w in 0u32..2u32 {
-            let mut x: u32 = safe[(q * 2u32 + w) as usize];
-            while x != 0u32 {
-                let b: u32 = x.trailing_zeros();
-                x &= x - 1u32;
-                add_plane(out, base + P_SEAT_SAFE, w * 32u32 + b, 1u32);
-            }
-        }
+        put_set(out, base + P_SEAT_SAFE, [safe[(q * 2u32) as usize], safe[(q * 2u32 + 1u32) as usize]]);
     }
 }
 

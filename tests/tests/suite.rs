@@ -9,6 +9,7 @@ mod env_parity;
 mod game_invariants;
 mod generated_modules;
 mod observation;
+mod observation_bytes;
 mod observation_fields;
 mod observation_snapshots;
 mod parity;

@@ -1,0 +1,56 @@
+//! The bytes of the observation forms over random play are pinned, each seat's view at many
+//! positions of both four-player rule sets: making the view faster must keep them. The pinned
+//! values were computed by the per-tile view code that the bit-parallel one replaced; a change of
+//! meaning changes them, and its commit says why.
+
+use rinshan_engine::env::{Config, Env, Observer};
+use rinshan_engine::observe::Form;
+use rinshan_engine::random::Rng;
+use rinshan_engine::Variant;
+
+/// FNV-1a over bytes.
+fn fnv(hash: &mut u64, bytes: &[u8]) {
+    for &b in bytes {
+        *hash = (*hash ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
+    }
+}
+
+/// Every seat's planes and tokens at every 4th step of random self-play (auto-reset, so many
+/// rounds and games), and the analysis tier at every 40th.
+fn fingerprint(variant: Variant) -> u64 {
+    let mut config = Config::new(variant, 48);
+    config.auto_reset = true;
+    config.seed = 11;
+    let mut env = Env::new(config).expect("env");
+    env.reset().expect("reset");
+    let mut rng = Rng::new(11);
+    let mut hash = 0xcbf2_9ce4_8422_2325;
+    for step in 0..1600 {
+        if step % 4 == 0 {
+            for seat in 0..4 {
+                for form in [Form::Planes, Form::Tokens] {
+                    fnv(&mut hash, env.observe(form, Observer::Seat(seat)).expect("observe"));
+                }
+                if step % 40 == 0 {
+                    fnv(
+                        &mut hash,
+                        env.observe(Form::Analysis, Observer::Seat(seat)).expect("observe"),
+                    );
+                }
+            }
+        }
+        let actions: Vec<u32> = env.last().legal_action_mask.iter().map(|m| rng.pick_legal(m)).collect();
+        env.step(&actions).expect("legal random actions");
+    }
+    hash
+}
+
+#[test]
+fn red_observation_bytes_are_pinned() {
+    assert_eq!(format!("{:016x}", fingerprint(Variant::Red)), "201fdcd40f33bc08");
+}
+
+#[test]
+fn no_red_observation_bytes_are_pinned() {
+    assert_eq!(format!("{:016x}", fingerprint(Variant::NoRed)), "9fc4f0e155a7e0d7");
+}
