@@ -4,15 +4,13 @@ use rayon::prelude::*;
 
 use crate::generated::kernel;
 
-/// `out[i] = f(states[i], args[i])` over the batch, in parallel unless `serial`. Generic over
-/// `f` (not a fn pointer) so that the kernel function is inlined into the loop and its result built
-/// in place: the observation records are kilobytes, and copying them cost a tenth of their time.
-pub(crate) fn each<T: bytemuck::Pod + Send, F: Fn(kernel::GameState, u32) -> T + Sync>(
+/// `out[i] = f(states[i], args[i])` over the batch, in parallel unless `serial`.
+pub(crate) fn each<T: bytemuck::Pod + Send>(
     out: &mut [u32],
     sts: &[kernel::GameState],
     args: &[u32],
     serial: bool,
-    f: F,
+    f: fn(kernel::GameState, u32) -> T,
 ) {
     let outs: &mut [T] = bytemuck::cast_slice_mut(out);
     let one = |((o, s), a): ((&mut T, &kernel::GameState), &u32)| *o = f(*s, *a);
