@@ -314,8 +314,8 @@ fn planes_of(s: &mut GameState, arg: u32) -> ObsPlanes {
     let seat: u32 = observer(s, arg);
     let v: Seen = gather(s, seat);
     let mut out: [u32; 544] = [0u32; 544];
-    // Branch-free throughout: which cells are set depends on the hand and the table, so a branch
-    // per cell would be mispredicted about half the time, and that was most of the view's cost.
+    // No branch per cell: which cells are set depends on the hand and the table, so such branches
+    // are hard to predict; binary rows are gathered as 34-bit sets and written a word at a time.
     let mut held: [u32; 8] = [0u32; 8];
     for t in 0u32..34u32 {
         let c: u32 = v.hand[t as usize];
