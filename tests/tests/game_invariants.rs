@@ -112,16 +112,20 @@ macro_rules! invariant_suite {
     };
 }
 
-/// FNV-1a over 32-bit words.
-struct Fingerprint(u64);
+/// FNV-1a over bytes (words as their little-endian bytes).
+pub(crate) struct Fingerprint(pub(crate) u64);
 
 impl Fingerprint {
-    fn new() -> Fingerprint {
+    pub(crate) fn new() -> Fingerprint {
         Fingerprint(0xcbf2_9ce4_8422_2325)
     }
 
     fn add(&mut self, word: u32) {
-        for b in word.to_le_bytes() {
+        self.add_bytes(&word.to_le_bytes());
+    }
+
+    pub(crate) fn add_bytes(&mut self, bytes: &[u8]) {
+        for &b in bytes {
             self.0 = (self.0 ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
         }
     }

@@ -8,12 +8,7 @@ use rinshan_engine::observe::Form;
 use rinshan_engine::random::Rng;
 use rinshan_engine::Variant;
 
-/// FNV-1a over bytes.
-fn fnv(hash: &mut u64, bytes: &[u8]) {
-    for &b in bytes {
-        *hash = (*hash ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
-    }
-}
+use crate::game_invariants::Fingerprint;
 
 /// Every seat's planes and tokens at every 4th step of random self-play (auto-reset, so many
 /// rounds and games), and the analysis tier at every 40th.
@@ -24,25 +19,22 @@ fn fingerprint(variant: Variant) -> u64 {
     let mut env = Env::new(config).expect("env");
     env.reset().expect("reset");
     let mut rng = Rng::new(11);
-    let mut hash = 0xcbf2_9ce4_8422_2325;
+    let mut hash = Fingerprint::new();
     for step in 0..1600 {
         if step % 4 == 0 {
             for seat in 0..4 {
                 for form in [Form::Planes, Form::Tokens] {
-                    fnv(&mut hash, env.observe(form, Observer::Seat(seat)).expect("observe"));
+                    hash.add_bytes(env.observe(form, Observer::Seat(seat)).expect("observe"));
                 }
                 if step % 40 == 0 {
-                    fnv(
-                        &mut hash,
-                        env.observe(Form::Analysis, Observer::Seat(seat)).expect("observe"),
-                    );
+                    hash.add_bytes(env.observe(Form::Analysis, Observer::Seat(seat)).expect("observe"));
                 }
             }
         }
         let actions: Vec<u32> = env.last().legal_action_mask.iter().map(|m| rng.pick_legal(m)).collect();
         env.step(&actions).expect("legal random actions");
     }
-    hash
+    hash.0
 }
 
 #[test]
