@@ -74,6 +74,52 @@ def test_same_seed_same_games_and_thread_counts_agree():
     assert any((x.observation["planes"] != z.observation["planes"]).any() for x, z in zip(a, c))
 
 
+def same_timestep(x, y):
+    assert x.info.keys() == y.info.keys() and x.observation.keys() == y.observation.keys()
+    for k in x.info:
+        assert (x.info[k] == y.info[k]).all(), k
+    for k in x.observation:
+        assert (x.observation[k] == y.observation[k]).all(), k
+    assert (x.legal_action_mask == y.legal_action_mask).all()
+    assert (x.current_player == y.current_player).all() and (x.rewards == y.rewards).all()
+    assert (x.terminated == y.terminated).all() and (x.truncated == y.truncated).all()
+
+
+@pytest.mark.parametrize("hero", [False, True])
+def test_threads_write_every_array_as_one_thread_does(hero):
+    # 1100 envs: the outputs are filled in parts of a few hundred rows on the env's threads, the
+    # last part short; one-hand games end often, so final scores, ranks and the episode ids
+    # numbered after the parts are exercised in every part.
+    kw = dict(num_envs=1100, seed=5, mode="single", observation=("tokens",))
+    if hero:
+        kw.update(opponents="random", hero_seats=np.arange(1100) % 4)
+    a = play(rinshan.make(num_threads=1, **kw), 120)
+    b = play(rinshan.make(num_threads=2, **kw), 120)
+    assert sum(int(x.terminated.sum()) for x in a) > 1100
+    for x, y in zip(a, b):
+        same_timestep(x, y)
+    # What every row must show whatever part it is filled in: final scores are the start plus
+    # the rewards, places only where a game ended, ids new exactly where one did, the hero flag
+    # on the hero's turns only.
+    sums = np.zeros((1100, 4))
+    seen = set(b[0].info["episode_id"].tolist())
+    assert len(seen) == 1100
+    for prev, ts in zip(b, b[1:]):
+        sums += ts.rewards * ~ts.info["illegal"][:, None]
+        end = ts.terminated
+        assert (ts.info["final_scores"][end] == 25000 + np.round(sums[end] * 100)).all()
+        assert (ts.info["final_rank"][~end] == -1).all()
+        sums[end] = 0
+        moved = ts.info["episode_id"] != prev.info["episode_id"]
+        assert (moved == prev.terminated).all()
+        new = ts.info["episode_id"][moved].tolist()
+        assert not seen & set(new) and len(set(new)) == len(new)
+        seen |= set(new)
+        if hero:
+            on = ts.info["hero"]
+            assert (ts.current_player[on] == (np.arange(1100) % 4)[on]).all() and on.any()
+
+
 def test_reset_with_a_seed_repeats_and_without_deals_new_games():
     env = rinshan.make(num_envs=8, num_threads=1)
     first = env.reset(seed=5).copy()

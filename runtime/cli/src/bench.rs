@@ -3,7 +3,7 @@
 //! `rinshan bench env`: environment steps per second of random self-play by batch size.
 //! `rinshan bench render`: boards drawn per second (decode, SVG, PNG) from self-play positions.
 
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 use rinshan_engine::env::{Backend, Config, Env};
 use rinshan_engine::gpu::{Gpu, Kernel};
@@ -46,6 +46,11 @@ pub enum What {
         /// current players every step, measured beside the same batch without them
         #[arg(long, value_delimiter = ',')]
         observe: Vec<Form>,
+        /// Microseconds the calling thread sleeps between steps, as a learner does while it
+        /// updates: on a machine whose idle cores wake slowly (virtual machines) the next
+        /// parallel step pays for the wake-up; not counted in either figure
+        #[arg(long, default_value_t = 0)]
+        idle_us: u64,
     },
     /// Boards drawn per second on one thread: decoding a state, writing the SVG (page fragment
     /// and standalone file), rasterising the PNG; positions from rule-agent self-play
@@ -82,13 +87,21 @@ pub fn run(what: What) -> Result<(), CliError> {
             seconds_per_point,
             batches,
             observe,
-        } => env_bench(&game, seconds_per_point, &batches, &observe),
+            idle_us,
+        } => env_bench(
+            &game,
+            seconds_per_point,
+            &batches,
+            &observe,
+            Duration::from_micros(idle_us),
+        ),
     }
 }
 
 /// Env steps per second at one batch size: (env only, env + policy). The policy (uniform over the
-/// mask's set bits) runs on the calling thread between steps; `env only` times the `step` calls.
-fn env_point(config: Config, seconds: f64) -> Result<(f64, f64), CliError> {
+/// mask's set bits) runs on the calling thread between steps, then it sleeps `idle`; `env only`
+/// times the `step` calls, `env + policy` all but the sleeps.
+fn env_point(config: Config, seconds: f64, idle: Duration) -> Result<(f64, f64), CliError> {
     let b = config.batch;
     let seed = config.seed;
     let mut env = Env::new(config).map_err(CliError::failure)?;
@@ -97,11 +110,17 @@ fn env_point(config: Config, seconds: f64) -> Result<(f64, f64), CliError> {
     let mut step = env.reset().map_err(CliError::failure)?;
     let mut warm = 0;
     let mut env_time = 0.0;
+    let mut idle_time = 0.0;
     let mut steps = 0u64;
     let mut started = Instant::now();
     loop {
         for (i, a) in actions.iter_mut().enumerate() {
             *a = rngs[i].pick_legal(&step.legal_action_mask[i]);
+        }
+        if !idle.is_zero() {
+            let t = Instant::now();
+            std::thread::sleep(idle);
+            idle_time += t.elapsed().as_secs_f64();
         }
         let t = Instant::now();
         step = env.step(&actions).map_err(CliError::failure)?;
@@ -110,18 +129,25 @@ fn env_point(config: Config, seconds: f64) -> Result<(f64, f64), CliError> {
         if warm < 3 {
             warm += 1;
             started = Instant::now();
+            idle_time = 0.0;
             continue;
         }
         env_time += dt;
         steps += b as u64;
-        let total = started.elapsed().as_secs_f64();
+        let total = started.elapsed().as_secs_f64() - idle_time;
         if total >= seconds {
             return Ok((steps as f64 / env_time, steps as f64 / total));
         }
     }
 }
 
-fn env_bench(game: &GameArgs, seconds: f64, batches: &[usize], observe: &[Form]) -> Result<(), CliError> {
+fn env_bench(
+    game: &GameArgs,
+    seconds: f64,
+    batches: &[usize],
+    observe: &[Form],
+    idle: Duration,
+) -> Result<(), CliError> {
     if seconds.is_nan() || seconds <= 0.0 || batches.is_empty() || batches.contains(&0) {
         return Err(CliError::input(
             "--seconds-per-point must be positive and --batches positive sizes",
@@ -158,6 +184,12 @@ fn env_bench(game: &GameArgs, seconds: f64, batches: &[usize], observe: &[Form])
         "  env steps/s time the step calls only (state update, view, readback); +policy includes choosing the actions"
     );
     println!("  ratio = env steps/s over the batch-1 figure of the first row");
+    if !idle.is_zero() {
+        println!(
+            "  the calling thread sleeps {} us between steps (not counted)",
+            idle.as_micros()
+        );
+    }
     if !observe.is_empty() {
         let names: Vec<&str> = observe.iter().map(|f| f.name()).collect();
         let bytes: usize = observe.iter().map(|f| f.bytes()).sum();
@@ -181,7 +213,7 @@ fn env_bench(game: &GameArgs, seconds: f64, batches: &[usize], observe: &[Form])
             );
         }
         for &b in batches {
-            let (env_rate, with_policy) = env_point(config(b, threads), seconds)?;
+            let (env_rate, with_policy) = env_point(config(b, threads), seconds, idle)?;
             let base = *base.get_or_insert(env_rate);
             if observe.is_empty() {
                 println!(
@@ -193,7 +225,7 @@ fn env_bench(game: &GameArgs, seconds: f64, batches: &[usize], observe: &[Form])
                     observe: observe.to_vec(),
                     ..config(b, threads)
                 };
-                let (obs_rate, _) = env_point(observed, seconds)?;
+                let (obs_rate, _) = env_point(observed, seconds, idle)?;
                 println!(
                     "  {b:>7} {env_rate:>14.0} {:>8.2}x {with_policy:>16.0} {obs_rate:>16.0} {:>12.2}x",
                     env_rate / base,

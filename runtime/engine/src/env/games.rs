@@ -1,5 +1,7 @@
 //! [`Env`]: the batch of games, its configuration checks, resets and steps on either backend.
 
+use rayon::prelude::*;
+
 use super::config::{Backend, Config, EnvError};
 use super::cpu::{CpuEnv, PARALLEL_MIN};
 use super::gpu::GpuEnv;
@@ -223,6 +225,16 @@ impl Env {
     /// The outcome of the last reset or step.
     pub fn last(&self) -> &Step {
         &self.step
+    }
+
+    /// Runs `job` on every part with the threads the step uses (the env's pool, rayon's global
+    /// pool, or only the calling thread when the env steps serially or on the GPU): for callers
+    /// that copy a step's rows into arrays of their own, split by rows as the envs are.
+    pub fn for_each_part<T: Send>(&self, parts: Vec<T>, job: impl Fn(T) + Send + Sync) {
+        match &self.backing {
+            Backing::Cpu(cpu) if !cpu.serial => cpu.install(|| parts.into_par_iter().for_each(job)),
+            _ => parts.into_iter().for_each(job),
+        }
     }
 
     /// New games in every env: env `i` is seeded from `(config.seed, i, r)` where `r` counts the
