@@ -10,7 +10,7 @@ use pyo3::prelude::*;
 use rinshan_engine::env::{Backend, Env, EnvError, Mode};
 use rinshan_engine::Variant;
 use rinshan_logs::mjai::batch::BatchBots;
-use rinshan_logs::mjai::bot::{BotSpec, Dialect};
+use rinshan_logs::mjai::bot::{check_games, wait, BotSpec, Dialect, Unplayable};
 use rinshan_logs::mjai::seat::MjaiEntrant;
 
 use crate::env::{env_error, parse};
@@ -34,10 +34,7 @@ pub(crate) struct Opponents {
 }
 
 fn seconds(what: &str, s: f64) -> PyResult<Duration> {
-    Duration::try_from_secs_f64(s)
-        .ok()
-        .filter(|d| !d.is_zero())
-        .ok_or_else(|| PyValueError::new_err(format!("{what} {s} is not a positive number of seconds")))
+    wait(s).ok_or_else(|| PyValueError::new_err(format!("{what} {s} is not a positive number of seconds")))
 }
 
 impl Opponents {
@@ -54,16 +51,14 @@ impl Opponents {
                 "opponents=\"mjai:COMMAND\" needs the bot's command line",
             ));
         }
-        if variant != Variant::Red || mode == Mode::Single {
-            return Err(PyValueError::new_err(
-                "MJAI opponents play the red rules (variant=\"red\") in east or half games",
-            ));
-        }
-        if backend != Backend::Cpu {
-            return Err(PyValueError::new_err(
-                "MJAI opponents need backend=\"cpu\": each bot follows its game's state after every step",
-            ));
-        }
+        check_games(variant, mode, backend).map_err(|e| {
+            PyValueError::new_err(match e {
+                Unplayable::Rules => "MJAI opponents play the red rules (variant=\"red\") in east or half games",
+                Unplayable::Backend => {
+                    "MJAI opponents need backend=\"cpu\": each bot follows its game's state after every step"
+                }
+            })
+        })?;
         if num_envs > MAX_BOT_GAMES {
             return Err(PyValueError::new_err(format!(
                 "num_envs {num_envs} with MJAI opponents would run {} bot processes; at most \

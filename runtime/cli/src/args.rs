@@ -6,7 +6,7 @@ use std::time::Duration;
 use rinshan_engine::agents::Agent;
 use rinshan_engine::env::{Backend, Config, Mode};
 use rinshan_engine::Variant;
-use rinshan_logs::mjai::bot::{BotSpec, Dialect};
+use rinshan_logs::mjai::bot::{check_games, wait, BotSpec, Dialect, Unplayable};
 use rinshan_logs::mjai::seat::MjaiEntrant;
 
 use crate::error::CliError;
@@ -111,10 +111,7 @@ impl std::str::FromStr for SeatArg {
 }
 
 fn seconds(flag: &str, s: f64) -> Result<Duration, CliError> {
-    Duration::try_from_secs_f64(s)
-        .ok()
-        .filter(|d| !d.is_zero())
-        .ok_or_else(|| CliError::input(format!("{flag} {s} is not a positive number of seconds")))
+    wait(s).ok_or_else(|| CliError::input(format!("{flag} {s} is not a positive number of seconds")))
 }
 
 impl std::fmt::Display for SeatArg {
@@ -156,16 +153,15 @@ impl MjaiArgs {
 
     /// Why MJAI bots cannot play these games, if they cannot.
     pub fn check_rules(variant: Variant, mode: Mode, backend: Option<Backend>) -> Result<(), CliError> {
-        if variant != Variant::Red || mode == Mode::Single {
-            return Err(CliError::input(
-                "MJAI bots play the red rules (--variant red) in east or half games (--mode east|half)",
-            ));
-        }
-        if backend == Some(Backend::Gpu) {
-            return Err(CliError::input(
-                "MJAI bots need --backend cpu: each bot follows its game's state after every step",
-            ));
-        }
-        Ok(())
+        check_games(variant, mode, backend.unwrap_or(Backend::Cpu)).map_err(|e| {
+            CliError::input(match e {
+                Unplayable::Rules => {
+                    "MJAI bots play the red rules (--variant red) in east or half games (--mode east|half)"
+                }
+                Unplayable::Backend => {
+                    "MJAI bots need --backend cpu: each bot follows its game's state after every step"
+                }
+            })
+        })
     }
 }

@@ -11,9 +11,10 @@ use serde::Serialize;
 
 use rinshan_engine::agents::Agent;
 use rinshan_engine::arena::refused_action;
-use rinshan_engine::env::{events as ev, Config, Env, Mode};
+use rinshan_engine::env::{events as ev, Backend, Config, Env, Mode};
 use rinshan_engine::generated::kernel::{self, GameState};
 use rinshan_engine::{Tile, Variant};
+use rinshan_logs::mjai::bot::check_games;
 use rinshan_logs::tenhou::write::Recorder;
 use rinshan_render::{Board, Options, RoundEndInput, TileMode};
 
@@ -135,7 +136,7 @@ impl Session {
             Some(Opponent::Bot(b)) => Some(b),
             _ => None,
         });
-        if bot_seats.iter().any(Option::is_some) && (setup.variant != Variant::Red || setup.mode == Mode::Single) {
+        if bot_seats.iter().any(Option::is_some) && check_games(setup.variant, setup.mode, Backend::Cpu).is_err() {
             return Err("MJAI bots play the red rules in east or half games".into());
         }
         let bots = match bot_seats.iter().any(Option::is_some) {

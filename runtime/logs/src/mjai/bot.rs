@@ -21,6 +21,9 @@ use std::sync::{Arc, Mutex};
 use std::thread;
 use std::time::Duration;
 
+use rinshan_engine::env::{Backend, Mode};
+use rinshan_engine::Variant;
+
 use super::event::Event;
 
 /// The longest reply line read; a bot that writes more without a newline has failed.
@@ -46,6 +49,33 @@ impl std::str::FromStr for Dialect {
             other => Err(format!("unknown MJAI dialect `{other}` (app or stdio)")),
         }
     }
+}
+
+/// Why MJAI bots cannot play some games (each front end words it in its own terms).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Unplayable {
+    /// The protocol's events and the bots know the red rules, and a bot follows a whole east
+    /// or half game: other variants and single hands are not theirs.
+    Rules,
+    /// Each bot follows its game's state after every step, which the GPU backend keeps on the
+    /// device.
+    Backend,
+}
+
+/// Whether MJAI bots can play games of these rules on this backend.
+pub fn check_games(variant: Variant, mode: Mode, backend: Backend) -> Result<(), Unplayable> {
+    if variant != Variant::Red || mode == Mode::Single {
+        return Err(Unplayable::Rules);
+    }
+    if backend != Backend::Cpu {
+        return Err(Unplayable::Backend);
+    }
+    Ok(())
+}
+
+/// A wait given in seconds (`--mjai-timeout`, `mjai_timeout=`): only a positive, finite number is one.
+pub fn wait(seconds: f64) -> Option<Duration> {
+    Duration::try_from_secs_f64(seconds).ok().filter(|d| !d.is_zero())
 }
 
 /// How to run a bot.
