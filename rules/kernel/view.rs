@@ -101,28 +101,28 @@ fn gather(s: &mut GameState, seat: u32) -> Seen {
     }
 }
 
-fn put_byte(out: &mut [u32; 544], i: u32, v: u32) {
-    out[(i / 4u32) as usize] |= (v & 255u32) << ((i % 4u32) * 8u32);
+fn put_byte(o: &mut ObsPlanes, i: u32, v: u32) {
+    o.planes[(i / 4u32) as usize] |= (v & 255u32) << ((i % 4u32) * 8u32);
 }
 
-fn put_tok(out: &mut [u32; 254], i: u32, v: u32) {
-    out[(i / 4u32) as usize] |= (v & 255u32) << ((i % 4u32) * 8u32);
+fn put_tok(o: &mut ObsTokens, i: u32, v: u32) {
+    o.words[(i / 4u32) as usize] |= (v & 255u32) << ((i % 4u32) * 8u32);
 }
 
-fn put_plane(out: &mut [u32; 544], row: u32, t: u32, v: u32) {
-    put_byte(out, row * 34u32 + t, v);
+fn put_plane(o: &mut ObsPlanes, row: u32, t: u32, v: u32) {
+    put_byte(o, row * 34u32 + t, v);
 }
 
 // Adds to a cell that stays below 256 (counts, turn numbers): no carry into the next byte.
-fn add_plane(out: &mut [u32; 544], row: u32, t: u32, v: u32) {
+fn add_plane(o: &mut ObsPlanes, row: u32, t: u32, v: u32) {
     let i: u32 = row * 34u32 + t;
-    out[(i / 4u32) as usize] += v << ((i % 4u32) * 8u32);
+    o.planes[(i / 4u32) as usize] += v << ((i % 4u32) * 8u32);
 }
 
-fn set_plane(out: &mut [u32; 544], row: u32, t: u32, v: u32) {
+fn set_plane(o: &mut ObsPlanes, row: u32, t: u32, v: u32) {
     let i: u32 = row * 34u32 + t;
     let at: u32 = (i % 4u32) * 8u32;
-    out[(i / 4u32) as usize] = (out[(i / 4u32) as usize] & !(255u32 << at)) | (v << at);
+    o.planes[(i / 4u32) as usize] = (o.planes[(i / 4u32) as usize] & !(255u32 << at)) | (v << at);
 }
 
 // Four bits to the low bit of four bytes (the shifted copies of `n` do not overlap, so no carry).
@@ -132,17 +132,17 @@ fn spread4(n: u32) -> u32 {
 
 // Sets the cells of a row whose types are in `set` (34 bits) to 1, a word (four cells) at a time.
 // A row starts at a word boundary (even rows) or half-way into one (odd rows: 34 = 8 * 4 + 2).
-fn put_set(out: &mut [u32; 544], row: u32, set: [u32; 2]) {
+fn put_set(o: &mut ObsPlanes, row: u32, set: [u32; 2]) {
     let w: u32 = row * 34u32 / 4u32;
     if (row & 1u32) == 0u32 {
         for j in 0u32..8u32 {
-            out[(w + j) as usize] |= spread4(set[0] >> (j * 4u32));
+            o.planes[(w + j) as usize] |= spread4(set[0] >> (j * 4u32));
         }
-        out[(w + 8u32) as usize] |= spread4(set[1] & 3u32);
+        o.planes[(w + 8u32) as usize] |= spread4(set[1] & 3u32);
     } else {
-        out[w as usize] |= spread4(set[0] & 3u32) << 16u32;
+        o.planes[w as usize] |= spread4(set[0] & 3u32) << 16u32;
         for j in 0u32..8u32 {
-            out[(w + 1u32 + j) as usize] |= spread4((set[0] >> (2u32 + j * 4u32)) | (set[1] << (30u32 - j * 4u32)));
+            o.planes[(w + 1u32 + j) as usize] |= spread4((set[0] >> (2u32 + j * 4u32)) | (set[1] << (30u32 - j * 4u32)));
         }
     }
 }
@@ -260,7 +260,7 @@ fn bit_hi(t: u32) -> u32 {
 // One pass over the round's log: the riichi tile and called-in rows of each seat, and the tiles
 // safe against each seat (genbutsu), by absolute seat: its own discards, anything discarded
 // since its last discard, and anything discarded after its riichi declaration.
-fn log_planes(s: &mut GameState, seat: u32, out: &mut [u32; 544]) -> [u32; 8] {
+fn log_planes(s: &mut GameState, seat: u32, o: &mut ObsPlanes) -> [u32; 8] {
     let mut since: [u32; 8] = [0u32; 8];
     let mut after_riichi: [u32; 8] = [0u32; 8];
     let mut riichi: u32 = 0u32;
@@ -272,12 +272,12 @@ fn log_planes(s: &mut GameState, seat: u32, out: &mut [u32; 544]) -> [u32; 8] {
             riichi |= 1u32 << a;
         }
         if k == EV_CHI || k == EV_PON || k == EV_OPEN_KAN {
-            put_plane(out, P_SEAT + rel(seat, a) * P_SEAT_ROWS + P_SEAT_CALLED_IN, value_type(log_tile(e)), 1u32);
+            put_plane(o, P_SEAT + rel(seat, a) * P_SEAT_ROWS + P_SEAT_CALLED_IN, value_type(log_tile(e)), 1u32);
         }
         if k == EV_DISCARD {
             let t: u32 = value_type(log_tile(e));
             if (log_flags(e) & LOG_RIICHI_TILE) != 0u32 {
-                put_plane(out, P_SEAT + rel(seat, a) * P_SEAT_ROWS + P_SEAT_RIICHI_TILE, t, 1u32);
+                put_plane(o, P_SEAT + rel(seat, a) * P_SEAT_ROWS + P_SEAT_RIICHI_TILE, t, 1u32);
             }
             // The discarder's set starts again; every other seat's gains the tile.
             let lo: u32 = bit_lo(t);
@@ -299,9 +299,9 @@ fn log_planes(s: &mut GameState, seat: u32, out: &mut [u32; 544]) -> [u32; 8] {
     safe
 }
 
-fn mask_row(out: &mut [u32; 544], mask: [u32; 3], a: u32, row: u32, t: u32) {
+fn mask_row(o: &mut ObsPlanes, mask: [u32; 3], a: u32, row: u32, t: u32) {
     if mask_has(mask, a) {
-        put_plane(out, row, t, 1u32);
+        put_plane(o, row, t, 1u32);
     }
 }
 
@@ -311,9 +311,26 @@ pub fn observe_planes(state: GameState, arg: u32) -> ObsPlanes {
 }
 
 fn planes_of(s: &mut GameState, arg: u32) -> ObsPlanes {
+    let mut o: ObsPlanes = ObsPlanes {
+        planes: [0u32; 544],
+        scalars: [0u32; 24],
+    };
+    write_planes(s, arg, &mut o);
+    o
+}
+
+// The host's form of `observe_planes`: written in place into the caller's record (any contents),
+// not built in a local and copied out (the 2.2 KB copy was a tenth of the planes' profile; zeroing
+// the record in place, its first touch, costs part of that back).
+pub fn planes_into(s: &mut GameState, arg: u32, o: &mut ObsPlanes) {
+    o.planes = [0u32; 544];
+    write_planes(s, arg, o);
+}
+
+// Writes the planes into a zeroed record.
+fn write_planes(s: &mut GameState, arg: u32, o: &mut ObsPlanes) {
     let seat: u32 = observer(s, arg);
     let v: Seen = gather(s, seat);
-    let mut out: [u32; 544] = [0u32; 544];
     // No branch per cell: which cells are set depends on the hand and the table, so such branches
     // are hard to predict; binary rows are gathered as 34-bit sets and written a word at a time.
     let mut held: [u32; 8] = [0u32; 8];
@@ -323,19 +340,19 @@ fn planes_of(s: &mut GameState, arg: u32) -> ObsPlanes {
             held[(k * 2u32) as usize] |= bit_lo(t) * ((c > k) as u32);
             held[(k * 2u32 + 1u32) as usize] |= bit_hi(t) * ((c > k) as u32);
         }
-        put_plane(&mut out, P_SEEN, t, v.seen[t as usize]);
-        put_plane(&mut out, P_DORA, t, v.dora[t as usize]);
+        put_plane(o, P_SEEN, t, v.seen[t as usize]);
+        put_plane(o, P_DORA, t, v.dora[t as usize]);
     }
     for k in 0u32..4u32 {
-        put_set(&mut out, P_HAND + k, [held[(k * 2u32) as usize], held[(k * 2u32 + 1u32) as usize]]);
+        put_set(o, P_HAND + k, [held[(k * 2u32) as usize], held[(k * 2u32 + 1u32) as usize]]);
     }
     for suit in 0u32..3u32 {
-        put_plane(&mut out, P_RED, suit * 9u32 + 4u32, holds_red(s, seat, suit) as u32);
-        put_plane(&mut out, P_RED_SEEN, suit * 9u32 + 4u32, (v.red_seen >> suit) & 1u32);
+        put_plane(o, P_RED, suit * 9u32 + 4u32, holds_red(s, seat, suit) as u32);
+        put_plane(o, P_RED_SEEN, suit * 9u32 + 4u32, (v.red_seen >> suit) & 1u32);
     }
     if v.decision == DECISION_TURN || v.decision == DECISION_RIICHI_DISCARD {
         if s.drawn != NO_TILE_VALUE {
-            put_plane(&mut out, P_DRAWN, value_type(s.drawn), 1u32);
+            put_plane(o, P_DRAWN, value_type(s.drawn), 1u32);
         }
         let m: [u32; 3] = s.mask;
         // A red and a black five are one type here.
@@ -347,54 +364,51 @@ fn planes_of(s: &mut GameState, arg: u32) -> ObsPlanes {
         if mask_has(m, ACTION_TSUMOGIRI) {
             set_add(&mut legal, value_type(s.drawn));
         }
-        put_set(&mut out, P_LEGAL_DISCARD, legal);
+        put_set(o, P_LEGAL_DISCARD, legal);
         for t in 0u32..34u32 {
-            put_plane(&mut out, P_SELF_KAN, t, mask_has(m, ACTION_SELF_KAN + t) as u32);
+            put_plane(o, P_SELF_KAN, t, mask_has(m, ACTION_SELF_KAN + t) as u32);
         }
     }
     if v.decision == DECISION_CLAIM || v.decision == DECISION_CHANKAN {
         let t: u32 = value_type(s.claim_tile);
         let m: [u32; 3] = s.mask;
-        put_plane(&mut out, P_TARGET, t, 1u32);
+        put_plane(o, P_TARGET, t, 1u32);
         if mask_has(m, ACTION_CHI_LEFT) || mask_has(m, ACTION_CHI_LEFT_RED) {
-            put_plane(&mut out, P_CHI_LOW, t, 1u32);
+            put_plane(o, P_CHI_LOW, t, 1u32);
         }
         if mask_has(m, ACTION_CHI_MIDDLE) || mask_has(m, ACTION_CHI_MIDDLE_RED) {
-            put_plane(&mut out, P_CHI_MIDDLE, t, 1u32);
+            put_plane(o, P_CHI_MIDDLE, t, 1u32);
         }
         if mask_has(m, ACTION_CHI_RIGHT) || mask_has(m, ACTION_CHI_RIGHT_RED) {
-            put_plane(&mut out, P_CHI_HIGH, t, 1u32);
+            put_plane(o, P_CHI_HIGH, t, 1u32);
         }
         if mask_has(m, ACTION_PON) || mask_has(m, ACTION_PON_RED) {
-            put_plane(&mut out, P_PON, t, 1u32);
+            put_plane(o, P_PON, t, 1u32);
         }
-        mask_row(&mut out, m, ACTION_OPEN_KAN, P_OPEN_KAN, t);
+        mask_row(o, m, ACTION_OPEN_KAN, P_OPEN_KAN, t);
     }
-    put_set(&mut out, P_WAITS, own_waits(s, seat));
+    put_set(o, P_WAITS, own_waits(s, seat));
     let round_wind: u32 = EAST + (s.round / 4u32) % 4u32;
     let seat_wind: u32 = EAST + rel(s.dealer, seat);
-    put_plane(&mut out, P_YAKUHAI, round_wind, 1u32 + (round_wind == seat_wind) as u32);
+    put_plane(o, P_YAKUHAI, round_wind, 1u32 + (round_wind == seat_wind) as u32);
     if round_wind != seat_wind {
-        put_plane(&mut out, P_YAKUHAI, seat_wind, 1u32);
+        put_plane(o, P_YAKUHAI, seat_wind, 1u32);
     }
     for t in FIRST_DRAGON..34u32 {
-        put_plane(&mut out, P_YAKUHAI, t, 1u32);
+        put_plane(o, P_YAKUHAI, t, 1u32);
     }
     for i in 0u32..s.dora_revealed {
         let t: u32 = value_type(wall_tile(s, WALL_DORA + i));
         let at: u32 = P_DORA_INDICATORS * 34u32 + t;
-        out[(at / 4u32) as usize] += 1u32 << ((at % 4u32) * 8u32);
+        o.planes[(at / 4u32) as usize] += 1u32 << ((at % 4u32) * 8u32);
     }
-    view_seat_planes(s, seat, &mut out);
-    ObsPlanes {
-        planes: out,
-        scalars: view_scalars(s, v),
-    }
+    view_seat_planes(s, seat, o);
+    o.scalars = view_scalars(s, v);
 }
 
 // Rows P_SEAT.. : each seat's river, melds and the tiles safe against it.
-fn view_seat_planes(s: &mut GameState, seat: u32, out: &mut [u32; 544]) {
-    let safe: [u32; 8] = log_planes(s, seat, out);
+fn view_seat_planes(s: &mut GameState, seat: u32, o: &mut ObsPlanes) {
+    let safe: [u32; 8] = log_planes(s, seat, o);
     for j in 0u32..4u32 {
         let q: u32 = (seat + j) % 4u32;
         let base: u32 = P_SEAT + j * P_SEAT_ROWS;
@@ -408,38 +422,38 @@ fn view_seat_planes(s: &mut GameState, seat: u32, out: &mut [u32; 544]) {
             let e: u32 = river_entry(s, q, i);
             let t: u32 = value_type(e & 63u32);
             last = t;
-            add_plane(out, base + P_SEAT_DISCARDED, t, 1u32);
-            add_plane(out, base + P_SEAT_TEDASHI, t, ((e & 128u32) == 0u32) as u32);
+            add_plane(o, base + P_SEAT_DISCARDED, t, 1u32);
+            add_plane(o, base + P_SEAT_TEDASHI, t, ((e & 128u32) == 0u32) as u32);
             let lo: u32 = bit_lo(t);
             let hi: u32 = bit_hi(t);
             let first: bool = ((before_lo & lo) | (before_hi & hi)) == 0u32;
-            add_plane(out, base + P_SEAT_FIRST_TURN, t, (i + 1u32) * (first as u32));
+            add_plane(o, base + P_SEAT_FIRST_TURN, t, (i + 1u32) * (first as u32));
             before_lo |= lo;
             before_hi |= hi;
-            add_plane(out, base + P_SEAT_CALLED_AWAY, t, (e >> 6u32) & 1u32);
-            set_plane(out, base + P_SEAT_LAST_TURN, t, i + 1u32);
+            add_plane(o, base + P_SEAT_CALLED_AWAY, t, (e >> 6u32) & 1u32);
+            set_plane(o, base + P_SEAT_LAST_TURN, t, i + 1u32);
         }
         if len > 0u32 {
-            put_plane(out, base + P_SEAT_LAST_DISCARD, last, 1u32);
+            put_plane(o, base + P_SEAT_LAST_DISCARD, last, 1u32);
         }
         for i in 0u32..meld_count(s, q) {
             let m: u32 = s.melds[(q * 4u32 + i) as usize];
             let k: u32 = meld_kind(m);
             let t: u32 = meld_tile(m);
             if k == MELD_CHI {
-                add_plane(out, base + P_SEAT_MELD_TILES, t, 1u32);
-                add_plane(out, base + P_SEAT_MELD_TILES, t + 1u32, 1u32);
-                add_plane(out, base + P_SEAT_MELD_TILES, t + 2u32, 1u32);
+                add_plane(o, base + P_SEAT_MELD_TILES, t, 1u32);
+                add_plane(o, base + P_SEAT_MELD_TILES, t + 1u32, 1u32);
+                add_plane(o, base + P_SEAT_MELD_TILES, t + 2u32, 1u32);
             } else if k == MELD_PON {
-                add_plane(out, base + P_SEAT_MELD_TILES, t, 3u32);
+                add_plane(o, base + P_SEAT_MELD_TILES, t, 3u32);
             } else {
-                add_plane(out, base + P_SEAT_MELD_TILES, t, 4u32);
+                add_plane(o, base + P_SEAT_MELD_TILES, t, 4u32);
             }
             if k == MELD_CLOSED_KAN {
-                add_plane(out, base + P_SEAT_CLOSED_KAN, t, 1u32);
+                add_plane(o, base + P_SEAT_CLOSED_KAN, t, 1u32);
             }
         }
-        put_set(out, base + P_SEAT_SAFE, [safe[(q * 2u32) as usize], safe[(q * 2u32 + 1u32) as usize]]);
+        put_set(o, base + P_SEAT_SAFE, [safe[(q * 2u32) as usize], safe[(q * 2u32 + 1u32) as usize]]);
     }
 }
 
@@ -449,42 +463,54 @@ pub fn observe_tokens(state: GameState, arg: u32) -> ObsTokens {
 }
 
 fn tokens_of(s: &mut GameState, arg: u32) -> ObsTokens {
+    let mut o: ObsTokens = ObsTokens { words: [0u32; 254] };
+    write_tokens(s, arg, &mut o);
+    o
+}
+
+// The host's form of `observe_tokens`, written in place as `planes_into` is.
+pub fn tokens_into(s: &mut GameState, arg: u32, o: &mut ObsTokens) {
+    o.words = [0u32; 254];
+    write_tokens(s, arg, o);
+}
+
+// Writes the tokens into a zeroed record.
+fn write_tokens(s: &mut GameState, arg: u32, o: &mut ObsTokens) {
     let seat: u32 = observer(s, arg);
     let v: Seen = gather(s, seat);
-    let mut out: [u32; 254] = [0u32; 254];
     for t in 0u32..34u32 {
-        put_tok(&mut out, T_HAND + t, v.hand[t as usize]);
-        put_tok(&mut out, T_SEEN + t, v.seen[t as usize]);
+        put_tok(o, T_HAND + t, v.hand[t as usize]);
+        put_tok(o, T_SEEN + t, v.seen[t as usize]);
     }
     for suit in 0u32..3u32 {
-        put_tok(&mut out, T_HAND_RED + suit, holds_red(s, seat, suit) as u32);
+        put_tok(o, T_HAND_RED + suit, holds_red(s, seat, suit) as u32);
     }
     let mut drawn: u32 = NO_TILE_BYTE;
     if (v.decision == DECISION_TURN || v.decision == DECISION_RIICHI_DISCARD) && s.drawn != NO_TILE_VALUE {
         drawn = s.drawn;
     }
-    put_tok(&mut out, T_DRAWN, drawn);
+    put_tok(o, T_DRAWN, drawn);
     let mut target: u32 = NO_TILE_BYTE;
     if v.decision == DECISION_CLAIM || v.decision == DECISION_CHANKAN {
         target = s.claim_tile;
     }
-    put_tok(&mut out, T_TARGET, target);
+    put_tok(o, T_TARGET, target);
     for j in 0u32..4u32 {
         let q: u32 = (seat + j) % 4u32;
         for i in 0u32..4u32 {
             let at: u32 = T_MELDS + (j * 4u32 + i) * 4u32;
             if i < meld_count(s, q) {
                 let m: u32 = s.melds[(q * 4u32 + i) as usize];
-                put_tok(&mut out, at, meld_kind(m));
-                put_tok(&mut out, at + 1u32, meld_tile(m));
-                put_tok(&mut out, at + 2u32, (m >> MELD_REDS_SHIFT) & 3u32);
+                put_tok(o, at, meld_kind(m));
+                put_tok(o, at + 1u32, meld_tile(m));
+                put_tok(o, at + 2u32, (m >> MELD_REDS_SHIFT) & 3u32);
                 let mut from: u32 = NO_TILE_BYTE;
                 if meld_kind(m) != MELD_CLOSED_KAN {
                     from = (m >> MELD_FROM_SHIFT) & 3u32;
                 }
-                put_tok(&mut out, at + 3u32, from);
+                put_tok(o, at + 3u32, from);
             } else {
-                out[(at / 4u32) as usize] = 0xffffffffu32;
+                o.words[(at / 4u32) as usize] = 0xffffffffu32;
             }
         }
     }
@@ -493,20 +519,19 @@ fn tokens_of(s: &mut GameState, arg: u32) -> ObsTokens {
         if i < s.dora_revealed {
             ind = wall_tile(s, WALL_DORA + i);
         }
-        put_tok(&mut out, T_DORA + i, ind);
+        put_tok(o, T_DORA + i, ind);
     }
     let sc: [u32; 24] = view_scalars(s, v);
     for i in 0u32..24u32 {
-        out[(T_SCALARS / 4u32 + i) as usize] = sc[i as usize];
+        o.words[(T_SCALARS / 4u32 + i) as usize] = sc[i as usize];
     }
-    let n: u32 = view_events(s, seat, &mut out);
-    put_tok(&mut out, T_EVENTS_LEN, n);
-    ObsTokens { words: out }
+    let n: u32 = view_events(s, seat, o);
+    put_tok(o, T_EVENTS_LEN, n);
 }
 
 // The round's public events as tokens [kind, actor (ego), tile or 255, flags], one word each,
 // with each draw as a token of its own (its tile shown to the drawer only).
-fn view_events(s: &mut GameState, seat: u32, out: &mut [u32; 254]) -> u32 {
+fn view_events(s: &mut GameState, seat: u32, o: &mut ObsTokens) -> u32 {
     let mut n: u32 = 0u32;
     let mut live: u32 = 0u32;
     let mut replacement: u32 = 0u32;
@@ -530,7 +555,7 @@ fn view_events(s: &mut GameState, seat: u32, out: &mut [u32; 254]) -> u32 {
                 tile = wall_tile(s, pos);
             }
             if n < TOKEN_EVENTS {
-                out[(base + n) as usize] = EV_DRAW | (rel(seat, a) << 8u32) | (tile << 16u32);
+                o.words[(base + n) as usize] = EV_DRAW | (rel(seat, a) << 8u32) | (tile << 16u32);
                 n += 1u32;
             }
         }
@@ -539,7 +564,7 @@ fn view_events(s: &mut GameState, seat: u32, out: &mut [u32; 254]) -> u32 {
             tile = NO_TILE_BYTE;
         }
         if n < TOKEN_EVENTS {
-            out[(base + n) as usize] = k | (rel(seat, a) << 8u32) | (tile << 16u32) | ((f & !LOG_DREW) << 24u32);
+            o.words[(base + n) as usize] = k | (rel(seat, a) << 8u32) | (tile << 16u32) | ((f & !LOG_DREW) << 24u32);
             n += 1u32;
         }
         if k != EV_DORA {
@@ -551,7 +576,7 @@ fn view_events(s: &mut GameState, seat: u32, out: &mut [u32; 254]) -> u32 {
         if s.current == seat {
             tile = s.drawn;
         }
-        out[(base + n) as usize] = EV_DRAW | (rel(seat, s.current) << 8u32) | (tile << 16u32);
+        o.words[(base + n) as usize] = EV_DRAW | (rel(seat, s.current) << 8u32) | (tile << 16u32);
         n += 1u32;
     }
     n

@@ -12,8 +12,32 @@ pub(crate) fn each<T: bytemuck::Pod + Send>(
     serial: bool,
     f: fn(kernel::GameState, u32) -> T,
 ) {
+    rows(out, sts, args, serial, |o: &mut T, s, a| *o = f(*s, a));
+}
+
+/// As [`each`], for a kernel function that writes its record in place: `f(&mut state, arg,
+/// &mut out[i])` on a copy of each state (the kernel takes states as `&mut`), so the record is
+/// not built elsewhere and copied.
+pub(crate) fn each_into<T: bytemuck::Pod + Send>(
+    out: &mut [u32],
+    sts: &[kernel::GameState],
+    args: &[u32],
+    serial: bool,
+    f: fn(&mut kernel::GameState, u32, &mut T),
+) {
+    rows(out, sts, args, serial, |o: &mut T, s, a| f(&mut { *s }, a, o));
+}
+
+/// `one(record i, state i, arg i)` over the batch, in parallel unless `serial`.
+fn rows<T: bytemuck::Pod + Send>(
+    out: &mut [u32],
+    sts: &[kernel::GameState],
+    args: &[u32],
+    serial: bool,
+    one: impl Fn(&mut T, &kernel::GameState, u32) + Sync + Send,
+) {
     let outs: &mut [T] = bytemuck::cast_slice_mut(out);
-    let one = |((o, s), a): ((&mut T, &kernel::GameState), &u32)| *o = f(*s, *a);
+    let one = |((o, s), a): ((&mut T, &kernel::GameState), &u32)| one(o, s, *a);
     if serial {
         outs.iter_mut().zip(sts).zip(args).for_each(one);
     } else {

@@ -1,7 +1,7 @@
 //! The observation forms, and writing them on the CPU.
 
 use super::fields::{Field, ANALYSIS_FIELDS, ORACLE_FIELDS, PLANES_FIELDS, TOKENS_FIELDS};
-use crate::batch::each;
+use crate::batch::{each, each_into};
 use crate::generated::kernel as k;
 use crate::names::UnknownName;
 
@@ -104,8 +104,8 @@ pub(crate) fn observe_cpu<S: bytemuck::Pod>(
 ) {
     let sts: &[k::GameState] = bytemuck::cast_slice(states);
     with_variant!(variant, v => match form {
-        Form::Planes => each(out, sts, args, serial, v::observe_planes),
-        Form::Tokens => each(out, sts, args, serial, v::observe_tokens),
+        Form::Planes => each_into(out, sts, args, serial, v::planes_into),
+        Form::Tokens => each_into(out, sts, args, serial, v::tokens_into),
         Form::Analysis => each(out, sts, args, serial, v::observe_analysis),
         Form::Oracle => each(out, sts, args, serial, v::observe_oracle),
     })
