@@ -10,7 +10,7 @@ use rinshan_engine::env::{env_seed, Backend, Config, Env, EnvError, Mode, Observ
 use rinshan_engine::observe::Form;
 use rinshan_engine::Variant;
 
-use crate::opponents::{BotOptions, Opponents};
+use crate::opponents::{warn, BotOptions, Opponents};
 
 pub(crate) fn env_error(e: EnvError) -> PyErr {
     match e {
@@ -641,14 +641,15 @@ impl PyEnv {
         for (dst, &src) in self.actions.iter_mut().zip(a) {
             *dst = src as u32;
         }
-        if let Some(bots) = self.bots.as_mut() {
-            bots.act(py, &mut self.actions)?;
-        }
+        let mut faults = match self.bots.as_mut() {
+            Some(bots) => bots.act(py, &mut self.actions)?,
+            None => Vec::new(),
+        };
         self.run(py, Begin::Step, |env, actions| env.step(actions).map(|_| ()))?;
         if let (Some(bots), Some(env)) = (self.bots.as_mut(), self.env.as_ref()) {
-            bots.stepped(py, env, &self.actions)?;
+            faults.extend(bots.stepped(py, env, &self.actions)?);
         }
-        Ok(())
+        warn(py, &faults)
     }
 
     /// One `form` record per env for the seats in `seats` (0..3 each; 4 = the current player):

@@ -96,33 +96,33 @@ impl Opponents {
     }
 
     /// Puts the bots' actions where they act; a failing bot's is illegal (its game ends with
-    /// the penalty) and is reported as a RuntimeWarning.
-    pub(crate) fn act(&mut self, py: Python<'_>, actions: &mut [u32]) -> PyResult<()> {
+    /// the penalty). Returns the failures, for [`warn`] once the step is taken.
+    pub(crate) fn act(&mut self, py: Python<'_>, actions: &mut [u32]) -> PyResult<Vec<String>> {
         let Some(bots) = self.bots.as_mut() else {
             return Err(PyValueError::new_err("reset the env before the first step"));
         };
         let bots = bots.get_mut().unwrap_or_else(|p| p.into_inner());
-        let faults = py.detach(|| bots.act(actions));
-        warn(py, &faults)
+        Ok(py.detach(|| bots.act(actions)))
     }
 
-    /// Tells the bots the step just taken.
-    pub(crate) fn stepped(&mut self, py: Python<'_>, env: &Env, actions: &[u32]) -> PyResult<()> {
+    /// Tells the bots the step just taken; returns the failures, as `act` does.
+    pub(crate) fn stepped(&mut self, py: Python<'_>, env: &Env, actions: &[u32]) -> PyResult<Vec<String>> {
         let Some(bots) = self.bots.as_mut() else {
-            return Ok(());
+            return Ok(Vec::new());
         };
         let bots = bots.get_mut().unwrap_or_else(|p| p.into_inner());
-        let faults = py
-            .detach(|| -> Result<Vec<String>, EnvError> {
-                let after = env.game_states()?;
-                Ok(bots.stepped(actions, after, &env.last().terminated))
-            })
-            .map_err(env_error)?;
-        warn(py, &faults)
+        py.detach(|| -> Result<Vec<String>, EnvError> {
+            let after = env.game_states()?;
+            Ok(bots.stepped(actions, after, &env.last().terminated))
+        })
+        .map_err(env_error)
     }
 }
 
-fn warn(py: Python<'_>, faults: &[String]) -> PyResult<()> {
+/// Reports the bots' failures as RuntimeWarnings. Called after the step: where warnings are
+/// errors the first one raises, and the step it belongs to has been taken all the same (the bots
+/// and the games stay in step).
+pub(crate) fn warn(py: Python<'_>, faults: &[String]) -> PyResult<()> {
     for f in faults {
         let message =
             std::ffi::CString::new(format!("MJAI opponent failed: {f}").replace('\0', " ")).unwrap_or_default();

@@ -75,6 +75,38 @@ def test_a_failing_bot_loses_its_game_with_a_warning():
     env.close()
 
 
+def test_a_failure_raised_as_an_error_still_takes_the_step():
+    # Where warnings are errors the step raises, but only after the step is taken: the failing
+    # bot's game ends by the penalty, as it does when the warning is only shown.
+    env = rinshan.make(
+        "red",
+        mode="east",
+        num_envs=2,
+        observation=(),
+        auto_reset=False,
+        opponents=f"mjai:python3 {SIMPLE} --dialect app --mode die",
+    )
+    ts = env.reset(seeds=[1, 2])
+    lost = np.zeros(2, dtype=bool)
+    raised = 0
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        for _ in range(10_000):
+            try:
+                ts = env.step(np.argmax(ts.legal_action_mask, axis=1))
+            except RuntimeWarning as e:
+                assert "dying on purpose" in str(e)
+                raised += 1
+                ts = env.timestep
+                # The step that raised was taken: the failing bot's illegal action is in it.
+                assert ts.info["illegal"].any()
+            lost |= ts.info["illegal"]
+            if ts.terminated.all():
+                break
+    assert raised >= 1 and ts.terminated.all() and lost.all()
+    env.close()
+
+
 @pytest.mark.parametrize(
     "kwargs, words",
     [
