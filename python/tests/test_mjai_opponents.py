@@ -53,8 +53,9 @@ def test_evaluate_takes_a_bot_as_opponents(cli):
     )
 
 
-def test_a_failing_bot_loses_its_game_with_a_warning():
-    env = rinshan.make(
+def dying_bot_env():
+    """Two east games against a bot that fails at its third decision."""
+    return rinshan.make(
         "red",
         mode="east",
         num_envs=2,
@@ -62,6 +63,10 @@ def test_a_failing_bot_loses_its_game_with_a_warning():
         auto_reset=False,
         opponents=f"mjai:python3 {SIMPLE} --dialect app --mode die",
     )
+
+
+def test_a_failing_bot_loses_its_game_with_a_warning():
+    env = dying_bot_env()
     ts = env.reset(seeds=[1, 2])
     lost = np.zeros(2, dtype=bool)
     with pytest.warns(RuntimeWarning, match="dying on purpose"):
@@ -78,14 +83,7 @@ def test_a_failing_bot_loses_its_game_with_a_warning():
 def test_a_failure_raised_as_an_error_still_takes_the_step():
     # Where warnings are errors the step raises, but only after the step is taken: the failing
     # bot's game ends by the penalty, as it does when the warning is only shown.
-    env = rinshan.make(
-        "red",
-        mode="east",
-        num_envs=2,
-        observation=(),
-        auto_reset=False,
-        opponents=f"mjai:python3 {SIMPLE} --dialect app --mode die",
-    )
+    env = dying_bot_env()
     ts = env.reset(seeds=[1, 2])
     lost = np.zeros(2, dtype=bool)
     raised = 0
