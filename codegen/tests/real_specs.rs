@@ -57,9 +57,9 @@ const ALL_YAKU: [&str; 45] = [
 fn every_variant_loads() {
     assert_eq!(
         rinshan_codegen::variant_names(&rules_dir()),
-        ["mjsoul", "no_red", "red"]
+        ["mjsoul", "mleague", "no_red", "red"]
     );
-    for v in ["red", "no_red", "mjsoul"] {
+    for v in ["red", "no_red", "mjsoul", "mleague"] {
         let spec = load_real(v);
         assert_eq!(spec.variant.name, v);
     }
@@ -71,7 +71,7 @@ fn unknown_variant_lists_the_known_ones() {
         panic!("loaded")
     };
     assert!(
-        e[0].message.contains("no variant `blue`") && e[0].message.contains("mjsoul, no_red, red"),
+        e[0].message.contains("no variant `blue`") && e[0].message.contains("mjsoul, mleague, no_red, red"),
         "{}",
         e[0]
     );
@@ -266,6 +266,38 @@ fn variant_options() {
         (mjsoul.uma, mjsoul.illegal_action_penalty),
         (red.uma, red.illegal_action_penalty)
     );
+    // M-League differs from Tenhou in the rules its spec's header names, and nothing else.
+    let mleague = load_real("mleague").variant;
+    let differ: Vec<(&str, String)> = red
+        .options
+        .iter()
+        .zip(&mleague.options)
+        .filter(|(a, b)| a.name != b.name || a.value != b.value)
+        .map(|(a, b)| (a.name.as_str(), b.value.to_string()))
+        .collect();
+    assert_eq!(
+        differ,
+        [
+            ("kiriage_mangan", "true"),
+            ("kan_dora_at_once", "true"),
+            ("kazoe_yakuman", "false"),
+            ("double_ron", "false"),
+            ("triple_ron_abort", "false"),
+            ("abortive_draws", "false"),
+            ("pao_share_only", "true"),
+            ("pao_pays_honba", "true"),
+            ("riichi_min_points", "0"),
+            ("bust_below_zero", "false"),
+            ("west_extension", "false"),
+            ("dealer_top_stop", "false"),
+        ]
+        .map(|(n, v)| (n, v.to_string()))
+    );
+    // 25,000 start, 30,000 return, uma +30/+10/-10/-30: measured from the start, first place
+    // also takes the 20,000 oka and everyone gives back 5,000.
+    let oka_and_return = [20 - 5, -5, -5, -5];
+    let book = [30, 10, -10, -30];
+    assert_eq!(mleague.uma, std::array::from_fn(|i| book[i] + oka_and_return[i]));
     for v in [&red, &no_red] {
         assert!(!flag(v, "pao_share_only"), "{}", v.name);
     }
@@ -292,6 +324,7 @@ fn variant_options() {
             [
                 "red_fives",
                 "kiriage_mangan",
+                "kan_dora_at_once",
                 "kazoe_yakuman",
                 "multiple_yakuman",
                 "double_yakuman",
@@ -305,6 +338,7 @@ fn variant_options() {
                 "nagashi_mangan",
                 "pao",
                 "pao_share_only",
+                "pao_pays_honba",
                 "starting_points",
                 "riichi_min_points",
                 "bust_below_zero",

@@ -136,6 +136,11 @@ fn draw(s: &mut GameState, seat: u32) {
 
 // The replacement draw after a kan: the dead wall gives one tile and the live wall shrinks by one.
 fn draw_replacement(s: &mut GameState, seat: u32) {
+    if KAN_DORA_AT_ONCE {
+        // An open kan's dora, or an added kan's once no one robbed it, shows before the
+        // replacement tile is drawn, so a rinshan win already counts it.
+        reveal_pending_dora(s);
+    }
     let v: u32 = wall_tile(s, WALL_RINSHAN + s.kans);
     s.kans += 1u32;
     s.live_end -= 1u32;

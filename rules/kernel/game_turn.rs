@@ -146,7 +146,8 @@ fn turn_mask(s: &mut GameState) -> [u32; 3] {
         }
     }
     let concealed: bool = (f & SEAT_CONCEALED) != 0u32;
-    let enough_points: bool = s.scores[p as usize] >= RIICHI_MIN_POINTS as i32;
+    // A minimum of 0 is no minimum: where no one busts (M-League), a seat below zero may riichi.
+    let enough_points: bool = RIICHI_MIN_POINTS == 0u32 || s.scores[p as usize] >= RIICHI_MIN_POINTS as i32;
     if !riichi && concealed && enough_points && s.live_end - s.next_draw >= 4u32 && riichi_possible(s, p) {
         mask_set(&mut m, ACTION_RIICHI);
     }

@@ -158,13 +158,15 @@ fn settle_ron(s: &mut GameState, winner: u32, from: u32, v: u32, chankan: bool, 
     let out: ScoreOutput = score_hand(inp);
     let liable: u32 = liable_seat(s, winner, out);
     if liable < 4u32 && liable != from {
-        // The liable seat pays half of what it covers; the discarder the rest and the honba.
+        // The liable seat pays half of what it covers; the discarder the rest, and the honba
+        // unless PAO_PAYS_HONBA puts them on the liable seat.
         let honba: u32 = inp.honba * HONBA_RON_POINTS;
         let value: u32 = out.ron - honba;
         let share: [u32; 2] = pao_share(out);
         let covered: u32 = value / share[1] * share[0];
-        pay(s, liable, winner, covered / 2u32);
-        pay(s, from, winner, value - covered / 2u32 + honba);
+        let liable_honba: u32 = honba * PAO_PAYS_HONBA as u32;
+        pay(s, liable, winner, covered / 2u32 + liable_honba);
+        pay(s, from, winner, value - covered / 2u32 + honba - liable_honba);
     } else {
         pay(s, from, winner, out.ron);
     }
@@ -189,8 +191,10 @@ fn settle_tsumo(s: &mut GameState, winner: u32) {
             }
             if liable < 4u32 && share[0] < share[1] {
                 // A composite hand: the liable seat pays the pao yakuman's part of each payment,
-                // the payer the rest and its honba.
-                let covered: u32 = (amount - inp.honba * HONBA_TSUMO_POINTS) / share[1] * share[0];
+                // the payer the rest, and its honba unless PAO_PAYS_HONBA puts them on the liable
+                // seat.
+                let honba: u32 = inp.honba * HONBA_TSUMO_POINTS;
+                let covered: u32 = (amount - honba) / share[1] * share[0] + honba * PAO_PAYS_HONBA as u32;
                 pay(s, liable, winner, covered);
                 pay(s, p, winner, amount - covered);
             } else if liable < 4u32 {

@@ -274,6 +274,20 @@ async fn spectate_and_replay(c: &Client, base: &str) {
     let c = c.clone();
     c.goto(&format!("{base}/spectate")).await.expect("the page opens");
     until(&c, "return document.body.dataset.ready === '1'", 20).await;
+    // Every rule set is offered; the spectator watches M-League's.
+    let rules = js(
+        &c,
+        "const v = document.querySelector('[name=variant]');
+         const names = [...v.options].map((o) => o.value);
+         v.value = 'mleague';
+         return names;",
+    )
+    .await;
+    let built: Vec<String> = rinshan_engine::Variant::ALL.iter().map(|v| v.to_string()).collect();
+    assert_eq!(rules, json!(built));
+    for name in ["red", "no-red", "mjsoul", "mleague"] {
+        assert!(built.iter().any(|b| b == name), "{name}: {built:?}");
+    }
     js(&c, "document.querySelector('[name=delay]').value = '50'; document.querySelector('[name=seed]').value = '3'; return true;").await;
     c.find(Locator::Id("start"))
         .await

@@ -134,6 +134,11 @@ fn mjsoul_half_games_are_identical_on_cpu_and_gpu() {
     parity(Variant::Mjsoul);
 }
 
+#[test]
+fn mleague_half_games_are_identical_on_cpu_and_gpu() {
+    parity(Variant::Mleague);
+}
+
 /// Hero mode on both backends: the caller plays one seat at random, the three agents the others.
 #[test]
 fn hero_mode_is_identical_on_cpu_and_gpu() {

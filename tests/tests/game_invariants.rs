@@ -172,6 +172,16 @@ invariant_suite!(
     10_663_486,
     "b72dc0a9ccda8e89"
 );
+// M-League's rules: pinned when the variant was added; red, no-red and mjsoul kept their pins (the
+// options it brought, kan_dora_at_once and pao_pays_honba, are off in all three, and their riichi
+// minimum is not 0). Fewer steps than red: with no West round, random play's games end at South 4.
+invariant_suite!(
+    mleague_random_games_keep_the_invariants,
+    mleague,
+    10_000,
+    7_277_204,
+    "6ad8152ea22e9880"
+);
 
 #[test]
 fn game_state_fits_in_one_kib() {

@@ -42,6 +42,11 @@ fn mjsoul_wgsl_snapshot() {
     insta::assert_snapshot!("mjsoul_wgsl", body(wgsl(Variant::Mjsoul)));
 }
 
+#[test]
+fn mleague_wgsl_snapshot() {
+    insta::assert_snapshot!("mleague_wgsl", body(wgsl(Variant::Mleague)));
+}
+
 /// Size and member offsets of struct `name` in a WGSL module, as naga lays it out.
 fn wgsl_layout(module: &naga::Module, name: &str) -> (u32, Vec<(String, u32)>) {
     let mut layouter = naga::proc::Layouter::default();

@@ -299,13 +299,15 @@ macro_rules! runner {
 runner!(run_red, red);
 runner!(run_no_red, no_red);
 runner!(run_mjsoul, mjsoul);
+runner!(run_mleague, mleague);
 
 fn run(sc: &Scenario) -> Result<(), String> {
     match sc.variant.as_str() {
         "red" => run_red(sc),
         "no_red" => run_no_red(sc),
         "mjsoul" => run_mjsoul(sc),
-        v => Err(format!("unknown variant `{v}` (red, no_red, mjsoul)")),
+        "mleague" => run_mleague(sc),
+        v => Err(format!("unknown variant `{v}` (red, no_red, mjsoul, mleague)")),
     }
 }
 

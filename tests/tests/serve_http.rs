@@ -215,6 +215,42 @@ async fn a_whole_game_through_the_api_replays_from_its_log() {
     assert_eq!(status, StatusCode::NOT_FOUND);
 }
 
+/// Every spec of rules/variants/ is offered to the page with its description, and a game of a
+/// rule set other than Tenhou's starts.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn every_rule_set_is_offered_with_its_description() {
+    let app = app(Limits::default());
+    let (status, text) = get(&app, "/api/agents").await;
+    assert_eq!(status, StatusCode::OK, "{text}");
+    let info = parsed(&text);
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../rules/variants");
+    let mut specs = 0;
+    for entry in std::fs::read_dir(&dir).expect("rules/variants") {
+        let path = entry.expect("an entry").path();
+        let spec: toml::Table = toml::from_str(&std::fs::read_to_string(&path).expect("a spec")).expect("TOML");
+        let name = spec["variant"]["name"].as_str().expect("a name").replace('_', "-");
+        assert!(
+            info["variants"].as_array().is_some_and(|v| v.contains(&json!(name))),
+            "{name}: {info}"
+        );
+        assert_eq!(
+            info["variant_descriptions"][&name],
+            spec["variant"]["description"].as_str().expect("text")
+        );
+        specs += 1;
+    }
+    assert!(
+        specs >= 4 && info["variants"].as_array().is_some_and(|v| v.len() == specs),
+        "{info}"
+    );
+    let v = new_game(
+        &app,
+        json!({"variant": "mleague", "seat": 0, "agents": ["rule", "rule", "rule"]}),
+    )
+    .await;
+    assert_eq!(v["variant"], "mleague", "{v}");
+}
+
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn every_refusal_has_its_status_and_a_message() {
     let app = app(Limits {

@@ -14,7 +14,7 @@ use crate::error::CliError;
 /// `--variant`.
 #[derive(clap::Args, Clone, Debug)]
 pub struct VariantArg {
-    /// Rule variant: a file of rules/variants/ (red, no-red)
+    /// Rule variant: the name of a file of rules/variants/, e.g. red, mjsoul, mleague, no-red
     #[arg(long, default_value = "red")]
     pub variant: Variant,
 }

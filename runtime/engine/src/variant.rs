@@ -1,4 +1,4 @@
-//! The rule variants as users name them (`red`, `no-red`), and what the host reads of their spec.
+//! The rule variants as users name them (`red`, `no-red`, ...), and what the host reads of their spec.
 
 use crate::generated::Variant;
 use crate::names::UnknownName;
@@ -8,6 +8,11 @@ impl Variant {
     pub fn from_name(name: &str) -> Option<Variant> {
         let wanted = name.replace('-', "_");
         Variant::ALL.iter().copied().find(|v| v.name() == wanted)
+    }
+
+    /// The spec's one-line summary of its rules (`[variant] description`).
+    pub fn description(self) -> &'static str {
+        with_variant!(self, v => v::host::VARIANT_DESCRIPTION)
     }
 
     /// Each player's points at the start of a game (`[game] starting_points` of the spec).

@@ -81,6 +81,7 @@ async fn agents(State(store): State<Store>) -> axum::Json<Value> {
     axum::Json(json!({
         "agents": Agent::ALL.iter().map(|a| a.name().to_string()).chain(bots).collect::<Vec<_>>(),
         "variants": Variant::ALL.iter().map(|v| v.to_string()).collect::<Vec<_>>(),
+        "variant_descriptions": Variant::ALL.iter().map(|v| (v.to_string(), Value::from(v.description()))).collect::<serde_json::Map<_, _>>(),
         "modes": Mode::ALL.iter().map(|m| m.name()).collect::<Vec<_>>(),
         "tiles": TileMode::ALL.iter().map(|m| m.name()).collect::<Vec<_>>(),
     }))

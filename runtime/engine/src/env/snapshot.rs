@@ -60,12 +60,7 @@ impl Env {
                 return Err(EnvError::BadState {
                     env,
                     reason: format!(
-                        "its check words do not match: it was edited, or saved by a {} env",
-                        if variant == crate::Variant::Red {
-                            "no-red"
-                        } else {
-                            "red"
-                        }
+                        "its check words do not match: it was edited, or saved by an env of another variant than {variant}"
                     ),
                 });
             }

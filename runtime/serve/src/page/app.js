@@ -39,6 +39,17 @@ async function loadSprite() {
   document.body.dataset.tiles = tiles;
 }
 
+// Every variant the server was built with, its spec's description as the tooltip.
+function fillVariants(names, descriptions) {
+  const sel = document.querySelector("select[name=variant]");
+  names.forEach((n) => {
+    const o = document.createElement("option");
+    o.value = n; o.textContent = n; o.title = descriptions[n] || "";
+    sel.appendChild(o);
+  });
+  sel.value = "red";
+}
+
 function fillAgents(names) {
   const defaults = ["rule", "greedy", "defensive", "rule"];
   document.querySelectorAll("select.agent").forEach((sel, i) => {
@@ -296,6 +307,7 @@ async function init() {
     return;
   }
   const info = await api("GET", "/api/agents");
+  fillVariants(info.variants, info.variant_descriptions);
   fillAgents(info.agents);
   $("setup").addEventListener("submit", start);
   $("leave").addEventListener("click", () => {
