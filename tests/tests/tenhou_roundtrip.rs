@@ -375,6 +375,18 @@ fn the_recorder_says_what_it_cannot_follow() {
         Recorder::new(&no_red),
         Err(WriteError::Variant(Variant::NoRed))
     ));
+    // M-League has neither red's actions (no kyuushu) nor its kan dora, limits or payments.
+    let mut mleague = Env::new(Config::new(Variant::Mleague, 2)).expect("a cpu env");
+    mleague.reset().expect("reset");
+    let err = Recorder::new(&mleague).err().map(|e| e.to_string()).unwrap_or_default();
+    assert!(err.contains("mleague differs"), "{err}");
+    let mut mjsoul = Env::new(Config {
+        mode: Mode::Half,
+        ..Config::new(Variant::Mjsoul, 2)
+    })
+    .expect("a cpu env");
+    mjsoul.reset().expect("reset");
+    assert!(Recorder::new(&mjsoul).is_ok());
     let mut single = env(Mode::Single, 2, 1, false);
     single.reset().expect("reset");
     let err = Recorder::new(&single).err().map(|e| e.to_string()).unwrap_or_default();

@@ -43,8 +43,8 @@ pub struct Args {
     #[command(flatten)]
     mjai: MjaiArgs,
     /// Also write each counted game as DIR/game-<n>.json (n = 1..games), a tenhou.net/6 log that
-    /// `rinshan replay` reads (or .mjson, see --export-format). Red variant, east or half games,
-    /// CPU backend only (the games' states are read after every step)
+    /// `rinshan replay` reads for red (or .mjson, see --export-format). Red or mjsoul, east or half
+    /// games, CPU backend only (the games' states are read after every step)
     #[arg(long, value_name = "DIR")]
     export: Option<PathBuf>,
     /// The format of --export's logs
@@ -360,10 +360,12 @@ pub fn run(args: Args) -> Result<(), CliError> {
 
 /// Why games cannot be exported as asked; creates the folder.
 fn check_export(dir: &Path, config: &Config) -> Result<(), CliError> {
-    if config.variant != Variant::Red {
-        return Err(CliError::input(
-            "--export writes Tenhou logs of the red variant only (--variant red)",
-        ));
+    if !rinshan_logs::tenhou::write::recordable(config.variant) {
+        return Err(CliError::input(format!(
+            "--export writes games of red and of variants that differ from red only in {} (red, mjsoul); not {}",
+            rinshan_logs::tenhou::write::PER_VARIANT.join(", "),
+            config.variant
+        )));
     }
     if config.mode == Mode::Single {
         return Err(CliError::input(

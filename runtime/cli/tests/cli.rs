@@ -309,7 +309,8 @@ fn selfplay_exports_games_that_replay() {
 fn selfplay_export_says_what_it_needs() {
     for (option, value, needle) in [
         ("--backend", "gpu", "--backend cpu"),
-        ("--variant", "no-red", "red variant"),
+        ("--variant", "no-red", "(red, mjsoul); not no-red"),
+        ("--variant", "mleague", "(red, mjsoul); not mleague"),
         ("--mode", "single", "east or half"),
     ] {
         let out = rinshan(&["selfplay", "--games", "1", option, value, "--export", "/tmp/unused"]);
@@ -668,13 +669,26 @@ fn mjai_bot_reactions_pass_libriichi() {
 
 #[test]
 fn mjai_logs_replay_in_riichienv_with_every_decision_legal_and_every_win_scored_alike() {
+    riichienv_replays("red", "tenhou");
+}
+
+/// Mahjong Soul's rules against RiichiEnv's `default_mjsoul()` preset.
+#[test]
+fn mjsoul_mjai_logs_replay_in_riichienv_under_its_mahjong_soul_rules() {
+    riichienv_replays("mjsoul", "mjsoul");
+}
+
+/// 40 half games of `variant` exported as MJAI and replayed in RiichiEnv under its `rule` preset.
+fn riichienv_replays(variant: &str, rule: &str) {
     // PyPI's riichienv in the test virtualenv (see runtime/logs/tests/mjai_libriichi.rs); the
     // check and RiichiEnv's replay quirks it corrects: tests/data/mjai/riichienv_check.py.
     let Some(python) = mjai_python() else { return };
-    let dir = std::env::temp_dir().join(format!("rinshan-riichienv-{}", std::process::id()));
+    let dir = std::env::temp_dir().join(format!("rinshan-riichienv-{variant}-{}", std::process::id()));
     let export = dir.to_string_lossy().to_string();
     let out = rinshan(&[
         "selfplay",
+        "--variant",
+        variant,
         "--games",
         "40",
         "--batch",
@@ -689,13 +703,14 @@ fn mjai_logs_replay_in_riichienv_with_every_decision_legal_and_every_win_scored_
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let script = concat!(env!("CARGO_MANIFEST_DIR"), "/../../tests/data/mjai/riichienv_check.py");
     let out = Command::new(python)
-        .args([script, &export])
+        .args([script, &export, rule])
         .output()
         .expect("run python");
     let _ = std::fs::remove_dir_all(&dir);
     let report: serde_json::Value = serde_json::from_slice(&out.stdout)
         .unwrap_or_else(|_| panic!("no report: {}", String::from_utf8_lossy(&out.stderr)));
     assert!(out.status.success(), "{report}");
+    assert_eq!(report["rule"], rule);
     let stats = &report["stats"];
     assert_eq!(stats["games"], 40);
     assert!(

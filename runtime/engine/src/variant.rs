@@ -15,6 +15,16 @@ impl Variant {
         with_variant!(self, v => v::host::VARIANT_DESCRIPTION)
     }
 
+    /// The spec's plain options as (section, name, value), in file order.
+    pub fn options(self) -> &'static [(&'static str, &'static str, &'static str)] {
+        with_variant!(self, v => &v::host::OPTIONS)
+    }
+
+    /// The value of the plain option `name` (`"true"`, `"1000"`), if the spec has it.
+    pub fn option(self, name: &str) -> Option<&'static str> {
+        self.options().iter().find(|o| o.1 == name).map(|o| o.2)
+    }
+
     /// Each player's points at the start of a game (`[game] starting_points` of the spec).
     pub fn starting_points(self) -> u32 {
         with_variant!(self, v => v::STARTING_POINTS)

@@ -2,7 +2,10 @@
 every decision must be one of RiichiEnv's legal actions, and every win must score the same han,
 fu and points in RiichiEnv's hand evaluator.
 
-    python riichienv_check.py FOLDER   (prints a JSON summary; exit status 1 on a disagreement)
+    python riichienv_check.py FOLDER [RULE]   (prints a JSON summary; exit status 1 on a disagreement)
+
+RULE is RiichiEnv's preset the games are replayed under: `tenhou` (the default, for rinshan's
+`red`) or `mjsoul` (its `default_mjsoul()`, for rinshan's `mjsoul`).
 
 RiichiEnv's MJAI replay has quirks (0.4.11) that this check corrects from the log itself rather
 than count as disagreements: it marks every ron as houtei and no win as rinshan kaihou (the
@@ -83,6 +86,7 @@ def check_win(hora, before, context, stats, bad):
 
 def main():
     stats, bad = collections.Counter(), []
+    rule = sys.argv[2] if len(sys.argv) > 2 else "tenhou"
     for path in sorted(pathlib.Path(sys.argv[1]).iterdir()):
         events = [json.loads(line) for line in path.open()]
         rounds = []
@@ -92,18 +96,20 @@ def main():
             elif rounds:
                 rounds[-1].append(e)
         stats["games"] += 1
-        for i, kyoku in enumerate(riichienv.MjaiReplay.from_jsonl(str(path)).take_kyokus()):
+        for i, kyoku in enumerate(riichienv.MjaiReplay.from_jsonl(str(path), rule=rule).take_kyokus()):
             evs = rounds[i]
             stats["rounds"] += 1
-            for seat, obs, action in kyoku.steps():
+            for seat, obs, action in kyoku.steps(rule=kyoku.rule):
                 stats["decisions"] += 1
                 if key(action) not in {key(a) for a in obs.legal_actions()}:
                     stats["illegal"] += 1
                     bad.append(f"{path.name} round {i} seat {seat}: {action} is not legal")
             horas = [e for e in evs if e["type"] == "hora"]
+            # Where Tenhou and Mahjong Soul part: three winners on one discard (Tenhou aborts).
+            stats["triple_ron"] += len(horas) == 3
             for hora, context in zip(horas, kyoku.take_win_result_contexts()):
                 check_win(hora, evs[: evs.index(hora)], context, stats, bad)
-    print(json.dumps({"stats": stats, "disagreements": bad[:20]}))
+    print(json.dumps({"rule": rule, "stats": stats, "disagreements": bad[:20]}))
     sys.exit(1 if stats["illegal"] or stats["score_differs"] else 0)
 
 

@@ -46,10 +46,35 @@ pub use json::game_text;
 pub(crate) use json::round_value;
 pub(crate) use outcome::{base_points, limit_of, payment, points_text, win_yaku};
 
+/// The options in which a recorded variant may differ from red: the writer reads these per
+/// variant (a yakuman's worth, three winners on one discard, a ron on a closed kan, pao's share).
+pub const PER_VARIANT: [&str; 4] = [
+    "double_yakuman",
+    "triple_ron_abort",
+    "kokushi_robs_closed_kan",
+    "pao_share_only",
+];
+
+/// Whether games of `variant` can be written: it has red's action ids and plays red's rules but for
+/// the [`PER_VARIANT`] options (red and mjsoul; not no-red, whose action ids differ, nor mleague,
+/// whose kan dora, limits and payments differ).
+pub fn recordable(variant: Variant) -> bool {
+    let red = Variant::Red;
+    let same = |a: &[(&str, &str, &str)], b: &[(&str, &str, &str)]| {
+        a.len() == b.len()
+            && a.iter()
+                .zip(b)
+                .all(|(x, y)| x.1 == y.1 && (x.2 == y.2 || PER_VARIANT.contains(&x.1)))
+    };
+    rinshan_engine::env::action_names(variant) == rinshan_engine::env::action_names(red)
+        && same(variant.options(), red.options())
+}
+
 /// Why a game could not be recorded.
 #[derive(Debug, Clone, PartialEq)]
 pub enum WriteError {
-    /// Logs are written for the red variant only (Tenhou's rules; the replayer plays red).
+    /// Logs are written for red and the variants that play red's game but for the options the
+    /// writer reads per variant ([`recordable`]).
     Variant(Variant),
     /// Reading the env's states failed (the GPU backend).
     Env(EnvError),
@@ -73,7 +98,11 @@ pub enum WriteError {
 impl fmt::Display for WriteError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            WriteError::Variant(v) => write!(f, "Tenhou logs are written for the red variant only, not {v}"),
+            WriteError::Variant(v) => write!(
+                f,
+                "logs are written for variants with red's actions and red's rules but for {}; {v} differs elsewhere",
+                PER_VARIANT.join(", ")
+            ),
             WriteError::Env(e) => write!(f, "{e}"),
             WriteError::WrongLength { expected, got } => {
                 write!(
@@ -121,14 +150,15 @@ impl Recorder {
     /// right after [`Env::reset`] (or [`Env::reset_with_walls`], [`Env::deal`]), and again after
     /// any later reset.
     pub fn new(env: &Env) -> Result<Recorder, WriteError> {
-        if env.variant() != Variant::Red {
-            return Err(WriteError::Variant(env.variant()));
+        let variant = env.variant();
+        if !recordable(variant) {
+            return Err(WriteError::Variant(variant));
         }
         let states = states(env)?;
         let games = states
             .iter()
             .enumerate()
-            .map(|(env, s)| GameRecorder::new(s).map_err(|message| WriteError::State { env, message }))
+            .map(|(env, s)| GameRecorder::for_variant(s, variant).map_err(|message| WriteError::State { env, message }))
             .collect::<Result<_, _>>()?;
         Ok(Recorder {
             games,

@@ -11,7 +11,10 @@ use rinshan_engine::hand::YakuHan;
 
 /// The yaku of an engine win as (name, han) in the log's terms, sorted; dora kinds with 0 han left out.
 fn engine_yaku(w: &WinRecord) -> Vec<(String, YakuHan)> {
-    let mut out: Vec<(String, YakuHan)> = win_yaku(w).into_iter().map(|y| (y.name.to_string(), y.han)).collect();
+    let mut out: Vec<(String, YakuHan)> = win_yaku(rinshan_engine::Variant::Red, w)
+        .into_iter()
+        .map(|y| (y.name.to_string(), y.han))
+        .collect();
     out.sort_by(|a, b| a.0.cmp(&b.0));
     out
 }

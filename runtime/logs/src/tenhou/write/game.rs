@@ -11,9 +11,10 @@ use crate::tenhou::plan::Played;
 use rinshan_engine::env::{events, DrawRecord, WinRecord};
 use rinshan_engine::generated::kernel::{self, GameState};
 use rinshan_engine::generated::red as k;
+use rinshan_engine::Variant;
 
 use super::outcome::{
-    base_points, draw_outcome, limit_of, outcome_deltas, payment, points_text, win_deltas, yaku_list,
+    base_points, draw_outcome, limit_of, outcome_deltas, pao_share, payment, points_text, win_deltas, yaku_list,
 };
 use super::round::{meld_count, Current};
 
@@ -42,12 +43,25 @@ pub struct GameRecorder {
     rounds: Vec<Round>,
     current: Option<Current>,
     dropped: usize,
+    /// The rules the game is played under (red, or one of [`super::recordable`]).
+    variant: Variant,
 }
 
 impl GameRecorder {
     /// Follows the game of `state`, which must have just dealt a round: right after
     /// [`rinshan_engine::env::Env::reset`] or [`rinshan_engine::env::Env::deal`], or the kernel's `game_new`.
     pub fn new(state: &GameState) -> Result<GameRecorder, String> {
+        GameRecorder::for_variant(state, Variant::Red)
+    }
+
+    /// As [`GameRecorder::new`], for a game of `variant`, which must be [`super::recordable`].
+    pub fn for_variant(state: &GameState, variant: Variant) -> Result<GameRecorder, String> {
+        if !super::recordable(variant) {
+            return Err(format!(
+                "games of {variant} cannot be written: {}",
+                super::WriteError::Variant(variant)
+            ));
+        }
         let rule = match state.mode {
             kernel::MODE_HALF => "鳳南喰赤",
             kernel::MODE_EAST => "鳳東喰赤",
@@ -59,6 +73,7 @@ impl GameRecorder {
             rounds: Vec::new(),
             current: Some(Current::start(state)?),
             dropped: 0,
+            variant,
         })
     }
 
@@ -205,6 +220,7 @@ impl GameRecorder {
                 let liable = kernel::byte_of(b.pao, w)
                     .checked_sub(1)
                     .filter(|_| k::PAO && rec.yaku_ids().any(|y| y == k::YAKU_DAISANGEN || y == k::YAKU_DAISUUSHI));
+                let share = liable.map_or([1, 1], |_| pao_share(self.variant, &rec));
                 let base = base_points(rec.han, rec.fu, rec.yakuman);
                 let limit = limit_of(base);
                 let pay = payment(base, w as usize == dealer, tsumo);
@@ -216,7 +232,7 @@ impl GameRecorder {
                     pay,
                     honba,
                     sticks,
-                    liable.map(|l| l as usize),
+                    liable.map(|l| (l as usize, share)),
                 );
                 let seat_wind = (w as usize + 4 - dealer) % 4;
                 wins.push(LoggedWin {
@@ -229,7 +245,7 @@ impl GameRecorder {
                     han: limit.is_none().then_some(rec.han),
                     limit,
                     points: points_text(rec.fu, rec.han, limit, pay),
-                    yaku: yaku_list(&rec, seat_wind, round_wind),
+                    yaku: yaku_list(self.variant, &rec, seat_wind, round_wind),
                 });
             }
             if !tsumo {

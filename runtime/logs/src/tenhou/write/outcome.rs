@@ -60,10 +60,31 @@ pub(crate) fn points_text(fu: u32, han: u32, limit: Option<Limit>, pay: Payment)
     }
 }
 
+/// The part of a pao win the liable seat covers, as [numerator, denominator] of its value: the
+/// whole hand, or where the variant's `pao_share_only` is set the pao yakuman's worth over the
+/// hand's yakuman (daisangen in a daisangen + tsuuiisou double: half).
+pub(super) fn pao_share(variant: Variant, rec: &WinRecord) -> [u32; 2] {
+    if variant.option("pao_share_only") != Some("true") || rec.yakuman == 0 {
+        return [1, 1];
+    }
+    let pao = if rec.yaku_ids().any(|y| y == k::YAKU_DAISANGEN) {
+        k::YAKU_DAISANGEN
+    } else {
+        k::YAKU_DAISUUSHI
+    };
+    let weight = match yaku_worth(variant, pao as usize, rec.concealed) {
+        YakuHan::Yakuman(n) => n,
+        YakuHan::Han(_) => 1,
+    };
+    [weight.min(rec.yakuman), rec.yakuman]
+}
+
 /// Who pays what for one win: `from` is `None` for a tsumo; `honba` and `sticks` (riichi
 /// deposits collected) are counted only for the winner nearest the discarder, so give 0 for the
-/// other one of a double ron. A liable seat (`pao`) pays half of a ron's value (honba to the
-/// discarder) and all of a tsumo.
+/// other ones of a double or triple ron. A liable seat (`pao`, with the share of the hand it
+/// covers, [`pao_share`]) pays half of that share of a ron's value (the discarder the rest and
+/// the honba), and that share of each payment of a tsumo (the payer the rest and its honba; all
+/// of it, honba included, when it covers the whole hand).
 pub(super) fn win_deltas(
     winner: usize,
     from: Option<usize>,
@@ -71,7 +92,7 @@ pub(super) fn win_deltas(
     pay: Payment,
     honba: u32,
     sticks: u32,
-    pao: Option<usize>,
+    pao: Option<(usize, [u32; 2])>,
 ) -> [i32; 4] {
     let mut d = [0i64; 4];
     let mut move_points = |payer: usize, points: u32| {
@@ -82,20 +103,30 @@ pub(super) fn win_deltas(
         (Payment::Ron { discarder: value }, Some(from)) => {
             let honba = honba * k::HONBA_RON_POINTS;
             match pao {
-                Some(liable) if liable != from => {
-                    move_points(liable, value / 2);
-                    move_points(from, value - value / 2 + honba);
+                Some((liable, [num, den])) if liable != from => {
+                    let covered = value / den * num;
+                    move_points(liable, covered / 2);
+                    move_points(from, value - covered / 2 + honba);
                 }
                 _ => move_points(from, value + honba),
             }
         }
         (Payment::Tsumo { dealer: share, others }, _) => {
             for p in (0..4).filter(|&p| p != winner) {
-                let amount = match share {
+                let value = match share {
                     Some(d) if p == dealer => d,
                     _ => others,
-                } + honba * k::HONBA_TSUMO_POINTS;
-                move_points(pao.unwrap_or(p), amount);
+                };
+                let amount = value + honba * k::HONBA_TSUMO_POINTS;
+                match pao {
+                    Some((liable, [num, den])) if num < den => {
+                        let covered = value / den * num;
+                        move_points(liable, covered);
+                        move_points(p, amount - covered);
+                    }
+                    Some((liable, _)) => move_points(liable, amount),
+                    None => move_points(p, amount),
+                }
             }
         }
         // A ron with no discarder cannot be recorded; the caller always names one.
@@ -105,16 +136,16 @@ pub(super) fn win_deltas(
     d.map(|x| x as i32)
 }
 
-/// A win's yaku with what each is worth (as Tenhou counts them under the red spec), then dora, red
-/// fives and ura (those with 0 han left out).
-pub(crate) fn win_yaku(rec: &WinRecord) -> Vec<Yaku> {
+/// A win's yaku with what each is worth under `variant`'s spec, then dora, red fives and ura
+/// (those with 0 han left out).
+pub(crate) fn win_yaku(variant: Variant, rec: &WinRecord) -> Vec<Yaku> {
     let mut yaku: Vec<Yaku> = rec
         .yaku_ids()
         .map(|id| {
             let i = id as usize;
             Yaku {
                 name: k::host::YAKU_NAMES[i],
-                han: yaku_worth(Variant::Red, i, rec.concealed),
+                han: yaku_worth(variant, i, rec.concealed),
             }
         })
         .collect();
@@ -130,8 +161,8 @@ pub(crate) fn win_yaku(rec: &WinRecord) -> Vec<Yaku> {
 }
 
 /// A win's yaku in the order Tenhou lists them, dora, red fives and ura last.
-pub(super) fn yaku_list(rec: &WinRecord, seat_wind: usize, round_wind: usize) -> Vec<Yaku> {
-    let mut yaku = win_yaku(rec);
+pub(super) fn yaku_list(variant: Variant, rec: &WinRecord, seat_wind: usize, round_wind: usize) -> Vec<Yaku> {
+    let mut yaku = win_yaku(variant, rec);
     yaku.sort_by_key(|y| tenhou_yaku(y.name, seat_wind, round_wind).map_or(usize::MAX, |(_, rank)| rank));
     yaku
 }

@@ -159,7 +159,7 @@ fn every_real_win_has_the_points_text_and_score_changes_of_its_fu_and_han() {
                 assert_eq!(points_text(fu, han, w.limit, pay), w.points, "{} {r}", game.path);
                 let (honba, sticks) = if n == 0 { (r.honba, sticks_collected(r)) } else { (0, 0) };
                 let from = (!w.tsumo).then_some(w.from);
-                let pao = (w.pao != w.winner).then_some(w.pao);
+                let pao = (w.pao != w.winner).then_some((w.pao, [1, 1]));
                 let deltas = win_deltas(w.winner, from, r.dealer(), pay, honba, sticks, pao);
                 assert_eq!(deltas, w.deltas, "{} {r}: {}", game.path, w.points);
                 wins += 1;
@@ -167,6 +167,35 @@ fn every_real_win_has_the_points_text_and_score_changes_of_its_fu_and_han() {
         }
     }
     assert_eq!(wins, 188);
+}
+
+/// Mahjong Soul's pao on a composite yakuman (daisangen + tsuuiisou, a non-dealer's double, the
+/// dealer liable): the liable seat covers daisangen's half only (ja.wikipedia 責任払い), as the
+/// mjsoul scenarios of tests/data/scenarios.toml play it in the engine.
+#[test]
+fn a_pao_share_pays_only_its_part() {
+    let tsumo = payment(base_points(0, 0, 2), false, true);
+    assert_eq!(
+        win_deltas(2, None, 0, tsumo, 0, 0, Some((0, [1, 2]))),
+        [-48_000, -8_000, 64_000, -8_000],
+        "the dealer pays 16000 of its own 32000 and 8000 of each other payer's 16000"
+    );
+    // Ron off seat 3 with one honba: the liable seat pays half of its 32000 share, the discarder
+    // the rest and the 300.
+    let ron = payment(base_points(0, 0, 2), false, false);
+    assert_eq!(
+        win_deltas(2, Some(3), 0, ron, 1, 0, Some((0, [1, 2]))),
+        [-16_000, 0, 64_300, -48_300]
+    );
+    // The whole hand (Tenhou): half each, honba to the discarder; a tsumo all on the liable seat.
+    assert_eq!(
+        win_deltas(2, Some(3), 0, ron, 1, 0, Some((0, [1, 1]))),
+        [-32_000, 0, 64_300, -32_300]
+    );
+    assert_eq!(
+        win_deltas(2, None, 0, tsumo, 0, 0, Some((0, [1, 1]))),
+        [-64_000, 0, 64_000, 0]
+    );
 }
 
 #[test]
