@@ -290,6 +290,7 @@ fn variant_options() {
             ("bust_below_zero", "false"),
             ("west_extension", "false"),
             ("dealer_top_stop", "false"),
+            ("tied_seats_share_uma", "true"),
         ]
         .map(|(n, v)| (n, v.to_string()))
     );
@@ -345,6 +346,7 @@ fn variant_options() {
                 "target_points",
                 "west_extension",
                 "dealer_top_stop",
+                "tied_seats_share_uma",
             ]
         );
     }

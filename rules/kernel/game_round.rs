@@ -243,6 +243,42 @@ pub fn seat_rank(s: &mut GameState, p: u32) -> u32 {
     rank
 }
 
+// The uma each seat is paid for its place `ranks[p]` under `scores` (the points before uma). With
+// TIED_SEATS_SHARE_UMA, seats tied on points share the uma of the places they hold equally in
+// whole hundreds; the hundreds that do not divide go one each to the tied seats first in rank
+// order, so the uma still sums to zero and every share is a whole reward unit.
+pub fn uma_shares(scores: [i32; 4], ranks: [u32; 4], uma: [i32; 4]) -> [i32; 4] {
+    let mut out: [i32; 4] = [0i32; 4];
+    for p in 0u32..4u32 {
+        out[p as usize] = uma[ranks[p as usize] as usize];
+        if TIED_SEATS_SHARE_UMA {
+            let mut total: i32 = 0;
+            let mut n: i32 = 0;
+            let mut ahead: i32 = 0;
+            for q in 0u32..4u32 {
+                if scores[q as usize] == scores[p as usize] {
+                    total += uma[ranks[q as usize] as usize] / 100i32;
+                    n += 1i32;
+                    if ranks[q as usize] < ranks[p as usize] {
+                        ahead += 1i32;
+                    }
+                }
+            }
+            // Division truncates toward zero (Rust and WGSL alike): step the share down for a
+            // negative remainder so that the leftover is 0..n.
+            let mut share: i32 = total / n;
+            if share * n > total {
+                share -= 1i32;
+            }
+            if ahead < total - share * n {
+                share += 1i32;
+            }
+            out[p as usize] = share * 100i32;
+        }
+    }
+    out
+}
+
 // Uma by rank and the leftover sticks to the top seat, paid in the game's final step.
 fn finish_game(s: &mut GameState) {
     let top: u32 = top_seat(s);
@@ -252,8 +288,9 @@ fn finish_game(s: &mut GameState) {
         ranks[p as usize] = seat_rank(s, p);
         s.ranks |= ranks[p as usize] << (p * RANK_SHIFT);
     }
+    let uma: [i32; 4] = uma_shares(s.scores, ranks, s.uma);
     for p in 0u32..4u32 {
-        let u: i32 = s.uma[ranks[p as usize] as usize];
+        let u: i32 = uma[p as usize];
         s.scores[p as usize] += u;
         s.rewards[p as usize] += u / 100i32;
     }

@@ -173,14 +173,17 @@ invariant_suite!(
     "b72dc0a9ccda8e89"
 );
 // M-League's rules: pinned when the variant was added; red, no-red and mjsoul kept their pins (the
-// options it brought, kan_dora_at_once and pao_pays_honba, are off in all three, and their riichi
-// minimum is not 0). Fewer steps than red: with no West round, random play's games end at South 4.
+// options it brought, kan_dora_at_once, pao_pays_honba and tied_seats_share_uma, are off in all
+// three, and their riichi minimum is not 0). Fewer steps than red: with no West round, random
+// play's games end at South 4. Re-pinned when tied seats came to share their uma: 9,893 of the
+// 10,000 games changed (their last step's rewards), as random play wins so rarely that most games
+// end with seats tied on points.
 invariant_suite!(
     mleague_random_games_keep_the_invariants,
     mleague,
     10_000,
     7_277_204,
-    "6ad8152ea22e9880"
+    "04e3928f26741bf2"
 );
 
 #[test]

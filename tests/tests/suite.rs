@@ -25,3 +25,4 @@ mod soak;
 mod tenhou_replay;
 mod tenhou_roundtrip;
 mod tenpai_shortcuts;
+mod uma;

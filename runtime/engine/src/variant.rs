@@ -25,6 +25,30 @@ impl Variant {
         self.options().iter().find(|o| o.1 == name).map(|o| o.2)
     }
 
+    /// The uma each seat was paid in a game's last step, from the scores `after` it, the final
+    /// places `ranks` and the uma by place: the kernel's `uma_shares`, which ties read from the
+    /// scores before the uma. Ties hold consecutive places, so each of the 8 ways to group the
+    /// places is tried and the one whose shares, taken off `after`, give back the same shares is
+    /// kept (the uma by place where none does).
+    pub fn uma_paid(self, after: [i32; 4], ranks: [u8; 4], uma: [i32; 4]) -> [i32; 4] {
+        let ranks = ranks.map(u32::from);
+        with_variant!(self, v => {
+            for cuts in 0u32..8 {
+                let mut group = [0i32; 4];
+                for place in 1..4 {
+                    group[place] = group[place - 1] + (cuts >> (place - 1) & 1) as i32;
+                }
+                let grouped: [i32; 4] = std::array::from_fn(|p| -group[ranks[p].min(3) as usize]);
+                let shares = v::uma_shares(grouped, ranks, uma);
+                let before: [i32; 4] = std::array::from_fn(|p| after[p] - shares[p]);
+                if v::uma_shares(before, ranks, uma) == shares {
+                    return shares;
+                }
+            }
+            std::array::from_fn(|p| uma[ranks[p].min(3) as usize])
+        })
+    }
+
     /// Each player's points at the start of a game (`[game] starting_points` of the spec).
     pub fn starting_points(self) -> u32 {
         with_variant!(self, v => v::STARTING_POINTS)

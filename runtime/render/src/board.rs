@@ -282,7 +282,7 @@ impl Board {
         let ranks = step.ranks.get(env).copied().filter(|_| over && !step.illegal[env]);
         // A replay pays no uma (it compares logged payments): nothing to show apart then.
         let paid = ranks
-            .map(|r| std::array::from_fn(|p| uma[usize::from(r[p]).min(3)]))
+            .map(|r| variant.uma_paid(table.scores, r, uma))
             .filter(|u: &[i32; 4]| u.iter().any(|&x| x != 0));
         let rewards = step.rewards[env].map(|r| (r * 100.0).round() as i32);
         board.result = Some(RoundResult {
