@@ -433,6 +433,10 @@ fn do_call(s: &mut GameState, q: u32, from: u32, v: u32, a: u32) -> u32 {
     if PAO && kind != MELD_CHI && t >= FIRST_HONOR {
         note_liability(s, q, from, t);
     }
+    if PAO_SUUKANTSU && kind == MELD_OPEN_KAN && kan_melds(s, q) == 4u32 {
+        // The seat that fed a fourth kan by an open kan pays for four kans.
+        s.pao = with_byte(s.pao, q, (byte_of(s.pao, q) & 15u32) | ((from + 1u32) << 4u32));
+    }
     if kind == MELD_OPEN_KAN {
         // The replacement draw may win: its tsumo check reads the new 13-tile waits.
         update_waits(s, q);
@@ -447,6 +451,17 @@ fn do_call(s: &mut GameState, q: u32, from: u32, v: u32, a: u32) -> u32 {
     s.drawn = NO_TILE_VALUE;
     s.rinshan = 0u32;
     TASK_DONE
+}
+
+fn kan_melds(s: &mut GameState, q: u32) -> u32 {
+    let mut kans: u32 = 0u32;
+    for i in 0u32..meld_count(s, q) {
+        let kind: u32 = meld_kind(s.melds[(q * 4u32 + i) as usize]);
+        if kind == MELD_OPEN_KAN || kind == MELD_CLOSED_KAN || kind == MELD_ADDED_KAN {
+            kans += 1u32;
+        }
+    }
+    kans
 }
 
 // Pao: the seat that fed the third dragon set (or the fourth wind set) pays for the yakuman.
@@ -465,6 +480,6 @@ fn note_liability(s: &mut GameState, q: u32, from: u32, t: u32) {
         }
     }
     if (is_dragon(t) && dragons == 3u32) || (is_wind(t) && winds == 4u32) {
-        s.pao = with_byte(s.pao, q, from + 1u32);
+        s.pao = with_byte(s.pao, q, (byte_of(s.pao, q) & 0xf0u32) | (from + 1u32));
     }
 }

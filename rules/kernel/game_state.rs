@@ -199,7 +199,8 @@ pub struct GameState {
     // that hand changes (deal, discard, kan): claims, tsumo checks and tenpai read them.
     pub waits: [u32; 8],
     pub seat_flags: [u32; 4],
-    // Liable seat + 1 for pao (dragons, winds), 8 bits per seat; 0 = none.
+    // Liable seat + 1 for pao, 8 bits per seat: the low nibble for big dragons / big winds, the
+    // high one for four kans (PAO_SUUKANTSU); 0 = none.
     pub pao: u32,
     pub phase: u32,
     pub current: u32,

@@ -105,28 +105,46 @@ fn collect_sticks(s: &mut GameState, to: u32) {
     s.sticks = 0u32;
 }
 
-// The seat liable for the winner's big dragons / big winds (pao), or 4 for none.
-fn liable_seat(s: &mut GameState, winner: u32, out: ScoreOutput) -> u32 {
+// The yakuman the winner's liable seat pays for (pao), or YAKU_COUNT for none: big dragons or big
+// winds fed by a call, else (PAO_SUUKANTSU) four kans whose fourth was an open kan. A hand with
+// both, fed by two seats, charges the first only.
+fn pao_yaku(s: &mut GameState, winner: u32, out: ScoreOutput) -> u32 {
     let p: u32 = byte_of(s.pao, winner);
     if !PAO || p == 0u32 {
+        return YAKU_COUNT;
+    }
+    if (p & 15u32) != 0u32 {
+        if has_yaku(out.yaku_lo, out.yaku_hi, YAKU_DAISANGEN) {
+            return YAKU_DAISANGEN;
+        }
+        if has_yaku(out.yaku_lo, out.yaku_hi, YAKU_DAISUUSHI) {
+            return YAKU_DAISUUSHI;
+        }
+    }
+    if PAO_SUUKANTSU && (p >> 4u32) != 0u32 && has_yaku(out.yaku_lo, out.yaku_hi, YAKU_SUUKANTSU) {
+        return YAKU_SUUKANTSU;
+    }
+    YAKU_COUNT
+}
+
+// The seat liable for the winner's `pao` yakuman (see `pao_yaku`), or 4 for none.
+fn liable_seat(s: &mut GameState, winner: u32, pao: u32) -> u32 {
+    if pao == YAKU_COUNT {
         return 4u32;
     }
-    if has_yaku(out.yaku_lo, out.yaku_hi, YAKU_DAISANGEN) || has_yaku(out.yaku_lo, out.yaku_hi, YAKU_DAISUUSHI) {
-        return p - 1u32;
+    let p: u32 = byte_of(s.pao, winner);
+    if pao == YAKU_SUUKANTSU {
+        return (p >> 4u32) - 1u32;
     }
-    4u32
+    (p & 15u32) - 1u32
 }
 
 // The part of a hand's value the liable seat covers, as [numerator, denominator]: the whole hand,
-// or with PAO_SHARE_ONLY the pao yakuman's weight over the hand's yakuman total (daisangen in a
+// or with PAO_SHARE_ONLY the `pao` yakuman's weight over the hand's yakuman total (daisangen in a
 // daisangen + tsuuiisou double: half).
-fn pao_share(out: ScoreOutput) -> [u32; 2] {
-    if !PAO_SHARE_ONLY || out.yakuman == 0u32 {
+fn pao_share(out: ScoreOutput, pao: u32) -> [u32; 2] {
+    if !PAO_SHARE_ONLY || out.yakuman == 0u32 || pao == YAKU_COUNT {
         return [1u32, 1u32];
-    }
-    let mut pao: u32 = YAKU_DAISANGEN;
-    if !has_yaku(out.yaku_lo, out.yaku_hi, YAKU_DAISANGEN) {
-        pao = YAKU_DAISUUSHI;
     }
     let mut weight: u32 = YAKU_YAKUMAN[pao as usize];
     if !DOUBLE_YAKUMAN {
@@ -156,13 +174,14 @@ fn settle_ron(s: &mut GameState, winner: u32, from: u32, v: u32, chankan: bool, 
         inp.sticks = 0u32;
     }
     let out: ScoreOutput = score_hand(inp);
-    let liable: u32 = liable_seat(s, winner, out);
+    let pao: u32 = pao_yaku(s, winner, out);
+    let liable: u32 = liable_seat(s, winner, pao);
     if liable < 4u32 && liable != from {
         // The liable seat pays half of what it covers; the discarder the rest, and the honba
         // unless PAO_PAYS_HONBA puts them on the liable seat.
         let honba: u32 = inp.honba * HONBA_RON_POINTS;
         let value: u32 = out.ron - honba;
-        let share: [u32; 2] = pao_share(out);
+        let share: [u32; 2] = pao_share(out, pao);
         let covered: u32 = value / share[1] * share[0];
         let liable_honba: u32 = honba * PAO_PAYS_HONBA as u32;
         pay(s, liable, winner, covered / 2u32 + liable_honba);
@@ -181,8 +200,9 @@ fn settle_ron(s: &mut GameState, winner: u32, from: u32, v: u32, chankan: bool, 
 fn settle_tsumo(s: &mut GameState, winner: u32) {
     let inp: ScoreInput = win_input(s, winner, s.drawn, true, false);
     let out: ScoreOutput = score_hand(inp);
-    let liable: u32 = liable_seat(s, winner, out);
-    let share: [u32; 2] = pao_share(out);
+    let pao: u32 = pao_yaku(s, winner, out);
+    let liable: u32 = liable_seat(s, winner, pao);
+    let share: [u32; 2] = pao_share(out, pao);
     for p in 0u32..4u32 {
         if p != winner {
             let mut amount: u32 = out.others_pay;

@@ -217,7 +217,8 @@ impl GameRecorder {
             let mut wins = Vec::new();
             for (n, &w) in winners.iter().enumerate() {
                 let rec = WinRecord::decode(&a.win_yaku, &a.win_score, w as usize);
-                let liable = kernel::byte_of(b.pao, w)
+                // The low nibble: big dragons / big winds (four kans is not a recordable rule).
+                let liable = (kernel::byte_of(b.pao, w) & 15)
                     .checked_sub(1)
                     .filter(|_| k::PAO && rec.yaku_ids().any(|y| y == k::YAKU_DAISANGEN || y == k::YAKU_DAISUUSHI));
                 let share = liable.map_or([1, 1], |_| pao_share(self.variant, &rec));
