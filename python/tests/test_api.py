@@ -25,7 +25,9 @@ def play(env, steps, seed=0):
     return out
 
 
-@pytest.mark.parametrize("variant,actions", [("red", 87), ("mjsoul", 87), ("mleague", 86), ("no-red", 79)])
+@pytest.mark.parametrize(
+    "variant,actions", [("red", 87), ("mjsoul", 87), ("mleague", 86), ("no-red", 79)]
+)
 def test_shapes_and_dtypes(variant, actions):
     env = rinshan.make(
         variant, num_envs=5, observation=("planes", "tokens"), analysis=True, num_threads=1

@@ -2,7 +2,9 @@
 every decision must be one of RiichiEnv's legal actions, and every win must score the same han,
 fu and points in RiichiEnv's hand evaluator.
 
-    python riichienv_check.py FOLDER [RULE]   (prints a JSON summary; exit status 1 on a disagreement)
+    python riichienv_check.py FOLDER [RULE]
+
+prints a JSON summary; the exit status is 1 on a disagreement.
 
 RULE is RiichiEnv's preset the games are replayed under: `tenhou` (the default, for rinshan's
 `red`) or `mjsoul` (its `default_mjsoul()`, for rinshan's `mjsoul`).
@@ -96,7 +98,9 @@ def main():
             elif rounds:
                 rounds[-1].append(e)
         stats["games"] += 1
-        for i, kyoku in enumerate(riichienv.MjaiReplay.from_jsonl(str(path), rule=rule).take_kyokus()):
+        for i, kyoku in enumerate(
+            riichienv.MjaiReplay.from_jsonl(str(path), rule=rule).take_kyokus()
+        ):
             evs = rounds[i]
             stats["rounds"] += 1
             for seat, obs, action in kyoku.steps(rule=kyoku.rule):
