@@ -139,18 +139,18 @@ fn liable_seat(s: &mut GameState, winner: u32, pao: u32) -> u32 {
     (p & 15u32) - 1u32
 }
 
-// The part of a hand's value the liable seat covers, as [numerator, denominator]: the whole hand,
-// or with PAO_SHARE_ONLY the `pao` yakuman's weight over the hand's yakuman total (daisangen in a
-// daisangen + tsuuiisou double: half).
-fn pao_share(out: ScoreOutput, pao: u32) -> [u32; 2] {
-    if !PAO_SHARE_ONLY || out.yakuman == 0u32 || pao == YAKU_COUNT {
+// The part of a hand of `yakuman` yakuman the liable seat covers, as [numerator, denominator]:
+// the whole hand, or with PAO_SHARE_ONLY the `pao` yakuman's weight over the hand's yakuman total
+// (daisangen in a daisangen + tsuuiisou double: half). The log writer reads it too.
+pub fn pao_share(yakuman: u32, pao: u32) -> [u32; 2] {
+    if !PAO_SHARE_ONLY || yakuman == 0u32 || pao == YAKU_COUNT {
         return [1u32, 1u32];
     }
     let mut weight: u32 = YAKU_YAKUMAN[pao as usize];
     if !DOUBLE_YAKUMAN {
         weight = 1u32;
     }
-    [weight.min(out.yakuman), out.yakuman]
+    [weight.min(yakuman), yakuman]
 }
 
 fn note_win(s: &mut GameState, seat: u32, out: ScoreOutput) {
@@ -181,7 +181,7 @@ fn settle_ron(s: &mut GameState, winner: u32, from: u32, v: u32, chankan: bool, 
         // unless PAO_PAYS_HONBA puts them on the liable seat.
         let honba: u32 = inp.honba * HONBA_RON_POINTS;
         let value: u32 = out.ron - honba;
-        let share: [u32; 2] = pao_share(out, pao);
+        let share: [u32; 2] = pao_share(out.yakuman, pao);
         let covered: u32 = value / share[1] * share[0];
         let liable_honba: u32 = honba * PAO_PAYS_HONBA as u32;
         pay(s, liable, winner, covered / 2u32 + liable_honba);
@@ -202,7 +202,7 @@ fn settle_tsumo(s: &mut GameState, winner: u32) {
     let out: ScoreOutput = score_hand(inp);
     let pao: u32 = pao_yaku(s, winner, out);
     let liable: u32 = liable_seat(s, winner, pao);
-    let share: [u32; 2] = pao_share(out, pao);
+    let share: [u32; 2] = pao_share(out.yakuman, pao);
     for p in 0u32..4u32 {
         if p != winner {
             let mut amount: u32 = out.others_pay;

@@ -363,6 +363,12 @@ pub fn yaku_worth(variant: Variant, id: usize, concealed: bool) -> YakuHan {
     })
 }
 
+/// The part of a pao win of `yakuman` yakuman that the seat liable for yakuman `pao` covers, as
+/// [numerator, denominator] (the scoring kernel's `pao_share` under `variant`'s spec).
+pub fn pao_share(variant: Variant, yakuman: u32, pao: u32) -> [u32; 2] {
+    with_variant!(variant, v => v::pao_share(yakuman, pao))
+}
+
 /// Decodes one score output (SCORE_OUT_WORDS words) of `variant`.
 pub fn decode_score(variant: Variant, w: &[u32]) -> Result<Score, ScoreError> {
     let o: kernel::ScoreOutput = bytemuck::pod_read_unaligned(bytemuck::cast_slice(&w[..SCORE_OUT_WORDS]));

@@ -60,23 +60,16 @@ pub(crate) fn points_text(fu: u32, han: u32, limit: Option<Limit>, pay: Payment)
     }
 }
 
-/// The part of a pao win the liable seat covers, as [numerator, denominator] of its value: the
-/// whole hand, or where the variant's `pao_share_only` is set the pao yakuman's worth over the
-/// hand's yakuman (daisangen in a daisangen + tsuuiisou double: half).
+/// The part of a pao win the liable seat covers, as [numerator, denominator] of its value (the
+/// scoring kernel's own rule): its big dragons or big winds over the hand's yakuman where the
+/// variant's `pao_share_only` is set, else the whole hand.
 pub(super) fn pao_share(variant: Variant, rec: &WinRecord) -> [u32; 2] {
-    if variant.option("pao_share_only") != Some("true") || rec.yakuman == 0 {
-        return [1, 1];
-    }
     let pao = if rec.yaku_ids().any(|y| y == k::YAKU_DAISANGEN) {
         k::YAKU_DAISANGEN
     } else {
         k::YAKU_DAISUUSHI
     };
-    let weight = match yaku_worth(variant, pao as usize, rec.concealed) {
-        YakuHan::Yakuman(n) => n,
-        YakuHan::Han(_) => 1,
-    };
-    [weight.min(rec.yakuman), rec.yakuman]
+    rinshan_engine::hand::pao_share(variant, rec.yakuman, pao)
 }
 
 /// Who pays what for one win: `from` is `None` for a tsumo; `honba` and `sticks` (riichi
