@@ -197,7 +197,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
     })?;
     if env.gpu_is_software() {
         eprintln!(
-            "note: {} is a software adapter: compiling the game's step shader takes it about 5 minutes the first time (cached afterwards)",
+            "note: {} is a software adapter: compiling the game's step shader takes it 5 to 15 minutes the first time (cached afterwards; GALLIVM_PERF=nopt makes it about 4x faster)",
             env.adapter().unwrap_or_default()
         );
     }
