@@ -39,17 +39,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         match stage {
             "new" => {}
             "step" => time("step", &mut || {
-                let actions: Vec<u32> = (0..4)
-                    .map(|i| env.last().legal_actions(i).next().unwrap_or(0))
-                    .collect();
+                let actions = first_legal(&env);
                 env.step(&actions).map(|_| ()).map_err(Into::into)
             })?,
             "planes" | "tokens" | "oracle" => {
-                let form = match stage {
-                    "planes" => Form::Planes,
-                    "tokens" => Form::Tokens,
-                    _ => Form::Oracle,
-                };
+                let form: Form = stage.parse()?;
                 time(stage, &mut || env.observe_all(form).map(|_| ()).map_err(Into::into))?
             }
             "agent" => time("agent", &mut || {
@@ -60,12 +54,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             "play" => {
                 let mut hero = config.clone();
                 hero.agents = vec![[None, Some(Agent::Rule), Some(Agent::Greedy), Some(Agent::Defensive)]];
+                // A second env opens its own device, so its reset compiles the reset's pipelines
+                // again (untimed; Mesa's cache serves them unless it is disabled).
                 let mut played = Env::new(hero)?;
                 played.reset()?;
                 time("play", &mut || {
-                    let actions: Vec<u32> = (0..4)
-                        .map(|i| played.last().legal_actions(i).next().unwrap_or(0))
-                        .collect();
+                    let actions = first_legal(&played);
                     played.step(&actions).map(|_| ()).map_err(Into::into)
                 })?
             }
@@ -73,4 +67,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         }
     }
     Ok(())
+}
+
+/// Each env's first legal action: any legal step compiles the pipeline.
+fn first_legal(env: &Env) -> Vec<u32> {
+    (0..env.batch())
+        .map(|i| env.last().legal_actions(i).next().unwrap_or(0))
+        .collect()
 }
