@@ -11,19 +11,21 @@
 //   kans that keep shanten.
 // - defensive: greedy, but against a riichi or an obvious open threat it folds when far from
 //   tenpai, discarding by danger (genbutsu, suji, kabe, visible honors, dora).
+//
+// The observation is passed by `&mut`, a pointer in the WGSL, though no agent writes it: a by-value
+// parameter becomes a local copy there, and the helpers below would copy its 568 words per call.
 
-
-fn pl(o: ObsPlanes, row: u32, t: u32) -> u32 {
+fn pl(o: &mut ObsPlanes, row: u32, t: u32) -> u32 {
     let i: u32 = row * 34u32 + t;
     (o.planes[(i / 4u32) as usize] >> ((i % 4u32) * 8u32)) & 255u32
 }
 
-fn scalar_of(o: ObsPlanes, i: u32) -> i32 {
+fn scalar_of(o: &mut ObsPlanes, i: u32) -> i32 {
     let w: u32 = (o.scalars[(i / 2u32) as usize] >> ((i % 2u32) * 16u32)) & 65535u32;
     ((w << 16u32) as i32) >> 16i32
 }
 
-fn obs_hand(o: ObsPlanes) -> [u32; 34] {
+fn obs_hand(o: &mut ObsPlanes) -> [u32; 34] {
     let mut h: [u32; 34] = [0u32; 34];
     for t in 0u32..34u32 {
         h[t as usize] = pl(o, P_HAND, t) + pl(o, P_HAND + 1u32, t) + pl(o, P_HAND + 2u32, t) + pl(o, P_HAND + 3u32, t);
@@ -49,7 +51,7 @@ fn is_discard(a: u32) -> bool {
 }
 
 // Unseen copies of each type from this seat: what may still be drawn.
-fn unseen_of(o: ObsPlanes) -> [u32; 34] {
+fn unseen_of(o: &mut ObsPlanes) -> [u32; 34] {
     let mut u: [u32; 34] = [0u32; 34];
     for t in 0u32..34u32 {
         u[t as usize] = 4u32 - pl(o, P_SEEN, t).min(4u32);
@@ -81,7 +83,7 @@ fn ukeire(h: [u32; 34], unseen: [u32; 34], kinds: bool) -> u32 {
 
 // How much a tile is worth keeping, beyond shanten: honors less than terminals less than middle
 // tiles; yakuhai, dora and red fives more.
-fn keep_value(o: ObsPlanes, t: u32, red: u32) -> u32 {
+fn keep_value(o: &mut ObsPlanes, t: u32, red: u32) -> u32 {
     let mut v: u32 = 4u32;
     if t >= FIRST_HONOR {
         v = 1u32 + 2u32 * pl(o, P_YAKUHAI, t);
@@ -95,7 +97,7 @@ fn keep_value(o: ObsPlanes, t: u32, red: u32) -> u32 {
 
 // MahJax's static priority: the lower, the sooner discarded (outer winds, other honors,
 // terminals, 2/8, the rest).
-fn rule_priority(o: ObsPlanes, t: u32) -> u32 {
+fn rule_priority(o: &mut ObsPlanes, t: u32) -> u32 {
     if t >= FIRST_HONOR {
         if pl(o, P_YAKUHAI, t) == 0u32 {
             return 0u32;
@@ -112,7 +114,7 @@ fn rule_priority(o: ObsPlanes, t: u32) -> u32 {
 }
 
 // Danger of discarding type t against ego seat q (ordinal levels after tenhou-python-bot).
-fn danger_against(o: ObsPlanes, q: u32, t: u32) -> u32 {
+fn danger_against(o: &mut ObsPlanes, q: u32, t: u32) -> u32 {
     let safe_row: u32 = P_SEAT + q * P_SEAT_ROWS + P_SEAT_SAFE;
     if pl(o, safe_row, t) != 0u32 {
         return 0u32;
@@ -154,7 +156,7 @@ fn danger_against(o: ObsPlanes, q: u32, t: u32) -> u32 {
 }
 
 // Ego seats that threaten: a riichi, or an open hand with 3+ melds or 3+ dora in its melds.
-fn threats(o: ObsPlanes) -> u32 {
+fn threats(o: &mut ObsPlanes) -> u32 {
     let mut th: u32 = 0u32;
     for q in 1u32..4u32 {
         let mut dora_in_melds: u32 = 0u32;
@@ -168,7 +170,7 @@ fn threats(o: ObsPlanes) -> u32 {
     th
 }
 
-fn folds(o: ObsPlanes, agent: u32) -> bool {
+fn folds(o: &mut ObsPlanes, agent: u32) -> bool {
     if agent == AGENT_RULE {
         let mut riichi: bool = false;
         for q in 1u32..4u32 {
@@ -213,7 +215,7 @@ fn random_legal(mask: [u32; 3], seed: [u32; 2], nonce: u32) -> u32 {
 }
 
 // The discard a seat picks: folding by danger, else by the agent's own order.
-fn choose_discard(o: ObsPlanes, mask: [u32; 3], agent: u32, fold: bool) -> u32 {
+fn choose_discard(o: &mut ObsPlanes, mask: [u32; 3], agent: u32, fold: bool) -> u32 {
     let hand: [u32; 34] = obs_hand(o);
     let unseen: [u32; 34] = unseen_of(o);
     let mut drawn: u32 = 255u32;
@@ -313,7 +315,7 @@ fn pon_keeps_shanten(hand: [u32; 34], t: u32) -> bool {
     best <= shanten_of(hand)
 }
 
-pub fn agent_act(agent: u32, o: ObsPlanes, mask: [u32; 3], seed: [u32; 2], nonce: u32) -> u32 {
+pub fn agent_act(agent: u32, o: &mut ObsPlanes, mask: [u32; 3], seed: [u32; 2], nonce: u32) -> u32 {
     if agent == AGENT_RANDOM || agent == AGENT_CALLER || agent >= AGENT_KINDS {
         return random_legal(mask, seed, nonce);
     }
@@ -401,8 +403,8 @@ pub fn game_play(s: &mut GameState, arg: u32) {
         } else if ended || agent == AGENT_CALLER || s.phase == PHASE_OVER || played > 20000u32 {
             break;
         } else {
-            let o: ObsPlanes = planes_of(s, OBSERVE_CURRENT);
-            a = agent_act(agent, o, s.mask, s.seed, s.steps);
+            let mut o: ObsPlanes = planes_of(s, OBSERVE_CURRENT);
+            a = agent_act(agent, &mut o, s.mask, s.seed, s.steps);
         }
         game_step(s, a);
         played += 1u32;
@@ -433,6 +435,6 @@ pub fn game_play(s: &mut GameState, arg: u32) {
 pub fn game_agent_action(state: GameState, arg: u32) -> u32 {
     let mut s: GameState = state;
     let agent: u32 = (arg >> (s.current * 4u32)) & 15u32;
-    let o: ObsPlanes = planes_of(&mut s, OBSERVE_CURRENT);
-    agent_act(agent, o, s.mask, s.seed, s.steps)
+    let mut o: ObsPlanes = planes_of(&mut s, OBSERVE_CURRENT);
+    agent_act(agent, &mut o, s.mask, s.seed, s.steps)
 }

@@ -106,7 +106,7 @@ fn hero_mode_plays_the_same_game_as_a_loop_over_the_agents() {
             let agent = seating[s.current as usize].expect("agent").kernel();
             let a = red::agent_act(
                 agent,
-                red::observe_planes(s, kernel::OBSERVE_CURRENT),
+                &mut red::observe_planes(s, kernel::OBSERVE_CURRENT),
                 s.mask,
                 s.seed,
                 s.steps,
@@ -252,7 +252,7 @@ fn agents_are_deterministic() {
             while s.terminated == 0 {
                 let a = red::agent_act(
                     agent.kernel(),
-                    red::observe_planes(s, kernel::OBSERVE_CURRENT),
+                    &mut red::observe_planes(s, kernel::OBSERVE_CURRENT),
                     s.mask,
                     s.seed,
                     s.steps,

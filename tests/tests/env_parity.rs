@@ -28,7 +28,7 @@ fn parity(variant: Variant) {
     };
     let mut cpu = Env::new(config.clone()).expect("cpu env");
     let software = gpu.is_software();
-    let agents_on_gpu = rinshan_tests::slow_gpu_tests_run(&gpu, &format!("{test}: the agents' actions"));
+    let agents_on_gpu = rinshan_tests::agent_gpu_tests_run(&gpu, &format!("{test}: the agents' actions"));
     let mut gpu = Env::with_gpu(config, gpu).expect("gpu env");
     let started = std::time::Instant::now();
     let c = cpu.reset().expect("cpu reset").clone();
@@ -145,7 +145,7 @@ fn hero_mode_is_identical_on_cpu_and_gpu() {
     let Some(gpu) = rinshan_tests::gpu_or_skip("hero_mode_parity") else {
         return;
     };
-    if !rinshan_tests::slow_gpu_tests_run(&gpu, "hero_mode_parity") {
+    if !rinshan_tests::agent_gpu_tests_run(&gpu, "hero_mode_parity") {
         return;
     }
     const B: usize = 64;

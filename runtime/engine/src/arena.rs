@@ -205,9 +205,9 @@ fn play(arena: &Arena, seed: u64, seating: &[Player; 4], game: u64, faults: &mut
         let round_end = kernel::EVENT_RON | kernel::EVENT_TSUMO | kernel::EVENT_EXHAUSTIVE_DRAW | kernel::EVENT_ABORTIVE_DRAW;
         while s.terminated == 0 {
             let p = s.current as usize;
-            let planes = v::observe_planes(s, kernel::OBSERVE_CURRENT);
+            let mut planes = v::observe_planes(s, kernel::OBSERVE_CURRENT);
             let a = match seating[p] {
-                Player::Builtin(agent) => v::agent_act(agent.kernel(), planes, s.mask, s.seed, s.steps),
+                Player::Builtin(agent) => v::agent_act(agent.kernel(), &mut planes, s.mask, s.seed, s.steps),
                 Player::Policy { policy, .. } => policy.act(bytemuck::bytes_of(&planes), &s.mask),
                 Player::Entrant { .. } => match seats[p].as_mut().map(|seat| seat.act(&s)) {
                     Some(Ok(a)) => a,

@@ -5,7 +5,7 @@
 
 use std::collections::HashMap;
 use std::hash::{Hash, Hasher};
-use std::sync::mpsc;
+use std::sync::{mpsc, Arc, Mutex};
 
 use wgpu::util::DeviceExt;
 
@@ -164,6 +164,9 @@ pub struct Gpu {
     // Keyed by a hash of the WGSL source, so custom modules (a spec compiled at run time) work too.
     modules: HashMap<u64, wgpu::ShaderModule>,
     pipelines: HashMap<(u64, EntrySpec), (wgpu::ComputePipeline, wgpu::BindGroupLayout)>,
+    // Why the driver lost the device, if it did: a failed map then says so instead of only that
+    // the buffer could not be mapped.
+    lost: Arc<Mutex<Option<String>>>,
 }
 
 impl Gpu {
@@ -188,6 +191,13 @@ impl Gpu {
             ..Default::default()
         }))
         .map_err(|e| GpuError::Device(e.to_string()))?;
+        let lost = Arc::new(Mutex::new(None));
+        let record = Arc::clone(&lost);
+        device.set_device_lost_callback(move |reason, message| {
+            if let Ok(mut why) = record.lock() {
+                *why = Some(format!("{reason:?}: {message}"));
+            }
+        });
         let tables = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("rinshan tables"),
             contents: tables::bytes(),
@@ -200,6 +210,7 @@ impl Gpu {
             tables,
             modules: HashMap::new(),
             pipelines: HashMap::new(),
+            lost,
         })
     }
 
@@ -209,6 +220,11 @@ impl Gpu {
             "{} ({:?}, {:?})",
             self.info.name, self.info.backend, self.info.device_type
         )
+    }
+
+    /// The driver's own version line, e.g. `Mesa 25.0.7-2~bpo12+1 (LLVM 15.0.6)` for lavapipe.
+    pub fn driver_info(&self) -> &str {
+        &self.info.driver_info
     }
 
     /// Whether the adapter is a software rasterizer on the CPU (Mesa's lavapipe, WARP...).
@@ -309,6 +325,13 @@ impl Gpu {
         })
     }
 
+    fn readback_error(&self, e: impl std::fmt::Display) -> GpuError {
+        match self.lost.lock().ok().and_then(|why| why.clone()) {
+            Some(why) => GpuError::Readback(format!("{e}: the device was lost ({why})")),
+            None => GpuError::Readback(e.to_string()),
+        }
+    }
+
     /// Maps `readback` (already filled by submitted work), waits, and copies out its words.
     pub(crate) fn read_words(&self, readback: &wgpu::Buffer, out: &mut Vec<u32>) -> Result<(), GpuError> {
         let (tx, rx) = mpsc::channel();
@@ -317,11 +340,11 @@ impl Gpu {
         });
         self.device
             .poll(wgpu::PollType::wait_indefinitely())
-            .map_err(|e| GpuError::Readback(e.to_string()))?;
+            .map_err(|e| self.readback_error(e))?;
         match rx.recv() {
             Ok(Ok(())) => {}
-            Ok(Err(e)) => return Err(GpuError::Readback(e.to_string())),
-            Err(e) => return Err(GpuError::Readback(e.to_string())),
+            Ok(Err(e)) => return Err(self.readback_error(e)),
+            Err(e) => return Err(self.readback_error(e)),
         }
         {
             let view = readback

@@ -84,8 +84,8 @@ pub(super) fn play(soak: &Soak, g: u64, seed: u64, starting: i32, logged: bool) 
             }
             let a = match seating {
                 Some(agents) => {
-                    let planes = v::observe_planes(s, OBSERVE_CURRENT);
-                    v::agent_act(agents[p as usize], planes, s.mask, s.seed, s.steps)
+                    let mut planes = v::observe_planes(s, OBSERVE_CURRENT);
+                    v::agent_act(agents[p as usize], &mut planes, s.mask, s.seed, s.steps)
                 }
                 None => policy.pick_legal(&s.mask),
             };
