@@ -383,51 +383,72 @@ pub fn agent_act(agent: u32, o: &mut ObsPlanes, mask: [u32; 3], seed: [u32; 2], 
 // Hero mode: the caller's action (bits 0-7; ignored when the seat to move is not the caller's)
 // then the built-in agents of bits 8.. (4 bits per seat, AGENT_CALLER = the caller's seat) play
 // until one of the caller's seats must decide or the game ends. The step's outputs add up every
-// decision played (rewards summed, events and winners merged). One call site of game_step and
-// of the agent: GPU compilers inline each once.
+// decision played (rewards summed, events and winners merged). A host that drives the GPU makes
+// the same calls as this loop, one pass each (game_play_action, then game_advance), so that no
+// shader holds both the step and the agents.
 pub fn game_play(s: &mut GameState, arg: u32) {
-    let agents: u32 = arg >> 8u32;
-    let mut rewards: [i32; 4] = [0i32; 4];
-    let mut events: u32 = 0u32;
-    let mut winners: u32 = 0u32;
-    let mut deal_in: u32 = 0u32;
-    let mut yaku: [u32; 2] = [0u32; 2];
-    let mut illegal: u32 = 0u32;
-    let mut ended: bool = false;
-    let mut played: u32 = 0u32;
-    loop {
-        let agent: u32 = (agents >> (s.current * 4u32)) & 15u32;
-        let mut a: u32 = arg & 255u32;
-        if played == 0u32 && (agent == AGENT_CALLER || s.phase == PHASE_OVER) {
-            // The caller's own decision (or a finished game, which stays finished).
-        } else if ended || agent == AGENT_CALLER || s.phase == PHASE_OVER || played > 20000u32 {
+    for i in 0u32..PLAY_LIMIT {
+        let a: u32 = play_action(s, arg | (PLAY_FIRST * ((i == 0u32) as u32)));
+        if a == PLAY_DONE {
             break;
-        } else {
-            let mut o: ObsPlanes = planes_of(s, OBSERVE_CURRENT);
-            a = agent_act(agent, &mut o, s.mask, s.seed, s.steps);
         }
-        game_step(s, a);
-        played += 1u32;
-        for p in 0u32..4u32 {
-            rewards[p as usize] += s.rewards[p as usize];
-        }
-        events |= s.events;
-        winners |= s.winners;
-        if s.deal_in != 0u32 {
-            deal_in = s.deal_in;
-        }
-        yaku[0] |= s.yaku[0];
-        yaku[1] |= s.yaku[1];
-        illegal |= s.illegal;
-        ended = ended || s.terminated != 0u32;
+        game_advance(s, a);
     }
-    s.rewards = rewards;
-    s.events = events;
-    s.winners = winners;
-    s.deal_in = deal_in;
-    s.yaku = yaku;
-    s.illegal = illegal;
-    s.terminated = ended as u32;
+}
+
+// Hero mode's next decision, as game_advance's argument: on the call's first decision (PLAY_FIRST)
+// the caller's action if its seat is to move (or the game is over, which stays over), else the
+// built-in agent's; on later decisions PLAY_DONE once the game ended, is over or waits for the
+// caller, else the agent's action with PLAY_ADD.
+fn play_action(s: &mut GameState, arg: u32) -> u32 {
+    let first: bool = (arg & PLAY_FIRST) != 0u32;
+    let agent: u32 = (arg >> (8u32 + s.current * 4u32)) & 15u32;
+    let waits: bool = agent == AGENT_CALLER || s.phase == PHASE_OVER;
+    if first && waits {
+        return arg & 255u32;
+    }
+    if !first && (waits || s.terminated != 0u32) {
+        return PLAY_DONE;
+    }
+    let mut o: ObsPlanes = planes_of(s, OBSERVE_CURRENT);
+    let a: u32 = agent_act(agent, &mut o, s.mask, s.seed, s.steps);
+    a | (PLAY_ADD * ((!first) as u32))
+}
+
+pub fn game_play_action(state: GameState, arg: u32) -> u32 {
+    let mut s: GameState = state;
+    play_action(&mut s, arg)
+}
+
+// One step (an action id: game_step itself), or one of hero mode's decisions (from
+// game_play_action): PLAY_DONE plays nothing, and with PLAY_ADD the step's outputs add up with
+// those already in the state. One call site of game_step: GPU compilers inline it once.
+pub fn game_advance(s: &mut GameState, arg: u32) {
+    if arg == PLAY_DONE {
+        return;
+    }
+    let rewards: [i32; 4] = s.rewards;
+    let events: u32 = s.events;
+    let winners: u32 = s.winners;
+    let deal_in: u32 = s.deal_in;
+    let yaku: [u32; 2] = s.yaku;
+    let illegal: u32 = s.illegal;
+    let terminated: u32 = s.terminated;
+    game_step(s, arg & !PLAY_ADD);
+    if (arg & PLAY_ADD) != 0u32 {
+        for p in 0u32..4u32 {
+            s.rewards[p as usize] += rewards[p as usize];
+        }
+        s.events |= events;
+        s.winners |= winners;
+        if s.deal_in == 0u32 {
+            s.deal_in = deal_in;
+        }
+        s.yaku[0] |= yaku[0];
+        s.yaku[1] |= yaku[1];
+        s.illegal |= illegal;
+        s.terminated |= terminated;
+    }
 }
 
 // The action the built-in agent seated at the player to move would play (`arg`: 4 bits per

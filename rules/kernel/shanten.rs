@@ -60,10 +60,14 @@ fn shanten_normal(hand: [u32; 34], tiles: u32) -> i32 {
     let w1: u32 = table(T_SUIT_COST + suit_code(hand, 1u32));
     let w2: u32 = table(T_SUIT_COST + suit_code(hand, 2u32));
     let w3: u32 = table(T_HONOR_COST + honor_code(hand));
-    // Two independent pairs, then only the entries of the final combination that are needed:
-    // `sets` sets and the pair in all.
+    // Two independent pairs, then only the entries of the final combination that are needed.
     let a: [u32; 10] = combine_costs(group_costs(w0), group_costs(w1));
     let b: [u32; 10] = combine_costs(group_costs(w2), group_costs(w3));
+    missing(a, b, sets) - 1i32
+}
+
+// The tiles missing for `sets` sets and the pair in all, split between two combined costs.
+fn missing(a: [u32; 10], b: [u32; 10], sets: u32) -> i32 {
     let mut best: u32 = 255u32;
     for m in 0u32..sets + 1u32 {
         let j: u32 = (sets - m) * 2u32;
@@ -71,7 +75,7 @@ fn shanten_normal(hand: [u32; 34], tiles: u32) -> i32 {
             (a[(m * 2u32) as usize] + b[(j + 1u32) as usize]).min(a[(m * 2u32 + 1u32) as usize] + b[j as usize]);
         best = best.min(v);
     }
-    (best as i32) - 1i32
+    best as i32
 }
 
 // Kinds held (at most one per type) and of those, kinds held twice or more; straight-line counting
@@ -122,4 +126,77 @@ pub fn shanten(inp: ShantenInput) -> ShantenOutput {
         chiitoitsu: chiitoitsu,
         kokushi: kokushi,
     }
+}
+
+// The shanten of `hand` with one more tile of each type, as `shanten` would compute it for each
+// (SHANTEN_NOT_APPLICABLE for a type held four times). A drawn tile changes one group's table word
+// and the kind counts only, so the three other groups are combined once per group, and each type
+// costs one table read and one final combination instead of a whole `shanten`: the analysis tier
+// asks this for every discard.
+fn shanten_after_draws(hand: [u32; 34]) -> [i32; 34] {
+    let mut tiles: u32 = 0u32;
+    for t in 0u32..N_TYPES {
+        tiles += hand[t as usize];
+    }
+    let sets: u32 = (tiles + 1u32) / 3u32;
+    let c0: u32 = suit_code(hand, 0u32);
+    let c1: u32 = suit_code(hand, 1u32);
+    let c2: u32 = suit_code(hand, 2u32);
+    let c3: u32 = honor_code(hand);
+    let g0: [u32; 10] = group_costs(table(T_SUIT_COST + c0));
+    let g1: [u32; 10] = group_costs(table(T_SUIT_COST + c1));
+    let g2: [u32; 10] = group_costs(table(T_SUIT_COST + c2));
+    let g3: [u32; 10] = group_costs(table(T_HONOR_COST + c3));
+    let c01: [u32; 10] = combine_costs(g0, g1);
+    let c23: [u32; 10] = combine_costs(g2, g3);
+    // Kinds and pairs of the whole hand and of its terminals and honors, for the other two forms.
+    let kp: [u32; 2] = kinds_and_pairs(hand, 0u32, N_TYPES);
+    let mut orphan_kinds: u32 = 0u32;
+    let mut orphan_pairs: u32 = 0u32;
+    for t in 0u32..N_TYPES {
+        let c: u32 = hand[t as usize] * (is_terminal_or_honor(t) as u32);
+        orphan_kinds += c.min(1u32);
+        orphan_pairs += (c >> 1u32).min(1u32);
+    }
+    let mut out: [i32; 34] = [SHANTEN_NOT_APPLICABLE; 34];
+    for g in 0u32..4u32 {
+        // The other three groups, and the place value of the group's first type in its code.
+        let mut rest: [u32; 10] = combine_costs(c01, g2);
+        let mut code: u32 = T_HONOR_COST + c3;
+        let mut place: u32 = 15625u32;
+        let mut n: u32 = 7u32;
+        if g == 0u32 {
+            rest = combine_costs(g1, c23);
+            code = T_SUIT_COST + c0;
+        } else if g == 1u32 {
+            rest = combine_costs(g0, c23);
+            code = T_SUIT_COST + c1;
+        } else if g == 2u32 {
+            rest = combine_costs(c01, g3);
+            code = T_SUIT_COST + c2;
+        }
+        if g < 3u32 {
+            place = 390625u32;
+            n = 9u32;
+        }
+        for i in 0u32..n {
+            let t: u32 = g * 9u32 + i;
+            let c: u32 = hand[t as usize];
+            if c < 4u32 {
+                let mut best: i32 = missing(rest, group_costs(table(code + place)), sets) - 1i32;
+                if tiles + 1u32 >= 13u32 {
+                    let kinds: i32 = (kp[0] + (c == 0u32) as u32) as i32;
+                    let pairs: i32 = (kp[1] + (c == 1u32) as u32) as i32;
+                    best = best.min(6i32 - pairs.min(7i32) + (7i32 - kinds).max(0i32));
+                    let orphan: u32 = is_terminal_or_honor(t) as u32;
+                    let ok: u32 = orphan_kinds + orphan * ((c == 0u32) as u32);
+                    let op: u32 = orphan_pairs + orphan * ((c == 1u32) as u32);
+                    best = best.min(13i32 - (ok as i32) - (op.min(1u32) as i32));
+                }
+                out[t as usize] = best;
+            }
+            place = place / 5u32;
+        }
+    }
+    out
 }

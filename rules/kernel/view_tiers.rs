@@ -11,19 +11,13 @@ fn put_oracle_byte(out: &mut [u32; 78], i: u32, v: u32) {
     out[(i / 4u32) as usize] |= (v & 255u32) << ((i % 4u32) * 8u32);
 }
 
-// Unseen copies per type from what the observer has seen; ukeire of a 3k+1 hand over them.
-fn improving_tiles(h: [u32; 34], unseen: [u32; 34]) -> [u32; 34] {
-    let base: i32 = shanten(ShantenInput { hand: h }).shanten;
+// Unseen copies per type from what the observer has seen; ukeire of a 3k+1 hand (of shanten
+// `base`) over them.
+fn improving_tiles(h: [u32; 34], base: i32, unseen: [u32; 34]) -> [u32; 34] {
+    let after: [i32; 34] = shanten_after_draws(h);
     let mut out: [u32; 34] = [0u32; 34];
-    let mut x: [u32; 34] = h;
     for t in 0u32..34u32 {
-        if h[t as usize] < 4u32 {
-            x[t as usize] += 1u32;
-            if shanten(ShantenInput { hand: x }).shanten < base {
-                out[t as usize] = unseen[t as usize];
-            }
-            x[t as usize] -= 1u32;
-        }
+        out[t as usize] = unseen[t as usize] * ((after[t as usize] < base) as u32);
     }
     out
 }
@@ -54,8 +48,9 @@ fn analysis_of(s: &mut GameState, arg: u32) -> ObsAnalysis {
             if v.hand[t as usize] > 0u32 {
                 let mut h: [u32; 34] = v.hand;
                 h[t as usize] -= 1u32;
-                sh = shanten(ShantenInput { hand: h }).shanten as u32;
-                let imp: [u32; 34] = improving_tiles(h, unseen);
+                let base: i32 = shanten(ShantenInput { hand: h }).shanten;
+                sh = base as u32;
+                let imp: [u32; 34] = improving_tiles(h, base, unseen);
                 for u in 0u32..34u32 {
                     uk += imp[u as usize];
                 }
@@ -67,7 +62,8 @@ fn analysis_of(s: &mut GameState, arg: u32) -> ObsAnalysis {
         for t in 0u32..34u32 {
             put_word_byte(&mut out, A_DISCARD_SHANTEN + t, NO_TILE_BYTE);
         }
-        let imp: [u32; 34] = improving_tiles(v.hand, unseen);
+        let base: i32 = shanten(ShantenInput { hand: v.hand }).shanten;
+        let imp: [u32; 34] = improving_tiles(v.hand, base, unseen);
         for t in 0u32..34u32 {
             put_word_byte(&mut out, A_IMPROVING + t, imp[t as usize]);
         }

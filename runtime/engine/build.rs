@@ -140,7 +140,6 @@ fn main() {
                 .iter()
                 .flat_map(|(_, _, state, arg, out)| [*state, *arg, *out]),
         )
-        .chain(HOST_RECORDS)
         .filter(|ty| !matches!(*ty, "u32" | "i32" | "f32"))
         .collect();
     io_types.sort_unstable();

@@ -303,6 +303,17 @@ async fn spectate_and_replay(c: &Client, base: &str) {
     )
     .await;
     assert_eq!(hidden, json!(0), "a spectator sees every hand");
+    // The page names the rule set played, its description as the tooltip.
+    let rules = js(
+        &c,
+        "const r = document.querySelector('#status .rules'); return r ? [r.textContent, r.title] : null;",
+    )
+    .await;
+    let described = rinshan_engine::Variant::Mleague.description();
+    assert!(
+        rules[0].as_str().is_some_and(|t| t.starts_with("Rules: mleague (")) && rules[1] == json!(described),
+        "{rules}"
+    );
     screenshot(&c, "spectate.png").await;
     // The replay page opens a real log and steps through it with the keyboard.
     c.goto(&format!("{base}/replay")).await.expect("the page opens");

@@ -244,3 +244,71 @@ fn event_tokens_replay_the_rivers_and_own_draws() {
     assert!(positions > 10_000);
     let _ = OBSERVE_CURRENT;
 }
+
+/// The analysis tier against its definition, computed the slow way with the shanten kernel (itself
+/// checked against the shanten case files): after each discard, the shanten and the unseen copies
+/// of every draw that lowers it; for a hand waiting to draw, those draws; the waits as in the
+/// planes. The hand and the seen counts are read from the planes.
+#[test]
+fn analysis_is_shanten_and_ukeire_counted_draw_by_draw() {
+    use kernel::{
+        shanten, ShantenInput, A_DISCARD_SHANTEN, A_DISCARD_UKEIRE, A_IMPROVING, A_WAITS, P_HAND, P_SEEN, P_WAITS,
+    };
+    let k = KERNELS[0];
+    let sh = |h: &[u32; 34]| shanten(ShantenInput { hand: *h }).shanten;
+    // The unseen copies of each draw that lowers the shanten of `h`.
+    let improving = |h: &[u32; 34], unseen: &[u32; 34]| -> [u32; 34] {
+        let base = sh(h);
+        std::array::from_fn(|t| {
+            let mut x = *h;
+            x[t] += 1;
+            if h[t] < 4 && sh(&x) < base {
+                unseen[t]
+            } else {
+                0
+            }
+        })
+    };
+    let mut rng = Rng::new(31);
+    let mut positions = 0;
+    for game in 0..40u64 {
+        let mut s = (k.new)(reset_input(7000 + game, 4, None));
+        while s.terminated == 0 {
+            let seat = rng.below(4);
+            let planes = (k.planes)(s, seat);
+            let p: &[u8] = bytemuck::cast_slice(&planes.planes);
+            let cell = |row: u32, t: usize| u32::from(p[row as usize * 34 + t]);
+            let hand: [u32; 34] = std::array::from_fn(|t| (0..4).map(|r| cell(P_HAND + r, t)).sum());
+            let unseen: [u32; 34] = std::array::from_fn(|t| 4 - cell(P_SEEN, t));
+            let analysis = (k.analysis)(s, seat);
+            let a: &[u8] = bytemuck::cast_slice(&analysis.words);
+            let at = |field: u32, t: usize| u32::from(a[field as usize + t]);
+            let tiles: u32 = hand.iter().sum();
+            for t in 0..34 {
+                assert_eq!(at(A_WAITS, t), cell(P_WAITS, t), "game {game}, step {}: waits", s.steps);
+                let (want_shanten, want_ukeire, want_improving) = if tiles % 3 == 2 {
+                    let mut h = hand;
+                    if h[t] == 0 {
+                        (255, 0, 0)
+                    } else {
+                        h[t] -= 1;
+                        (sh(&h) as u32, improving(&h, &unseen).iter().sum(), 0)
+                    }
+                } else {
+                    (255, 0, improving(&hand, &unseen)[t])
+                };
+                let got = (at(A_DISCARD_SHANTEN, t), at(A_DISCARD_UKEIRE, t), at(A_IMPROVING, t));
+                assert_eq!(
+                    got,
+                    (want_shanten, want_ukeire, want_improving),
+                    "game {game}, step {}, seat {seat}, type {t}: hand {hand:?}",
+                    s.steps
+                );
+            }
+            positions += 1;
+            let a = rng.pick_legal(&s.mask);
+            (k.step)(&mut s, a);
+        }
+    }
+    eprintln!("analysis: {positions} positions, each type's shanten and ukeire counted draw by draw");
+}

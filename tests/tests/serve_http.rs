@@ -249,6 +249,7 @@ async fn every_rule_set_is_offered_with_its_description() {
     )
     .await;
     assert_eq!(v["variant"], "mleague", "{v}");
+    assert_eq!(v["rules"], info["variant_descriptions"]["mleague"], "{v}");
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]

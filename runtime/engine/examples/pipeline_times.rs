@@ -3,9 +3,9 @@
 //! `MESA_SHADER_CACHE_DISABLE=true`).
 //!
 //! `cargo run --release -p rinshan-engine --example pipeline_times -- [variant] [stage...]`
-//! with stages from `new step planes tokens oracle agent play` (default: all). The reset (the
-//! new-game and view pipelines) is always timed first; `play` is hero mode (the step and the
-//! agents in one pipeline). The analysis tier has no GPU pipeline: the CPU kernel computes it.
+//! with stages from `new step planes tokens analysis oracle agent play` (default: all). The reset (the
+//! new-game and view pipelines) is always timed first; `play` is hero mode (its agents'
+//! pipeline, `game_play_action_main`, beside the step's).
 
 use std::time::Instant;
 
@@ -17,7 +17,7 @@ use rinshan_engine::Variant;
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let variant: Variant = args.first().map(String::as_str).unwrap_or("red").parse()?;
-    let all = ["new", "step", "planes", "tokens", "oracle", "agent", "play"];
+    let all = ["new", "step", "planes", "tokens", "analysis", "oracle", "agent", "play"];
     let stages: Vec<&str> = if args.len() > 1 {
         args[1..].iter().map(String::as_str).collect()
     } else {
@@ -42,7 +42,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 let actions = first_legal(&env);
                 env.step(&actions).map(|_| ()).map_err(Into::into)
             })?,
-            "planes" | "tokens" | "oracle" => {
+            "planes" | "tokens" | "analysis" | "oracle" => {
                 let form: Form = stage.parse()?;
                 time(stage, &mut || env.observe_all(form).map(|_| ()).map_err(Into::into))?
             }
@@ -55,7 +55,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 let mut hero = config.clone();
                 hero.agents = vec![[None, Some(Agent::Rule), Some(Agent::Greedy), Some(Agent::Defensive)]];
                 // A second env opens its own device, so its reset compiles the reset's pipelines
-                // again (untimed; Mesa's cache serves them unless it is disabled).
+                // again (untimed), and its first step the step's (timed, unless `step` ran before
+                // and Mesa's cache serves it).
                 let mut played = Env::new(hero)?;
                 played.reset()?;
                 time("play", &mut || {

@@ -12,24 +12,26 @@ pub const ENTRIES: [(&str, &str, &str, &str); 4] = [
 /// The in-place update entry points, after [`ENTRIES`] in binding order: (entry point, kernel
 /// function `fn(&mut State, Arg)`, state struct, argument type). The k-th entry point of the
 /// module (k counts [`ENTRIES`] first) binds its state (read-write) at 1+2k and its arguments at 2+2k.
-pub const UPDATE_ENTRIES: [(&str, &str, &str, &str); 3] = [
-    ("game_step_main", "game_step", "GameState", "u32"),
+/// The step's entry runs `game_advance`: a step, or one of hero mode's decisions.
+pub const UPDATE_ENTRIES: [(&str, &str, &str, &str); 2] = [
+    ("game_step_main", "game_advance", "GameState", "u32"),
     ("game_deal_main", "game_deal", "GameState", "DealInput"),
-    ("game_play_main", "game_play", "GameState", "u32"),
 ];
 
 /// The read entry points, after [`UPDATE_ENTRIES`] in binding order: (entry point, kernel function
 /// `fn(State, Arg) -> Out`, state struct, argument type, output struct). Each takes two binding
 /// slots: at slot k its state (read-only) binds 1+2k, its arguments 2+2k and its output 3+2k.
-pub const READ_ENTRIES: [(&str, &str, &str, &str, &str); 4] = [
+pub const READ_ENTRIES: [(&str, &str, &str, &str, &str); 6] = [
     ("observe_planes_main", "observe_planes", "GameState", "u32", "ObsPlanes"),
     ("observe_tokens_main", "observe_tokens", "GameState", "u32", "ObsTokens"),
+    (
+        "observe_analysis_main",
+        "observe_analysis",
+        "GameState",
+        "u32",
+        "ObsAnalysis",
+    ),
     ("observe_oracle_main", "observe_oracle", "GameState", "u32", "ObsOracle"),
     ("agent_action_main", "game_agent_action", "GameState", "u32", "u32"),
+    ("game_play_action_main", "game_play_action", "GameState", "u32", "u32"),
 ];
-
-/// Kernel records the host reads that no GPU entry point passes (so the lists above do not name
-/// them): the analysis tier, which the CPU kernel computes for both backends.
-// Read by build.rs only (it derives bytemuck's traits for these records).
-#[allow(dead_code)]
-pub const HOST_RECORDS: [&str; 1] = ["ObsAnalysis"];

@@ -217,6 +217,7 @@ fn view_json(id: u64, s: &Session, tiles: TileMode, board: bool) -> Result<Value
         "current": b.current,
         "seat": s.human(),
         "variant": setup.variant.to_string(),
+        "rules": setup.variant.description(),
         "mode": setup.mode.name(),
         "names": s.names(),
         "scores": b.scores,

@@ -2,8 +2,12 @@
 //! A reset uploads the `ResetInput`s and runs `game_new_main` into the state buffer; a step
 //! uploads B action ids, runs `game_step_main` on the states in place, then `game_view_main`; only
 //! the `StepView`s come back. A forced deal (log replay) uploads `DealInput`s and runs
-//! `game_deal_main` on the states in place.
+//! `game_deal_main` on the states in place. Hero mode alternates `game_play_action_main` (the
+//! agents) and `game_step_main` until every env waits for the caller, as the CPU kernel's
+//! `game_play` loops: one shader holding the step and the agents took drivers minutes to compile,
+//! and NVIDIA's lost the device on it.
 
+use crate::generated::kernel as k;
 use crate::gpu::{groups, EntrySpec, Gpu, GpuError};
 use crate::observe::Form;
 use crate::Variant;
@@ -13,8 +17,7 @@ fn observe_entry(form: Form) -> &'static str {
     match form {
         Form::Planes => "observe_planes_main",
         Form::Tokens => "observe_tokens_main",
-        // Computed by the CPU kernel from the states (see Env::observe_into).
-        Form::Analysis => unreachable!("the analysis tier is not computed on the device"),
+        Form::Analysis => "observe_analysis_main",
         Form::Oracle => "observe_oracle_main",
     }
 }
@@ -23,8 +26,8 @@ const NEW: &str = "game_new_main";
 const VIEW: &str = "game_view_main";
 const STEP: &str = "game_step_main";
 const DEAL: &str = "game_deal_main";
-const PLAY: &str = "game_play_main";
 const AGENT_ACTION: &str = "agent_action_main";
+const PLAY_ACTION: &str = "game_play_action_main";
 
 /// The passes, made on first use (a driver may take long to compile the step pipeline).
 #[derive(Clone, Copy)]
@@ -33,7 +36,6 @@ enum Stage {
     Step = 1,
     View = 2,
     Deal = 3,
-    Play = 4,
 }
 
 struct Pass {
@@ -55,12 +57,29 @@ pub(crate) struct GpuEnv {
     views_buffer: wgpu::Buffer,
     view_readback: wgpu::Buffer,
     wgsl: &'static str,
-    passes: [Option<Pass>; 5],
+    passes: [Option<Pass>; 4],
+    /// Hero mode's passes and buffers, made on its first step.
+    play: Option<PlayPasses>,
     /// The last views read back (StepView words of every env).
     views: Vec<u32>,
     /// Observations, made on first use: observer seats, and per form its pass, output and readback.
     observer_args: Option<wgpu::Buffer>,
     reads: std::collections::HashMap<&'static str, ReadPass>,
+}
+
+/// Hero mode's agents pass (`game_play_action_main`) with its two argument buffers (the call's
+/// first decision, the later ones), the decisions it writes, and the step's pass reading them.
+struct PlayPasses {
+    action: wgpu::ComputePipeline,
+    first_group: wgpu::BindGroup,
+    later_group: wgpu::BindGroup,
+    step_group: wgpu::BindGroup,
+    first_args: wgpu::Buffer,
+    later_args: wgpu::Buffer,
+    actions: wgpu::Buffer,
+    readback: wgpu::Buffer,
+    bytes: u64,
+    words: Vec<u32>,
 }
 
 /// One read entry's pass (observations, agents' actions), its output buffer and its readback, and
@@ -121,7 +140,8 @@ impl GpuEnv {
             views_buffer: views,
             view_readback,
             wgsl,
-            passes: [None, None, None, None, None],
+            passes: [None, None, None, None],
+            play: None,
             views: Vec::with_capacity(batch * view_words),
             observer_args: None,
             reads: std::collections::HashMap::new(),
@@ -143,7 +163,6 @@ impl GpuEnv {
         let (spec, first, second) = match stage {
             Stage::New => (EntrySpec::map(NEW), &self.reset_inputs, &self.states),
             Stage::Step => (EntrySpec::update(STEP), &self.states, &self.actions),
-            Stage::Play => (EntrySpec::update(PLAY), &self.states, &self.actions),
             Stage::View => (EntrySpec::map(VIEW), &self.states, &self.views_buffer),
             Stage::Deal => {
                 let Some(deals) = &self.deal_inputs else {
@@ -208,10 +227,109 @@ impl GpuEnv {
 
     /// One step (`play`: hero mode, `actions` are `game_play` arguments).
     pub(crate) fn step(&mut self, actions: &[u32], play: bool) -> Result<&[u32], GpuError> {
+        if play {
+            return self.play(actions);
+        }
+        // `game_step_main` reads the hero-mode flags from the high bits: any id that high is
+        // illegal, and stays so.
+        let ids: Vec<u32> = actions.iter().map(|&a| a.min(k::PLAY_ADD - 1)).collect();
         self.gpu
             .queue()
-            .write_buffer(&self.actions, 0, bytemuck::cast_slice(actions));
-        self.run(if play { Stage::Play } else { Stage::Step })
+            .write_buffer(&self.actions, 0, bytemuck::cast_slice(&ids));
+        self.run(Stage::Step)
+    }
+
+    /// Hero mode: the decisions of `game_play` (its arguments in `args`), one pass of the agents
+    /// and one of the step at a time, in growing batches of passes between checks for an env that
+    /// still plays.
+    fn play(&mut self, args: &[u32]) -> Result<&[u32], GpuError> {
+        self.ensure(Stage::Step);
+        if self.play.is_none() {
+            self.play = Some(self.play_passes());
+        }
+        let (Some(play), Some(step)) = (&mut self.play, &self.passes[Stage::Step as usize]) else {
+            unreachable!("made above")
+        };
+        let queue = self.gpu.queue();
+        let first: Vec<u32> = args.iter().map(|&a| a | k::PLAY_FIRST).collect();
+        queue.write_buffer(&play.first_args, 0, bytemuck::cast_slice(&first));
+        queue.write_buffer(&play.later_args, 0, bytemuck::cast_slice(args));
+        let groups = groups(self.batch);
+        let encode = |encoder: &mut wgpu::CommandEncoder, pipeline: &wgpu::ComputePipeline, bind_group| {
+            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                label: Some("rinshan hero mode"),
+                timestamp_writes: None,
+            });
+            pass.set_pipeline(pipeline);
+            pass.set_bind_group(0, bind_group, &[]);
+            pass.dispatch_workgroups(groups, 1, 1);
+        };
+        let device = self.gpu.device();
+        let mut encoder = device.create_command_encoder(&Default::default());
+        encode(&mut encoder, &play.action, &play.first_group);
+        encode(&mut encoder, &step.pipeline, &play.step_group);
+        let mut played = 1;
+        let mut chunk = 4;
+        loop {
+            for _ in 0..chunk.min(k::PLAY_LIMIT - played) {
+                encode(&mut encoder, &play.action, &play.later_group);
+                encode(&mut encoder, &step.pipeline, &play.step_group);
+                played += 1;
+            }
+            // The next decisions, to see whether any env still plays.
+            encode(&mut encoder, &play.action, &play.later_group);
+            encoder.copy_buffer_to_buffer(&play.actions, 0, &play.readback, 0, play.bytes);
+            queue.submit([encoder.finish()]);
+            self.gpu.read_words(&play.readback, &mut play.words)?;
+            if played >= k::PLAY_LIMIT || play.words.iter().all(|&a| a == k::PLAY_DONE) {
+                break;
+            }
+            chunk = (chunk * 2).min(256);
+            encoder = device.create_command_encoder(&Default::default());
+        }
+        self.dispatch(&[Stage::View])
+    }
+
+    fn play_passes(&mut self) -> PlayPasses {
+        let device = self.gpu.device();
+        let bytes = (self.batch * 4) as u64;
+        let buffer = |label: &str, usage: wgpu::BufferUsages| {
+            device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some(label),
+                size: bytes,
+                usage,
+                mapped_at_creation: false,
+            })
+        };
+        use wgpu::BufferUsages as U;
+        let first_args = buffer("rinshan hero first args", U::STORAGE | U::COPY_DST);
+        let later_args = buffer("rinshan hero args", U::STORAGE | U::COPY_DST);
+        let actions = buffer("rinshan hero actions", U::STORAGE | U::COPY_SRC);
+        let readback = buffer("rinshan hero actions readback", U::MAP_READ | U::COPY_DST);
+        let spec = EntrySpec::read(PLAY_ACTION);
+        let (action, layout) = self.gpu.pipeline(self.wgsl, spec);
+        let first_group = self
+            .gpu
+            .bind_group(&layout, spec, &self.states, &first_args, Some(&actions));
+        let later_group = self
+            .gpu
+            .bind_group(&layout, spec, &self.states, &later_args, Some(&actions));
+        // The step's pipeline, cached: its layout for a bind group reading the decisions.
+        let step = EntrySpec::update(STEP);
+        let (_, step_layout) = self.gpu.pipeline(self.wgsl, step);
+        let step_group = self.gpu.bind_group(&step_layout, step, &self.states, &actions, None);
+        PlayPasses {
+            action,
+            first_group,
+            later_group,
+            step_group,
+            first_args,
+            later_args,
+            actions,
+            readback,
+            bytes,
+            words: Vec::new(),
+        }
     }
 
     /// Deals the rounds of `inputs` (`DealInput` words of every env; `deal == 0` leaves an env alone).

@@ -36,11 +36,9 @@ impl Env {
     }
 
     /// Writes one `form` observation per env into `out` (`batch * form.bytes()` bytes, env-major),
-    /// for the seats `observer` names. On the GPU backend the analysis tier is computed by the CPU
-    /// kernel from the states read back (Mesa's lavapipe miscompiles its GPU pipeline: loops in it
-    /// stop after a few iterations), the other forms on the device. Seats that are not deciding
-    /// see everything public and their own hand, and no decision. On the GPU, only this call (and
-    /// [`Config::observe`]) reads observations back.
+    /// for the seats `observer` names. Seats that are not deciding see everything public and their
+    /// own hand, and no decision. On the GPU, only this call (and [`Config::observe`]) reads
+    /// observations back.
     pub fn observe_into(&mut self, form: Form, observer: Observer, out: &mut [u8]) -> Result<(), EnvError> {
         let want = self.batch() * form.bytes();
         if out.len() != want {
@@ -62,11 +60,6 @@ impl Env {
                     out.copy_from_slice(bytemuck::cast_slice(&words));
                 }
             },
-            Backing::Gpu(gpu) if form == Form::Analysis => {
-                let mut words = vec![0u32; self.config.batch * form.words()];
-                observe_cpu(variant, form, &gpu.states()?, &args, &mut words, false);
-                out.copy_from_slice(bytemuck::cast_slice(&words));
-            }
             Backing::Gpu(gpu) => {
                 let words = gpu.observe(form, &args)?;
                 out.copy_from_slice(bytemuck::cast_slice(words));
@@ -119,9 +112,6 @@ impl Env {
                 Backing::Cpu(cpu) => {
                     let out = &mut self.observations[i];
                     cpu.install(|| observe_cpu(variant, form, &cpu.states, &args, out, cpu.serial));
-                }
-                Backing::Gpu(gpu) if form == Form::Analysis => {
-                    observe_cpu(variant, form, &gpu.states()?, &args, &mut self.observations[i], false);
                 }
                 Backing::Gpu(gpu) => {
                     let words = gpu.observe(form, &args)?;

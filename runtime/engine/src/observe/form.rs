@@ -13,8 +13,7 @@ pub enum Form {
     /// Hand, melds, dora, the round's public events in order, and the scalars: for Transformers.
     Tokens,
     /// The opt-in analysis tier: shanten and ukeire after each discard, waits, improving draws.
-    /// Computed from the observer's hand and the tiles it has seen: no more than it may know. The
-    /// CPU kernel computes it on both backends (from the states read back on the GPU).
+    /// Computed from the observer's hand and the tiles it has seen: no more than it may know.
     Analysis,
     /// The opt-in oracle: what the observer cannot see (other hands, shanten, waits, furiten, the
     /// live wall in draw order, the replacement tiles, every dora and ura indicator). Hidden

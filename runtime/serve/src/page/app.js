@@ -120,6 +120,12 @@ function draw() {
   const points = v.result && v.result.final_scores ? v.result.final_scores : v.scores;
   scores.textContent = v.names.map((n, p) => n + " " + points[p]).join(" · ");
   $("status").appendChild(scores);
+  // The rule set played, so that a page left open says which rules its scores follow.
+  const rules = document.createElement("p");
+  rules.className = "rules";
+  rules.textContent = "Rules: " + v.variant + " (" + v.mode + ")";
+  rules.title = v.rules;
+  $("status").appendChild(rules);
   if (v.seed !== null && v.seed !== undefined) {
     const seed = document.createElement("p");
     seed.className = "seed";
