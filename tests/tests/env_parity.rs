@@ -1,8 +1,9 @@
 //! CPU vs GPU environment parity: the same seeds and the same random legal actions give
-//! identical current players, masks, rewards, terminations and observations (planes, tokens and
-//! analysis of the current player at every step; those and the oracle of every seat every 25
-//! steps) at every step of whole games, and identical states at the end. Hero mode (built-in
-//! agents playing three seats inside a step) is compared the same way.
+//! identical current players, masks, rewards, terminations and observations (planes and tokens of
+//! the current player at every step; those, the analysis tier and the oracle of every seat every
+//! 25 steps) at every step of whole games, and identical states at the end. Hero mode (built-in
+//! agents playing three seats inside a step) is compared the same way, and so are illegal action
+//! ids of any size (the GPU's step reads hero mode's flags from an id's high bits).
 
 use rinshan_engine::agents::Agent;
 use rinshan_engine::env::{Backend, Config, Env, Mode, Observer};
@@ -194,4 +195,31 @@ fn hero_mode_is_identical_on_cpu_and_gpu() {
         "final states"
     );
     eprintln!("hero mode: {B} east games, {steps} batch steps, identical on CPU and GPU");
+}
+
+/// Any id outside the layout is an illegal action on both backends, whatever its high bits: the
+/// GPU's step entry reads hero mode's flags (`PLAY_ADD`, `PLAY_DONE`) from them.
+#[test]
+fn illegal_ids_of_any_size_end_the_game_alike_on_cpu_and_gpu() {
+    let Some(gpu) = rinshan_tests::gpu_or_skip("illegal_ids_parity") else {
+        return;
+    };
+    let ids = [
+        86,
+        255,
+        0x3fff_ffff,
+        0x4000_0000,
+        0x4000_0005,
+        0x8000_0000,
+        0xffff_fffe,
+        0xffff_ffff,
+    ];
+    let config = Config::new(Variant::Red, ids.len());
+    let mut cpu = Env::new(config.clone()).expect("cpu env");
+    let mut gpu = Env::with_gpu(config, gpu).expect("gpu env");
+    assert_eq!(cpu.reset().expect("cpu reset"), gpu.reset().expect("gpu reset"));
+    let c = cpu.step(&ids).expect("cpu step").clone();
+    assert_eq!(&c, gpu.step(&ids).expect("gpu step"));
+    assert!(c.terminated.iter().all(|&t| t), "every id is illegal: {c:?}");
+    assert_eq!(cpu.states_words().expect("cpu"), gpu.states_words().expect("gpu"));
 }

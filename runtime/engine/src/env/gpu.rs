@@ -12,6 +12,15 @@ use crate::gpu::{groups, EntrySpec, Gpu, GpuError};
 use crate::observe::Form;
 use crate::Variant;
 
+fn make_buffer(device: &wgpu::Device, label: &str, size: u64, usage: wgpu::BufferUsages) -> wgpu::Buffer {
+    device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some(label),
+        size,
+        usage,
+        mapped_at_creation: false,
+    })
+}
+
 /// The read entry point that writes `form`.
 fn observe_entry(form: Form) -> &'static str {
     match form {
@@ -103,14 +112,7 @@ impl GpuEnv {
         let wgsl = with_variant!(variant, v => v::WGSL);
         let words = |n: usize| (batch * n * 4) as u64;
         let (state_bytes, view_bytes) = (words(state_words), words(view_words));
-        let buffer = |gpu: &Gpu, label: &str, size: u64, usage: wgpu::BufferUsages| {
-            gpu.device().create_buffer(&wgpu::BufferDescriptor {
-                label: Some(label),
-                size,
-                usage,
-                mapped_at_creation: false,
-            })
-        };
+        let buffer = |gpu: &Gpu, label: &str, size: u64, usage| make_buffer(gpu.device(), label, size, usage);
         use wgpu::BufferUsages as U;
         let states = buffer(
             &gpu,
@@ -293,14 +295,7 @@ impl GpuEnv {
     fn play_passes(&mut self) -> PlayPasses {
         let device = self.gpu.device();
         let bytes = (self.batch * 4) as u64;
-        let buffer = |label: &str, usage: wgpu::BufferUsages| {
-            device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some(label),
-                size: bytes,
-                usage,
-                mapped_at_creation: false,
-            })
-        };
+        let buffer = |label: &str, usage: wgpu::BufferUsages| make_buffer(device, label, bytes, usage);
         use wgpu::BufferUsages as U;
         let first_args = buffer("rinshan hero first args", U::STORAGE | U::COPY_DST);
         let later_args = buffer("rinshan hero args", U::STORAGE | U::COPY_DST);
@@ -335,12 +330,12 @@ impl GpuEnv {
     /// Deals the rounds of `inputs` (`DealInput` words of every env; `deal == 0` leaves an env alone).
     pub(crate) fn deal(&mut self, inputs: &[u32]) -> Result<&[u32], GpuError> {
         if self.deal_inputs.is_none() {
-            self.deal_inputs = Some(self.gpu.device().create_buffer(&wgpu::BufferDescriptor {
-                label: Some("rinshan deal inputs"),
-                size: (self.batch * self.deal_words * 4) as u64,
-                usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
-                mapped_at_creation: false,
-            }));
+            self.deal_inputs = Some(make_buffer(
+                self.gpu.device(),
+                "rinshan deal inputs",
+                (self.batch * self.deal_words * 4) as u64,
+                wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
+            ));
         }
         if let Some(deals) = &self.deal_inputs {
             self.gpu.queue().write_buffer(deals, 0, bytemuck::cast_slice(inputs));
@@ -363,26 +358,19 @@ impl GpuEnv {
     fn read(&mut self, entry: &'static str, words: usize, args: &[u32]) -> Result<&[u32], GpuError> {
         let device = self.gpu.device().clone();
         let args_buffer = self.observer_args.get_or_insert_with(|| {
-            device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some("rinshan observer seats"),
-                size: (self.batch * 4) as u64,
-                usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
-                mapped_at_creation: false,
-            })
+            make_buffer(
+                &device,
+                "rinshan observer seats",
+                (self.batch * 4) as u64,
+                wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
+            )
         });
         self.gpu
             .queue()
             .write_buffer(args_buffer, 0, bytemuck::cast_slice(args));
         if !self.reads.contains_key(entry) {
             let bytes = (self.batch * words * 4) as u64;
-            let buffer = |label: &str, usage: wgpu::BufferUsages| {
-                device.create_buffer(&wgpu::BufferDescriptor {
-                    label: Some(label),
-                    size: bytes,
-                    usage,
-                    mapped_at_creation: false,
-                })
-            };
+            let buffer = |label: &str, usage: wgpu::BufferUsages| make_buffer(&device, label, bytes, usage);
             use wgpu::BufferUsages as U;
             let out = buffer("rinshan observations", U::STORAGE | U::COPY_SRC);
             let readback = buffer("rinshan observations readback", U::MAP_READ | U::COPY_DST);
@@ -428,12 +416,12 @@ impl GpuEnv {
 
     /// Every env's `GameState` words, read back from the device.
     pub(crate) fn states(&self) -> Result<Vec<u32>, GpuError> {
-        let readback = self.gpu.device().create_buffer(&wgpu::BufferDescriptor {
-            label: Some("rinshan states readback"),
-            size: self.state_bytes,
-            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
+        let readback = make_buffer(
+            self.gpu.device(),
+            "rinshan states readback",
+            self.state_bytes,
+            wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+        );
         let mut encoder = self
             .gpu
             .device()
