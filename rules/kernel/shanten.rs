@@ -91,8 +91,8 @@ fn kinds_and_pairs(hand: [u32; 34], first: u32, last: u32) -> [u32; 2] {
     [kinds, pairs]
 }
 
-// Thirteen orphans: kinds of terminal and honor tiles held, plus one if any of them is a pair.
-fn shanten_orphans(hand: [u32; 34]) -> i32 {
+// Kinds of terminal and honor tiles held, and of those, kinds held twice or more.
+fn orphan_kinds_and_pairs(hand: [u32; 34]) -> [u32; 2] {
     let honors: [u32; 2] = kinds_and_pairs(hand, FIRST_HONOR, N_TYPES);
     let mut kinds: u32 = honors[0];
     let mut pairs: u32 = honors[1];
@@ -102,7 +102,17 @@ fn shanten_orphans(hand: [u32; 34]) -> i32 {
         kinds += low.min(1u32) + high.min(1u32);
         pairs += (low >> 1u32).min(1u32) + (high >> 1u32).min(1u32);
     }
+    [kinds, pairs]
+}
+
+// Thirteen orphans: 13 less the orphan kinds held, less one if any of them is a pair.
+fn orphans_shanten(kinds: u32, pairs: u32) -> i32 {
     13i32 - (kinds as i32) - (pairs.min(1u32) as i32)
+}
+
+// Seven pairs: 6 less the pairs, plus the kinds missing for seven different pairs.
+fn chiitoitsu_shanten(kinds: u32, pairs: u32) -> i32 {
+    6i32 - (pairs as i32).min(7i32) + (7i32 - (kinds as i32)).max(0i32)
 }
 
 pub fn shanten(inp: ShantenInput) -> ShantenOutput {
@@ -115,10 +125,9 @@ pub fn shanten(inp: ShantenInput) -> ShantenOutput {
     let mut kokushi: i32 = SHANTEN_NOT_APPLICABLE;
     if tiles >= 13u32 {
         let kp: [u32; 2] = kinds_and_pairs(inp.hand, 0u32, N_TYPES);
-        let kinds: i32 = kp[0] as i32;
-        let pairs: i32 = kp[1] as i32;
-        chiitoitsu = 6i32 - pairs.min(7i32) + (7i32 - kinds).max(0i32);
-        kokushi = shanten_orphans(inp.hand);
+        chiitoitsu = chiitoitsu_shanten(kp[0], kp[1]);
+        let op: [u32; 2] = orphan_kinds_and_pairs(inp.hand);
+        kokushi = orphans_shanten(op[0], op[1]);
     }
     ShantenOutput {
         shanten: normal.min(chiitoitsu).min(kokushi),
@@ -151,13 +160,7 @@ fn shanten_after_draws(hand: [u32; 34]) -> [i32; 34] {
     let c23: [u32; 10] = combine_costs(g2, g3);
     // Kinds and pairs of the whole hand and of its terminals and honors, for the other two forms.
     let kp: [u32; 2] = kinds_and_pairs(hand, 0u32, N_TYPES);
-    let mut orphan_kinds: u32 = 0u32;
-    let mut orphan_pairs: u32 = 0u32;
-    for t in 0u32..N_TYPES {
-        let c: u32 = hand[t as usize] * (is_terminal_or_honor(t) as u32);
-        orphan_kinds += c.min(1u32);
-        orphan_pairs += (c >> 1u32).min(1u32);
-    }
+    let op: [u32; 2] = orphan_kinds_and_pairs(hand);
     let mut out: [i32; 34] = [SHANTEN_NOT_APPLICABLE; 34];
     for g in 0u32..4u32 {
         // The other three groups, and the place value of the group's first type in its code.
@@ -185,13 +188,12 @@ fn shanten_after_draws(hand: [u32; 34]) -> [i32; 34] {
             if c < 4u32 {
                 let mut best: i32 = missing(rest, group_costs(table(code + place)), sets) - 1i32;
                 if tiles + 1u32 >= 13u32 {
-                    let kinds: i32 = (kp[0] + (c == 0u32) as u32) as i32;
-                    let pairs: i32 = (kp[1] + (c == 1u32) as u32) as i32;
-                    best = best.min(6i32 - pairs.min(7i32) + (7i32 - kinds).max(0i32));
+                    // The drawn tile is a new kind if none was held, a new pair if one was.
+                    let new_kind: u32 = (c == 0u32) as u32;
+                    let new_pair: u32 = (c == 1u32) as u32;
+                    best = best.min(chiitoitsu_shanten(kp[0] + new_kind, kp[1] + new_pair));
                     let orphan: u32 = is_terminal_or_honor(t) as u32;
-                    let ok: u32 = orphan_kinds + orphan * ((c == 0u32) as u32);
-                    let op: u32 = orphan_pairs + orphan * ((c == 1u32) as u32);
-                    best = best.min(13i32 - (ok as i32) - (op.min(1u32) as i32));
+                    best = best.min(orphans_shanten(op[0] + orphan * new_kind, op[1] + orphan * new_pair));
                 }
                 out[t as usize] = best;
             }

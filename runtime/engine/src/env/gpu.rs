@@ -21,6 +21,24 @@ fn make_buffer(device: &wgpu::Device, label: &str, size: u64, usage: wgpu::Buffe
     })
 }
 
+/// Records one dispatch of `pipeline` over `workgroups` groups, as a compute pass of its own (so
+/// that wgpu orders it after the passes recorded before it).
+fn encode_pass(
+    encoder: &mut wgpu::CommandEncoder,
+    label: &str,
+    pipeline: &wgpu::ComputePipeline,
+    bind_group: &wgpu::BindGroup,
+    workgroups: u32,
+) {
+    let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+        label: Some(label),
+        timestamp_writes: None,
+    });
+    pass.set_pipeline(pipeline);
+    pass.set_bind_group(0, bind_group, &[]);
+    pass.dispatch_workgroups(workgroups, 1, 1);
+}
+
 /// The read entry point that writes `form`.
 fn observe_entry(form: Form) -> &'static str {
     match form {
@@ -69,6 +87,9 @@ pub(crate) struct GpuEnv {
     passes: [Option<Pass>; 4],
     /// Hero mode's passes and buffers, made on its first step.
     play: Option<PlayPasses>,
+    /// The words of the last upload that the host rewrites first (clamped action ids, hero mode's
+    /// first decisions), kept so that a step allocates nothing.
+    upload: Vec<u32>,
     /// The last views read back (StepView words of every env).
     views: Vec<u32>,
     /// Observations, made on first use: observer seats, and per form its pass, output and readback.
@@ -144,6 +165,7 @@ impl GpuEnv {
             wgsl,
             passes: [None, None, None, None],
             play: None,
+            upload: Vec::with_capacity(batch),
             views: Vec::with_capacity(batch * view_words),
             observer_args: None,
             reads: std::collections::HashMap::new(),
@@ -206,13 +228,13 @@ impl GpuEnv {
             let Some(p) = &self.passes[stage as usize] else {
                 unreachable!("every stage's pass is made above")
             };
-            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
-                label: Some("rinshan env"),
-                timestamp_writes: None,
-            });
-            pass.set_pipeline(&p.pipeline);
-            pass.set_bind_group(0, &p.bind_group, &[]);
-            pass.dispatch_workgroups(groups(self.batch), 1, 1);
+            encode_pass(
+                &mut encoder,
+                "rinshan env",
+                &p.pipeline,
+                &p.bind_group,
+                groups(self.batch),
+            );
         }
         encoder.copy_buffer_to_buffer(&self.views_buffer, 0, &self.view_readback, 0, self.view_bytes);
         self.gpu.queue().submit([encoder.finish()]);
@@ -234,10 +256,11 @@ impl GpuEnv {
         }
         // `game_step_main` reads the hero-mode flags from the high bits: any id that high is
         // illegal, and stays so.
-        let ids: Vec<u32> = actions.iter().map(|&a| a.min(k::PLAY_ADD - 1)).collect();
+        self.upload.clear();
+        self.upload.extend(actions.iter().map(|&a| a.min(k::PLAY_ADD - 1)));
         self.gpu
             .queue()
-            .write_buffer(&self.actions, 0, bytemuck::cast_slice(&ids));
+            .write_buffer(&self.actions, 0, bytemuck::cast_slice(&self.upload));
         self.run(Stage::Step)
     }
 
@@ -253,18 +276,13 @@ impl GpuEnv {
             unreachable!("made above")
         };
         let queue = self.gpu.queue();
-        let first: Vec<u32> = args.iter().map(|&a| a | k::PLAY_FIRST).collect();
-        queue.write_buffer(&play.first_args, 0, bytemuck::cast_slice(&first));
+        self.upload.clear();
+        self.upload.extend(args.iter().map(|&a| a | k::PLAY_FIRST));
+        queue.write_buffer(&play.first_args, 0, bytemuck::cast_slice(&self.upload));
         queue.write_buffer(&play.later_args, 0, bytemuck::cast_slice(args));
         let groups = groups(self.batch);
-        let encode = |encoder: &mut wgpu::CommandEncoder, pipeline: &wgpu::ComputePipeline, bind_group| {
-            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
-                label: Some("rinshan hero mode"),
-                timestamp_writes: None,
-            });
-            pass.set_pipeline(pipeline);
-            pass.set_bind_group(0, bind_group, &[]);
-            pass.dispatch_workgroups(groups, 1, 1);
+        let encode = |encoder: &mut wgpu::CommandEncoder, pipeline, bind_group| {
+            encode_pass(encoder, "rinshan hero mode", pipeline, bind_group, groups)
         };
         let device = self.gpu.device();
         let mut encoder = device.create_command_encoder(&Default::default());
@@ -399,15 +417,13 @@ impl GpuEnv {
         let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
             label: Some("rinshan observe"),
         });
-        {
-            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
-                label: Some("rinshan observe"),
-                timestamp_writes: None,
-            });
-            pass.set_pipeline(&o.pass.pipeline);
-            pass.set_bind_group(0, &o.pass.bind_group, &[]);
-            pass.dispatch_workgroups(groups(self.batch), 1, 1);
-        }
+        encode_pass(
+            &mut encoder,
+            "rinshan observe",
+            &o.pass.pipeline,
+            &o.pass.bind_group,
+            groups(self.batch),
+        );
         encoder.copy_buffer_to_buffer(&o.out, 0, &o.readback, 0, o.bytes);
         self.gpu.queue().submit([encoder.finish()]);
         self.gpu.read_words(&o.readback, &mut o.words)?;
