@@ -1,13 +1,14 @@
 """Steps per second from Python against the Rust `bench env` of the same run.
 
     python python/bench.py [--batches 1,16,256,1024,4096,16384] [--seconds 1.0] [--threads 1,0]
+        [--form planes|tokens|packed]
 
 For each thread count (0: all cores) and batch size: the Rust figure (`rinshan bench env`, env
 step calls only, its table for that thread count), the package's `env.step` from Python (the same
 work plus the numpy outputs, GIL released), and the whole Python loop. The policy is uniform over
 the legal actions, chosen in numpy with buffers made once (`UniformLegal`), as the Rust bench's
-is chosen in Rust. Then the same with the planes observation written every step (Rust:
-`--observe planes`).
+is chosen in Rust. Then the same with an observation (`--form`, the planes by default) written
+every step (Rust: `--observe FORM`).
 
 While the policy runs, the env's threads sleep, and on a machine whose idle cores wake slowly
 (a virtual machine: milliseconds) the next parallel `env.step` pays for waking them, whatever
@@ -99,7 +100,7 @@ def rust_rates(cli, batches, seconds, threads, observe, idle_us=0) -> dict:
     if idle_us:
         cmd += ["--idle-us", str(idle_us)]
     if observe:
-        cmd += ["--observe", "planes"]
+        cmd += ["--observe", observe]
     out = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
     # The CLI prints a one-thread table, then one for --threads (all cores by default).
     tables = out.split("\ncpu, ")[1:]
@@ -146,6 +147,7 @@ def main():
     ap.add_argument("--seconds", type=float, default=1.0)
     ap.add_argument("--threads", default="1,0", help="thread counts to measure; 0: all cores")
     ap.add_argument("--policy", choices=sorted(POLICIES), default="uniform")
+    ap.add_argument("--form", choices=rinshan.env.OBSERVATION_FORMS, default="planes")
     a = ap.parse_args()
     batches = [int(b) for b in a.batches.split(",")]
     cli = find_cli()
@@ -155,12 +157,12 @@ def main():
         " rust at gap: bench env --idle-us gap; ratio: python env.step over rust at gap"
     )
     for threads in (int(t) for t in a.threads.split(",")):
-        for observe in (False, True):
-            observation = ("planes",) if observe else ()
+        for observe in (None, a.form):
+            observation = (observe,) if observe else ()
             rust = rust_rates(cli, batches, a.seconds, threads, observe)
             print(
                 f"{threads or 'all'} thread(s), "
-                + ("with planes every step" if observe else "no observation")
+                + (f"with {observe} every step" if observe else "no observation")
             )
             print(
                 f"  {'batch':>6} {'rust env/s':>12} {'gap us':>7} {'rust at gap':>12} "

@@ -8,7 +8,20 @@ See the README's "Python" section.
 """
 
 from . import dataset, mjai, tenhou
-from .env import AGENTS, FORMS, MODES, VARIANTS, Env, Field, Spec, TimeStep, fields, make
+from .env import (
+    AGENTS,
+    FORMS,
+    MODES,
+    VARIANTS,
+    Env,
+    Field,
+    Spec,
+    TimeStep,
+    fields,
+    make,
+    packed_rows,
+    unpack_planes,
+)
 from .evaluate import Evaluation, evaluate
 from .hands import score, shanten
 from .tenhou import replay
@@ -28,8 +41,10 @@ __all__ = [
     "fields",
     "make",
     "mjai",
+    "packed_rows",
     "replay",
     "score",
     "shanten",
     "tenhou",
+    "unpack_planes",
 ]

@@ -17,7 +17,7 @@ import numpy as np
 from . import _core
 
 FORMS, AGENTS, VARIANTS, MODES = _core.names()
-OBSERVATION_FORMS = ("planes", "tokens")
+OBSERVATION_FORMS = ("planes", "tokens", "packed")
 
 
 @dataclasses.dataclass(frozen=True)
@@ -48,6 +48,48 @@ def split_record(raw: np.ndarray, form: str) -> dict[str, np.ndarray]:
         nbytes = int(np.prod(f.shape)) * f.dtype.itemsize
         out[f.name] = raw[:, f.offset : f.offset + nbytes].view(f.dtype).reshape((n, *f.shape))
     return out
+
+
+def _packed_layout() -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Planes rows held as bits and as counts, and their indices in `bits` and `counts`."""
+    rows = _core.packed_rows()
+    bit_rows = np.array([r for r, (kind, _) in enumerate(rows) if kind == "bits"], dtype=np.intp)
+    bit_index = np.array([i for kind, i in rows if kind == "bits"], dtype=np.intp)
+    count_rows = np.array(
+        [r for r, (kind, _) in enumerate(rows) if kind == "counts"], dtype=np.intp
+    )
+    count_index = np.array([i for kind, i in rows if kind == "counts"], dtype=np.intp)
+    return bit_rows, bit_index, count_rows, count_index
+
+
+def unpack_planes(packed: dict) -> dict[str, np.ndarray]:
+    """The planes form's arrays from the packed form's (`bits`, `counts`, `scalars`, any leading
+    shape): `planes` (..., 64, 34) uint8, equal byte for byte to what the planes form holds, and
+    the same `scalars`. On a device, do the same with its array library: bit t of `bits[..., i]`
+    is cell t of planes row `bit_rows[i]`, and `counts[..., j, :]` is row `count_rows[j]`, as
+    `packed_rows()` lists."""
+    bits = np.asarray(packed["bits"])
+    counts = np.asarray(packed["counts"])
+    if bits.dtype != np.uint64 or counts.dtype != np.uint8 or bits.shape[:-1] != counts.shape[:-2]:
+        raise ValueError(
+            f"packed arrays are bits (..., 36) uint64 and counts (..., 28, 34) uint8, "
+            f"not {bits.shape} {bits.dtype} and {counts.shape} {counts.dtype}"
+        )
+    bit_rows, bit_index, count_rows, count_index = _packed_layout()
+    lead = bits.shape[:-1]
+    planes = np.empty((*lead, len(bit_rows) + len(count_rows), 34), dtype=np.uint8)
+    shifts = np.arange(34, dtype=np.uint64)
+    planes[..., bit_rows, :] = ((bits[..., bit_index, None] >> shifts) & np.uint64(1)).astype(
+        np.uint8
+    )
+    planes[..., count_rows, :] = counts[..., count_index, :]
+    return {"planes": planes, "scalars": packed["scalars"]}
+
+
+def packed_rows() -> list[tuple[str, int]]:
+    """Where each planes row (0..63, in order) is in the packed form: ("bits", i) or
+    ("counts", i)."""
+    return [(kind, int(i)) for kind, i in _core.packed_rows()]
 
 
 @dataclasses.dataclass(frozen=True)

@@ -202,6 +202,17 @@ fn fields(form: &str) -> PyResult<(usize, Vec<FieldRow>)> {
     Ok((form.bytes(), fields))
 }
 
+/// Where each planes row (0..64, in order) is in the packed form: ("bits", i) or ("counts", i).
+#[pyfunction]
+fn packed_rows() -> Vec<(&'static str, u32)> {
+    (0..rinshan_engine::generated::kernel::PLANE_ROWS)
+        .map(|row| match rinshan_engine::observe::packed_row(row) {
+            rinshan_engine::observe::PackedRow::Bits(i) => ("bits", i),
+            rinshan_engine::observe::PackedRow::Counts(i) => ("counts", i),
+        })
+        .collect()
+}
+
 /// A log of either format as the text of `to` (`tenhou` or `mjai`): the conversion `rinshan
 /// convert` makes, for one game.
 #[pyfunction]
@@ -247,6 +258,7 @@ pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(replay, m)?)?;
     m.add_function(wrap_pyfunction!(convert_log, m)?)?;
     m.add_function(wrap_pyfunction!(fields, m)?)?;
+    m.add_function(wrap_pyfunction!(packed_rows, m)?)?;
     m.add_function(wrap_pyfunction!(variant_info, m)?)?;
     m.add_function(wrap_pyfunction!(names, m)?)?;
     m.add("STATE_CHECK_WORDS", rinshan_engine::env::CHECK_WORDS)?;

@@ -370,3 +370,25 @@ def test_evaluate_against_a_function_seats_the_opponents_by_turn():
 
     with pytest.raises(ValueError, match="opponents function played an illegal action"):
         rinshan.evaluate("rule", opponents=first_illegal, games=4, seed=1, mode="single")
+
+
+def test_packed_planes_unpack_to_the_planes():
+    env = rinshan.make(num_envs=7, observation=("planes", "packed"), num_threads=1)
+    spec = {f.name: f for f in env.spec.fields["packed"]}
+    assert spec["bits"].dtype == np.uint64 and spec["counts"].shape == (28, 34)
+    rng = np.random.default_rng(3)
+    ts = env.reset(seed=5)
+    for _ in range(300):
+        unpacked = rinshan.unpack_planes(ts.observation)
+        assert (unpacked["planes"] == ts.observation["planes"]).all()
+        ts = env.step(random_actions(ts, rng))
+    # Any seat, and a leading shape of seats.
+    every = env.observe_all("packed")
+    assert (rinshan.unpack_planes(every)["planes"] == env.observe_all("planes")["planes"]).all()
+    rows = rinshan.packed_rows()
+    assert sorted(i for kind, i in rows if kind == "bits") == list(range(36))
+    assert sorted(i for kind, i in rows if kind == "counts") == list(range(28))
+    with pytest.raises(ValueError, match="packed arrays"):
+        rinshan.unpack_planes(
+            {"bits": every["bits"].astype(np.int64), "counts": every["counts"], "scalars": None}
+        )

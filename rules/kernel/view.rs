@@ -121,8 +121,7 @@ fn add_plane(o: &mut ObsPlanes, row: u32, t: u32, v: u32) {
 
 fn set_plane(o: &mut ObsPlanes, row: u32, t: u32, v: u32) {
     let i: u32 = row * 34u32 + t;
-    let at: u32 = (i % 4u32) * 8u32;
-    o.planes[(i / 4u32) as usize] = (o.planes[(i / 4u32) as usize] & !(255u32 << at)) | (v << at);
+    o.planes[(i / 4u32) as usize] = with_byte(o.planes[(i / 4u32) as usize], i % 4u32, v);
 }
 
 // Four bits to the low bit of four bytes (the shifted copies of `n` do not overlap, so no carry).
@@ -257,52 +256,85 @@ fn bit_hi(t: u32) -> u32 {
     (1u32 << (t % 32u32)) * ((t >= 32u32) as u32)
 }
 
-// One pass over the round's log: the riichi tile and called-in rows of each seat, and the tiles
-// safe against each seat (genbutsu), by absolute seat: its own discards, anything discarded
-// since its last discard, and anything discarded after its riichi declaration.
-fn log_planes(s: &mut GameState, seat: u32, o: &mut ObsPlanes) -> [u32; 8] {
+// One pass over the round's log, as 34-bit sets by absolute seat q (low word at 2q, high at
+// 2q + 1): the tiles safe against each seat (genbutsu: its own discards, anything discarded since
+// its last discard, and anything discarded after its riichi declaration) at 0..8, its riichi tile
+// at 8..16, and the tiles it called in at 16..24. The pass runs backwards, gathering what was
+// discarded after each entry: a seat's last discard and its riichi declaration then each read
+// that union once, instead of every discard updating every seat. The union after a declaration
+// holds the declarer's own later discards too, which its own discards (`s.discarded`) hold anyway.
+fn log_sets(s: &mut GameState) -> [u32; 24] {
+    let mut out: [u32; 24] = [0u32; 24];
     let mut since: [u32; 8] = [0u32; 8];
     let mut after_riichi: [u32; 8] = [0u32; 8];
-    let mut riichi: u32 = 0u32;
-    for i in 0u32..log_count(s) {
-        let e: u32 = log_entry(s, i);
+    let mut after_lo: u32 = 0u32;
+    let mut after_hi: u32 = 0u32;
+    // Seats whose last discard the pass has met.
+    let mut met: u32 = 0u32;
+    let n: u32 = log_count(s);
+    for j in 0u32..n {
+        let e: u32 = log_entry(s, n - 1u32 - j);
         let k: u32 = log_kind(e);
         let a: u32 = log_actor(e);
+        let t: u32 = value_type(log_tile(e));
+        let lo: u32 = bit_lo(t);
+        let hi: u32 = bit_hi(t);
         if k == EV_RIICHI {
-            riichi |= 1u32 << a;
+            after_riichi[(a * 2u32) as usize] = after_lo;
+            after_riichi[(a * 2u32 + 1u32) as usize] = after_hi;
         }
         if k == EV_CHI || k == EV_PON || k == EV_OPEN_KAN {
-            put_plane(o, P_SEAT + rel(seat, a) * P_SEAT_ROWS + P_SEAT_CALLED_IN, value_type(log_tile(e)), 1u32);
+            out[(16u32 + a * 2u32) as usize] |= lo;
+            out[(17u32 + a * 2u32) as usize] |= hi;
         }
         if k == EV_DISCARD {
-            let t: u32 = value_type(log_tile(e));
             if (log_flags(e) & LOG_RIICHI_TILE) != 0u32 {
-                put_plane(o, P_SEAT + rel(seat, a) * P_SEAT_ROWS + P_SEAT_RIICHI_TILE, t, 1u32);
+                out[(8u32 + a * 2u32) as usize] |= lo;
+                out[(9u32 + a * 2u32) as usize] |= hi;
             }
-            // The discarder's set starts again; every other seat's gains the tile.
-            let lo: u32 = bit_lo(t);
-            let hi: u32 = bit_hi(t);
-            for q in 0u32..4u32 {
-                let other: u32 = (q != a) as u32;
-                since[(q * 2u32) as usize] = (since[(q * 2u32) as usize] | lo) * other;
-                since[(q * 2u32 + 1u32) as usize] = (since[(q * 2u32 + 1u32) as usize] | hi) * other;
-                let open: u32 = other & (riichi >> q);
-                after_riichi[(q * 2u32) as usize] |= lo * open;
-                after_riichi[(q * 2u32 + 1u32) as usize] |= hi * open;
+            if ((met >> a) & 1u32) == 0u32 {
+                since[(a * 2u32) as usize] = after_lo;
+                since[(a * 2u32 + 1u32) as usize] = after_hi;
+                met |= 1u32 << a;
             }
+            after_lo |= lo;
+            after_hi |= hi;
         }
     }
-    let mut safe: [u32; 8] = [0u32; 8];
-    for i in 0u32..8u32 {
-        safe[i as usize] = s.discarded[i as usize] | since[i as usize] | after_riichi[i as usize];
+    for q in 0u32..4u32 {
+        // A seat that has not discarded: everything discarded so far.
+        let none: u32 = 1u32 - ((met >> q) & 1u32);
+        since[(q * 2u32) as usize] |= after_lo * none;
+        since[(q * 2u32 + 1u32) as usize] |= after_hi * none;
     }
-    safe
+    for i in 0u32..8u32 {
+        out[i as usize] = s.discarded[i as usize] | since[i as usize] | after_riichi[i as usize];
+    }
+    out
 }
 
-fn mask_row(o: &mut ObsPlanes, mask: [u32; 3], a: u32, row: u32, t: u32) {
-    if mask_has(mask, a) {
-        put_plane(o, row, t, 1u32);
+// The planes row (offset in a seat block) of `log_sets`' r-th group of sets.
+fn log_set_row(r: u32) -> u32 {
+    if r == 0u32 {
+        return P_SEAT_SAFE;
     }
+    if r == 1u32 {
+        return P_SEAT_RIICHI_TILE;
+    }
+    P_SEAT_CALLED_IN
+}
+
+// The claims of the target the observer may make, as 0/1 in the order of the planes rows
+// P_CHI_LOW, P_CHI_MIDDLE, P_CHI_HIGH, P_PON, P_OPEN_KAN (with or without a red five).
+fn claims_offered(s: &mut GameState) -> [u32; 5] {
+    let m: [u32; 3] = s.mask;
+    [
+        (mask_has(m, ACTION_CHI_LEFT) || mask_has(m, ACTION_CHI_LEFT_RED)) as u32,
+        (mask_has(m, ACTION_CHI_MIDDLE) || mask_has(m, ACTION_CHI_MIDDLE_RED)) as u32,
+        (mask_has(m, ACTION_CHI_RIGHT) || mask_has(m, ACTION_CHI_RIGHT_RED)) as u32,
+        (mask_has(m, ACTION_PON) || mask_has(m, ACTION_PON_RED)) as u32,
+        mask_has(m, ACTION_OPEN_KAN) as u32,
+    ]
 }
 
 pub fn observe_planes(state: GameState, arg: u32) -> ObsPlanes {
@@ -327,24 +359,55 @@ pub fn planes_into(s: &mut GameState, arg: u32, o: &mut ObsPlanes) {
     write_planes(s, arg, o);
 }
 
-// Writes the planes into a zeroed record.
-fn write_planes(s: &mut GameState, arg: u32, o: &mut ObsPlanes) {
-    let seat: u32 = observer(s, arg);
-    let v: Seen = gather(s, seat);
-    // No branch per cell: which cells are set depends on the hand and the table, so such branches
-    // are hard to predict; binary rows are gathered as 34-bit sets and written a word at a time.
+// The hand as a thermometer, row k (sets at 2k, 2k + 1) holding the types held more than k times.
+// No branch per type: which are held is hard to predict.
+fn held_sets(hand: [u32; 34]) -> [u32; 8] {
     let mut held: [u32; 8] = [0u32; 8];
     for t in 0u32..34u32 {
-        let c: u32 = v.hand[t as usize];
+        let c: u32 = hand[t as usize];
         for k in 0u32..4u32 {
             held[(k * 2u32) as usize] |= bit_lo(t) * ((c > k) as u32);
             held[(k * 2u32 + 1u32) as usize] |= bit_hi(t) * ((c > k) as u32);
         }
-        put_plane(o, P_SEEN, t, v.seen[t as usize]);
-        put_plane(o, P_DORA, t, v.dora[t as usize]);
     }
+    held
+}
+
+// The types the player to move may discard (a red and a black five are one type here).
+fn legal_discards(s: &mut GameState) -> [u32; 2] {
+    let m: [u32; 3] = s.mask;
+    let mut legal: [u32; 2] = [0u32; 2];
+    for a in 0u32..ACTION_DISCARD_COUNT {
+        let t: u32 = value_type(a);
+        legal[(t / 32u32) as usize] |= (mask_has(m, ACTION_DISCARD + a) as u32) << (t % 32u32);
+    }
+    if mask_has(m, ACTION_TSUMOGIRI) {
+        set_add(&mut legal, value_type(s.drawn));
+    }
+    legal
+}
+
+// The types of the closed or added kans the player to move may declare.
+fn legal_self_kans(s: &mut GameState) -> [u32; 2] {
+    let m: [u32; 3] = s.mask;
+    let mut kans: [u32; 2] = [0u32; 2];
+    for t in 0u32..34u32 {
+        kans[(t / 32u32) as usize] |= (mask_has(m, ACTION_SELF_KAN + t) as u32) << (t % 32u32);
+    }
+    kans
+}
+
+// Writes the planes into a zeroed record.
+fn write_planes(s: &mut GameState, arg: u32, o: &mut ObsPlanes) {
+    let seat: u32 = observer(s, arg);
+    let v: Seen = gather(s, seat);
+    let held: [u32; 8] = held_sets(v.hand);
     for k in 0u32..4u32 {
         put_set(o, P_HAND + k, [held[(k * 2u32) as usize], held[(k * 2u32 + 1u32) as usize]]);
+    }
+    for t in 0u32..34u32 {
+        put_plane(o, P_SEEN, t, v.seen[t as usize]);
+        put_plane(o, P_DORA, t, v.dora[t as usize]);
     }
     for suit in 0u32..3u32 {
         put_plane(o, P_RED, suit * 9u32 + 4u32, holds_red(s, seat, suit) as u32);
@@ -354,38 +417,16 @@ fn write_planes(s: &mut GameState, arg: u32, o: &mut ObsPlanes) {
         if s.drawn != NO_TILE_VALUE {
             put_plane(o, P_DRAWN, value_type(s.drawn), 1u32);
         }
-        let m: [u32; 3] = s.mask;
-        // A red and a black five are one type here.
-        let mut legal: [u32; 2] = [0u32; 2];
-        for a in 0u32..ACTION_DISCARD_COUNT {
-            let t: u32 = value_type(a);
-            legal[(t / 32u32) as usize] |= (mask_has(m, ACTION_DISCARD + a) as u32) << (t % 32u32);
-        }
-        if mask_has(m, ACTION_TSUMOGIRI) {
-            set_add(&mut legal, value_type(s.drawn));
-        }
-        put_set(o, P_LEGAL_DISCARD, legal);
-        for t in 0u32..34u32 {
-            put_plane(o, P_SELF_KAN, t, mask_has(m, ACTION_SELF_KAN + t) as u32);
-        }
+        put_set(o, P_LEGAL_DISCARD, legal_discards(s));
+        put_set(o, P_SELF_KAN, legal_self_kans(s));
     }
     if v.decision == DECISION_CLAIM || v.decision == DECISION_CHANKAN {
         let t: u32 = value_type(s.claim_tile);
-        let m: [u32; 3] = s.mask;
         put_plane(o, P_TARGET, t, 1u32);
-        if mask_has(m, ACTION_CHI_LEFT) || mask_has(m, ACTION_CHI_LEFT_RED) {
-            put_plane(o, P_CHI_LOW, t, 1u32);
+        let claims: [u32; 5] = claims_offered(s);
+        for i in 0u32..5u32 {
+            put_plane(o, P_CHI_LOW + i, t, claims[i as usize]);
         }
-        if mask_has(m, ACTION_CHI_MIDDLE) || mask_has(m, ACTION_CHI_MIDDLE_RED) {
-            put_plane(o, P_CHI_MIDDLE, t, 1u32);
-        }
-        if mask_has(m, ACTION_CHI_RIGHT) || mask_has(m, ACTION_CHI_RIGHT_RED) {
-            put_plane(o, P_CHI_HIGH, t, 1u32);
-        }
-        if mask_has(m, ACTION_PON) || mask_has(m, ACTION_PON_RED) {
-            put_plane(o, P_PON, t, 1u32);
-        }
-        mask_row(o, m, ACTION_OPEN_KAN, P_OPEN_KAN, t);
     }
     put_set(o, P_WAITS, own_waits(s, seat));
     let round_wind: u32 = EAST + (s.round / 4u32) % 4u32;
@@ -408,7 +449,7 @@ fn write_planes(s: &mut GameState, arg: u32, o: &mut ObsPlanes) {
 
 // Rows P_SEAT.. : each seat's river, melds and the tiles safe against it.
 fn view_seat_planes(s: &mut GameState, seat: u32, o: &mut ObsPlanes) {
-    let safe: [u32; 8] = log_planes(s, seat, o);
+    let sets: [u32; 24] = log_sets(s);
     for j in 0u32..4u32 {
         let q: u32 = (seat + j) % 4u32;
         let base: u32 = P_SEAT + j * P_SEAT_ROWS;
@@ -453,7 +494,10 @@ fn view_seat_planes(s: &mut GameState, seat: u32, o: &mut ObsPlanes) {
                 add_plane(o, base + P_SEAT_CLOSED_KAN, t, 1u32);
             }
         }
-        put_set(o, base + P_SEAT_SAFE, [safe[(q * 2u32) as usize], safe[(q * 2u32 + 1u32) as usize]]);
+        for r in 0u32..3u32 {
+            let i: u32 = r * 8u32 + q * 2u32;
+            put_set(o, base + log_set_row(r), [sets[i as usize], sets[(i + 1u32) as usize]]);
+        }
     }
 }
 

@@ -92,6 +92,68 @@ pub struct ObsPlanes {
     pub scalars: [u32; 24],
 }
 
+// Packed planes: the planes' yes/no rows as 34-bit sets (bit t = tile type t), one u64 each (two
+// words, low first), and their rows of counts and turn numbers as bytes, each kind in planes order
+// (`packed_index`). Unpacked they are the planes' bytes exactly.
+pub const PACKED_BITS: u32 = 36;
+pub const PACKED_COUNTS: u32 = 28;
+// A seat block's rows of each kind.
+pub const PACKED_SEAT_BITS: u32 = 5;
+pub const PACKED_SEAT_COUNTS: u32 = 6;
+
+#[derive(Clone, Copy)]
+#[repr(C)]
+pub struct ObsPacked {
+    pub bits: [u32; 72],
+    pub counts: [u32; 238],
+    pub scalars: [u32; 24],
+}
+
+// Whether the cells of row `o` of a seat block are yes/no.
+fn seat_row_binary(o: u32) -> bool {
+    o == P_SEAT_RIICHI_TILE || o == P_SEAT_SAFE || o == P_SEAT_CALLED_IN || o == P_SEAT_CLOSED_KAN || o == P_SEAT_LAST_DISCARD
+}
+
+// Whether the cells of planes row `row` are yes/no (a bit each in the packed form).
+pub fn plane_row_binary(row: u32) -> bool {
+    if row >= P_SEAT && row < P_DORA_INDICATORS {
+        return seat_row_binary((row - P_SEAT) % P_SEAT_ROWS);
+    }
+    row < P_YAKUHAI || row == P_RED_SEEN
+}
+
+// Where planes row `row` is in the packed form: its index among the rows of its kind (bit-rows if
+// `plane_row_binary`, else rows of bytes).
+pub fn packed_index(row: u32) -> u32 {
+    if row >= P_SEAT && row < P_DORA_INDICATORS {
+        return packed_seat_index((row - P_SEAT) / P_SEAT_ROWS, (row - P_SEAT) % P_SEAT_ROWS);
+    }
+    if row < P_YAKUHAI {
+        return row;
+    }
+    if row == P_YAKUHAI {
+        return 0u32;
+    }
+    if row == P_RED_SEEN {
+        return P_YAKUHAI + 4u32 * PACKED_SEAT_BITS;
+    }
+    1u32 + 4u32 * PACKED_SEAT_COUNTS + row - P_DORA_INDICATORS
+}
+
+// `packed_index` of row `o` of ego seat `j`'s block: the writer names `o` as a constant, so this
+// folds to a constant plus a multiple of `j`.
+pub fn packed_seat_index(j: u32, o: u32) -> u32 {
+    let binary: bool = seat_row_binary(o);
+    let mut n: u32 = 0u32;
+    for i in 0u32..o {
+        n += (seat_row_binary(i) == binary) as u32;
+    }
+    if binary {
+        return P_YAKUHAI + j * PACKED_SEAT_BITS + n;
+    }
+    1u32 + j * PACKED_SEAT_COUNTS + n
+}
+
 // Tokens: byte offsets of the fields in ObsTokens.words.
 pub const TOKEN_WORDS: u32 = 254;
 pub const T_HAND: u32 = 0;

@@ -4,14 +4,15 @@
 //!   hidden dead wall) and scrambling other seats' waits, furiten, claim options and choices, the
 //!   seeds and the step counter leaves both forms and the analysis tier byte-identical;
 //! - seat rotation: the same game with the seats relabelled gives each seat the same observation;
+//! - the packed form unpacks to the planes' bytes, at every position the two tests above visit;
 //! - the event tokens replay the round (each seat's discards in order, every draw of the
 //!   observer with its tile).
 
 use rinshan_engine::generated::kernel::{
-    self, GameState, ObsAnalysis, ObsPlanes, ObsTokens, ResetInput, MODE_HALF, OBSERVE_CURRENT,
+    self, GameState, ObsAnalysis, ObsPacked, ObsPlanes, ObsTokens, ResetInput, MODE_HALF, OBSERVE_CURRENT,
 };
 use rinshan_engine::generated::{no_red, red};
-use rinshan_engine::observe::{resample_hidden, OwnDraws};
+use rinshan_engine::observe::{resample_hidden, unpack_planes, OwnDraws};
 use rinshan_engine::random::Rng;
 use rinshan_engine::Variant;
 
@@ -23,6 +24,7 @@ struct Kernels {
     step: fn(&mut GameState, u32),
     planes: fn(GameState, u32) -> ObsPlanes,
     tokens: fn(GameState, u32) -> ObsTokens,
+    packed: fn(GameState, u32) -> ObsPacked,
     analysis: fn(GameState, u32) -> ObsAnalysis,
 }
 
@@ -33,6 +35,7 @@ const KERNELS: [Kernels; 2] = [
         step: red::game_step,
         planes: red::observe_planes,
         tokens: red::observe_tokens,
+        packed: red::observe_packed,
         analysis: red::observe_analysis,
     },
     Kernels {
@@ -41,6 +44,7 @@ const KERNELS: [Kernels; 2] = [
         step: no_red::game_step,
         planes: no_red::observe_planes,
         tokens: no_red::observe_tokens,
+        packed: no_red::observe_packed,
         analysis: no_red::observe_analysis,
     },
 ];
@@ -58,11 +62,33 @@ fn reset_input(seed: u64, dealer: u32, wall: Option<[u32; 136]>) -> ResetInput {
     }
 }
 
-/// Planes, and tokens followed by the analysis tier.
+/// Planes followed by the packed planes, and tokens followed by the analysis tier; the packed
+/// planes are checked to unpack to the planes.
 fn both(k: &Kernels, s: &GameState, seat: u32) -> (Vec<u32>, Vec<u32>) {
     let mut tokens: Vec<u32> = bytemuck::cast_slice(&[(k.tokens)(*s, seat)]).to_vec();
     tokens.extend_from_slice(bytemuck::cast_slice(&[(k.analysis)(*s, seat)]));
-    (bytemuck::cast_slice(&[(k.planes)(*s, seat)]).to_vec(), tokens)
+    let planes = (k.planes)(*s, seat);
+    let packed = (k.packed)(*s, seat);
+    let unpacked = unpack_planes(bytemuck::bytes_of(&packed)).expect("one packed record");
+    if unpacked != bytemuck::bytes_of(&planes) {
+        let i = unpacked
+            .iter()
+            .zip(bytemuck::bytes_of(&planes))
+            .position(|(a, b)| a != b)
+            .unwrap_or(0);
+        panic!(
+            "{}: step {}, seat {seat}: packed planes unpack to {} at row {} type {}, the planes say {}",
+            k.variant,
+            s.steps,
+            unpacked[i],
+            i / 34,
+            i % 34,
+            bytemuck::bytes_of(&planes)[i]
+        );
+    }
+    let mut planes: Vec<u32> = bytemuck::cast_slice(&[planes]).to_vec();
+    planes.extend_from_slice(bytemuck::cast_slice(&[packed]));
+    (planes, tokens)
 }
 
 fn hidden_resampling(k: Kernels) {

@@ -4,14 +4,15 @@
 //! meaning changes them, and its commit says why.
 
 use rinshan_engine::env::{Config, Env, Observer};
-use rinshan_engine::observe::Form;
+use rinshan_engine::observe::{unpack_planes, Form};
 use rinshan_engine::random::Rng;
 use rinshan_engine::Variant;
 
 use crate::game_invariants::Fingerprint;
 
 /// Every seat's planes and tokens at every 4th step of random self-play (auto-reset, so many
-/// rounds and games), and the analysis tier at every 40th.
+/// rounds and games), and the analysis tier at every 40th. The packed planes, not hashed, must
+/// unpack to the planes there.
 fn fingerprint(variant: Variant) -> u64 {
     let mut config = Config::new(variant, 48);
     config.auto_reset = true;
@@ -26,6 +27,18 @@ fn fingerprint(variant: Variant) -> u64 {
                 for form in [Form::Planes, Form::Tokens] {
                     hash.add_bytes(env.observe(form, Observer::Seat(seat)).expect("observe"));
                 }
+                let packed = env
+                    .observe(Form::Packed, Observer::Seat(seat))
+                    .expect("observe")
+                    .to_vec();
+                let planes = env.observe(Form::Planes, Observer::Seat(seat)).expect("observe");
+                assert!(
+                    packed
+                        .chunks(Form::Packed.bytes())
+                        .map(unpack_planes)
+                        .eq(planes.chunks(Form::Planes.bytes()).map(|p| Some(p.to_vec()))),
+                    "{variant}: step {step}: seat {seat}'s packed planes do not unpack to its planes"
+                );
                 if step % 40 == 0 {
                     hash.add_bytes(env.observe(Form::Analysis, Observer::Seat(seat)).expect("observe"));
                 }

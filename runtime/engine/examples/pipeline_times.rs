@@ -3,7 +3,7 @@
 //! `MESA_SHADER_CACHE_DISABLE=true`).
 //!
 //! `cargo run --release -p rinshan-engine --example pipeline_times -- [variant] [stage...]`
-//! with stages from `new step planes tokens analysis oracle agent play` (default: all). The reset (the
+//! with stages from `new step planes tokens packed analysis oracle agent play` (default: all). The reset (the
 //! new-game and view pipelines) is always timed first; `play` is hero mode (its agents'
 //! pipeline, `game_play_action_main`, beside the step's).
 
@@ -17,7 +17,9 @@ use rinshan_engine::Variant;
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let variant: Variant = args.first().map(String::as_str).unwrap_or("red").parse()?;
-    let all = ["new", "step", "planes", "tokens", "analysis", "oracle", "agent", "play"];
+    let all = [
+        "new", "step", "planes", "tokens", "packed", "analysis", "oracle", "agent", "play",
+    ];
     let stages: Vec<&str> = if args.len() > 1 {
         args[1..].iter().map(String::as_str).collect()
     } else {
@@ -42,7 +44,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 let actions = first_legal(&env);
                 env.step(&actions).map(|_| ()).map_err(Into::into)
             })?,
-            "planes" | "tokens" | "analysis" | "oracle" => {
+            "planes" | "tokens" | "packed" | "analysis" | "oracle" => {
                 let form: Form = stage.parse()?;
                 time(stage, &mut || env.observe_all(form).map(|_| ()).map_err(Into::into))?
             }

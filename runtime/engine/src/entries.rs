@@ -21,9 +21,10 @@ pub const UPDATE_ENTRIES: [(&str, &str, &str, &str); 2] = [
 /// The read entry points, after [`UPDATE_ENTRIES`] in binding order: (entry point, kernel function
 /// `fn(State, Arg) -> Out`, state struct, argument type, output struct). Each takes two binding
 /// slots: at slot k its state (read-only) binds 1+2k, its arguments 2+2k and its output 3+2k.
-pub const READ_ENTRIES: [(&str, &str, &str, &str, &str); 6] = [
+pub const READ_ENTRIES: [(&str, &str, &str, &str, &str); 7] = [
     ("observe_planes_main", "observe_planes", "GameState", "u32", "ObsPlanes"),
     ("observe_tokens_main", "observe_tokens", "GameState", "u32", "ObsTokens"),
+    ("observe_packed_main", "observe_packed", "GameState", "u32", "ObsPacked"),
     (
         "observe_analysis_main",
         "observe_analysis",

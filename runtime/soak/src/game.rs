@@ -76,7 +76,8 @@ pub(super) fn play(soak: &Soak, g: u64, seed: u64, starting: i32, logged: bool) 
                 out.leak_checks += 1;
                 let r = resample_hidden(&s, p, &draws[p as usize].positions, &mut leak_rng);
                 let same = bytemuck::bytes_of(&v::observe_planes(s, p)) == bytemuck::bytes_of(&v::observe_planes(r, p))
-                    && bytemuck::bytes_of(&v::observe_tokens(s, p)) == bytemuck::bytes_of(&v::observe_tokens(r, p));
+                    && bytemuck::bytes_of(&v::observe_tokens(s, p)) == bytemuck::bytes_of(&v::observe_tokens(r, p))
+                    && bytemuck::bytes_of(&v::observe_packed(s, p)) == bytemuck::bytes_of(&v::observe_packed(r, p));
                 if !same {
                     fail(&mut out, format!("seat {p}'s observation changed when the tiles it cannot see were resampled"));
                     return out;

@@ -44,6 +44,7 @@ fn observe_entry(form: Form) -> &'static str {
     match form {
         Form::Planes => "observe_planes_main",
         Form::Tokens => "observe_tokens_main",
+        Form::Packed => "observe_packed_main",
         Form::Analysis => "observe_analysis_main",
         Form::Oracle => "observe_oracle_main",
     }

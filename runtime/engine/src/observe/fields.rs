@@ -11,6 +11,8 @@ pub enum Dtype {
     I8,
     /// Signed 16-bit, little-endian.
     I16,
+    /// Unsigned 64-bit, little-endian (the packed form's bit-rows).
+    U64,
 }
 
 impl Dtype {
@@ -20,6 +22,7 @@ impl Dtype {
             Dtype::U8 => "uint8",
             Dtype::I8 => "int8",
             Dtype::I16 => "int16",
+            Dtype::U64 => "uint64",
         }
     }
 
@@ -28,6 +31,7 @@ impl Dtype {
         match self {
             Dtype::U8 | Dtype::I8 => 1,
             Dtype::I16 => 2,
+            Dtype::U64 => 8,
         }
     }
 }
@@ -83,6 +87,35 @@ pub static PLANES_FIELDS: [Field; 2] = [
         dtype: Dtype::I16,
         shape: &[u(k::SCALARS)],
         doc: "see the scalars",
+        flag: false,
+    },
+];
+
+/// The fields of [`Form::Packed`].
+pub static PACKED_FIELDS: [Field; 3] = [
+    Field {
+        name: "bits",
+        offset: 0,
+        dtype: Dtype::U64,
+        shape: &[u(k::PACKED_BITS)],
+        doc:
+            "the planes' yes/no rows, bit t of each for tile type t (34 bits used); see the plane rows' `packed` column",
+        flag: false,
+    },
+    Field {
+        name: "counts",
+        offset: u(k::PACKED_BITS) * 8,
+        dtype: Dtype::U8,
+        shape: &[u(k::PACKED_COUNTS), 34],
+        doc: "the planes' other rows (counts, turn numbers), as in the planes; see the plane rows' `packed` column",
+        flag: false,
+    },
+    Field {
+        name: "scalars",
+        offset: u(k::PACKED_BITS) * 8 + u(k::PACKED_COUNTS) * 34,
+        dtype: Dtype::I16,
+        shape: &[u(k::SCALARS)],
+        doc: "see the scalars (same as the planes form)",
         flag: false,
     },
 ];

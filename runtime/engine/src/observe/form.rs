@@ -1,6 +1,6 @@
 //! The observation forms, and writing them on the CPU.
 
-use super::fields::{Field, ANALYSIS_FIELDS, ORACLE_FIELDS, PLANES_FIELDS, TOKENS_FIELDS};
+use super::fields::{Field, ANALYSIS_FIELDS, ORACLE_FIELDS, PACKED_FIELDS, PLANES_FIELDS, TOKENS_FIELDS};
 use crate::batch::{each, each_into};
 use crate::generated::kernel as k;
 use crate::names::UnknownName;
@@ -12,6 +12,10 @@ pub enum Form {
     Planes,
     /// Hand, melds, dora, the round's public events in order, and the scalars: for Transformers.
     Tokens,
+    /// The planes as bit-rows, `rows (135,) uint64` (34 bits used, bit t = tile type t) and the
+    /// same scalars: half the bytes, for learners that unpack on their device
+    /// ([`super::unpack_planes`], or `rinshan.unpack_planes` in Python).
+    Packed,
     /// The opt-in analysis tier: shanten and ukeire after each discard, waits, improving draws.
     /// Computed from the observer's hand and the tiles it has seen: no more than it may know.
     Analysis,
@@ -23,16 +27,17 @@ pub enum Form {
 
 impl Form {
     /// Every form.
-    pub const ALL: [Form; 4] = [Form::Planes, Form::Tokens, Form::Analysis, Form::Oracle];
+    pub const ALL: [Form; 5] = [Form::Planes, Form::Tokens, Form::Packed, Form::Analysis, Form::Oracle];
 
     /// The observation's forms (what an agent may see).
-    pub const OBSERVATIONS: [Form; 3] = [Form::Planes, Form::Tokens, Form::Analysis];
+    pub const OBSERVATIONS: [Form; 4] = [Form::Planes, Form::Tokens, Form::Packed, Form::Analysis];
 
-    /// The name users write: `planes`, `tokens`, `analysis` or `oracle`.
+    /// The name users write: `planes`, `tokens`, `packed`, `analysis` or `oracle`.
     pub fn name(self) -> &'static str {
         match self {
             Form::Planes => "planes",
             Form::Tokens => "tokens",
+            Form::Packed => "packed",
             Form::Analysis => "analysis",
             Form::Oracle => "oracle",
         }
@@ -43,6 +48,7 @@ impl Form {
         match self {
             Form::Planes => crate::hand::words::<k::ObsPlanes>(),
             Form::Tokens => crate::hand::words::<k::ObsTokens>(),
+            Form::Packed => crate::hand::words::<k::ObsPacked>(),
             Form::Analysis => crate::hand::words::<k::ObsAnalysis>(),
             Form::Oracle => crate::hand::words::<k::ObsOracle>(),
         }
@@ -58,6 +64,7 @@ impl Form {
         match self {
             Form::Planes => &PLANES_FIELDS,
             Form::Tokens => &TOKENS_FIELDS,
+            Form::Packed => &PACKED_FIELDS,
             Form::Analysis => &ANALYSIS_FIELDS,
             Form::Oracle => &ORACLE_FIELDS,
         }
@@ -105,6 +112,7 @@ pub(crate) fn observe_cpu<S: bytemuck::Pod>(
     with_variant!(variant, v => match form {
         Form::Planes => each_into(out, sts, args, serial, v::planes_into),
         Form::Tokens => each_into(out, sts, args, serial, v::tokens_into),
+        Form::Packed => each_into(out, sts, args, serial, v::packed_into),
         Form::Analysis => each(out, sts, args, serial, v::observe_analysis),
         Form::Oracle => each(out, sts, args, serial, v::observe_oracle),
     })

@@ -10,13 +10,15 @@
 mod fields;
 mod form;
 mod hidden;
+mod packed;
 mod text;
 
 pub use fields::{
-    Dtype, Field, Rows, Scalar, ANALYSIS_FIELDS, EVENT_KINDS, ORACLE_FIELDS, PLANES_FIELDS, PLANE_ROWS, SCALARS,
-    SEAT_ROWS, TOKENS_FIELDS,
+    Dtype, Field, Rows, Scalar, ANALYSIS_FIELDS, EVENT_KINDS, ORACLE_FIELDS, PACKED_FIELDS, PLANES_FIELDS, PLANE_ROWS,
+    SCALARS, SEAT_ROWS, TOKENS_FIELDS,
 };
 pub(crate) use form::observe_cpu;
 pub use form::{record, Form};
 pub use hidden::{resample_hidden, OwnDraws};
+pub use packed::{packed_row, unpack_planes, PackedRow};
 pub use text::{describe, field_values, fields_markdown};

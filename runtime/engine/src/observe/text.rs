@@ -10,8 +10,8 @@ use crate::{Tile, TileType};
 
 const SEATS: [&str; 4] = ["self", "right", "across", "left"];
 
-/// The elements of field `name` of a `form` record, widened to i32.
-pub fn field_values(form: Form, record: &[u8], name: &str) -> Vec<i32> {
+/// The elements of field `name` of a `form` record, widened to i64.
+pub fn field_values(form: Form, record: &[u8], name: &str) -> Vec<i64> {
     let Some(f) = form.field(name) else {
         return Vec::new();
     };
@@ -19,13 +19,26 @@ pub fn field_values(form: Form, record: &[u8], name: &str) -> Vec<i32> {
         return Vec::new();
     };
     match f.dtype {
-        Dtype::U8 => bytes.iter().map(|&b| i32::from(b)).collect(),
-        Dtype::I8 => bytes.iter().map(|&b| i32::from(b as i8)).collect(),
+        Dtype::U8 => bytes.iter().map(|&b| i64::from(b)).collect(),
+        Dtype::I8 => bytes.iter().map(|&b| i64::from(b as i8)).collect(),
         Dtype::I16 => bytes
             .chunks(2)
-            .map(|c| i32::from(i16::from_le_bytes([c[0], c[1]])))
+            .map(|c| i64::from(i16::from_le_bytes([c[0], c[1]])))
+            .collect(),
+        // Bit-rows use 34 bits: below i64's sign.
+        Dtype::U64 => bytes
+            .chunks(8)
+            .map(|c| i64::from_le_bytes(c.try_into().unwrap_or([0; 8])))
             .collect(),
     }
+}
+
+/// [`field_values`] of a field of bytes or 16-bit values, as the text below reads them.
+fn values(form: Form, record: &[u8], name: &str) -> Vec<i32> {
+    field_values(form, record, name)
+        .into_iter()
+        .map(|v| i32::try_from(v).unwrap_or(i32::MAX))
+        .collect()
 }
 
 fn type_name(t: usize) -> String {
@@ -73,8 +86,13 @@ pub fn describe(form: Form, record: &[u8]) -> String {
         );
     }
     match form {
+        Form::Packed => {
+            // Shown as the planes it unpacks to (the lengths were checked above).
+            let planes = super::unpack_planes(record).unwrap_or_default();
+            return describe(Form::Planes, &planes);
+        }
         Form::Planes => {
-            let planes = field_values(form, record, "planes");
+            let planes = values(form, record, "planes");
             let mut names: Vec<(u32, String)> = PLANE_ROWS
                 .iter()
                 .flat_map(|r| {
@@ -119,8 +137,8 @@ pub fn describe(form: Form, record: &[u8]) -> String {
             }
         }
         Form::Tokens => {
-            let hand = field_values(form, record, "hand");
-            let red = field_values(form, record, "hand_red");
+            let hand = values(form, record, "hand");
+            let red = values(form, record, "hand_red");
             let mut tiles = Vec::new();
             for (t, &n) in hand.iter().enumerate() {
                 let reds = if t < 27 && t % 9 == 4 { red[t / 9] } else { 0 };
@@ -133,14 +151,14 @@ pub fn describe(form: Form, record: &[u8]) -> String {
                 }
             }
             let _ = writeln!(out, "hand: {}", tiles.join(" "));
-            let one = |n: &str| field_values(form, record, n).first().copied().unwrap_or(-1);
+            let one = |n: &str| values(form, record, n).first().copied().unwrap_or(-1);
             let _ = writeln!(
                 out,
                 "drawn: {}  target: {}",
                 tile_name(one("drawn")),
                 tile_name(one("target"))
             );
-            let melds = field_values(form, record, "melds");
+            let melds = values(form, record, "melds");
             let kinds = ["chi", "pon", "open kan", "closed kan", "added kan"];
             for seat in 0..4 {
                 let list: Vec<String> = (0..4)
@@ -168,13 +186,13 @@ pub fn describe(form: Form, record: &[u8]) -> String {
                     let _ = writeln!(out, "melds of {}: {}", SEATS[seat], list.join(", "));
                 }
             }
-            let dora: Vec<String> = field_values(form, record, "dora_indicators")
+            let dora: Vec<String> = values(form, record, "dora_indicators")
                 .into_iter()
                 .filter(|&v| v >= 0)
                 .map(tile_name)
                 .collect();
             let _ = writeln!(out, "dora indicators: {}", dora.join(" "));
-            let seen = field_values(form, record, "tiles_seen");
+            let seen = values(form, record, "tiles_seen");
             let seen: Vec<String> = seen
                 .iter()
                 .enumerate()
@@ -182,7 +200,7 @@ pub fn describe(form: Form, record: &[u8]) -> String {
                 .map(|(t, n)| format!("{}={n}", type_name(t)))
                 .collect();
             let _ = writeln!(out, "tiles seen: {}", seen.join(" "));
-            let events = field_values(form, record, "events");
+            let events = values(form, record, "events");
             let n = one("events_len").max(0) as usize;
             out.push_str("events:\n");
             for e in events.chunks(4).take(n) {
@@ -205,9 +223,9 @@ pub fn describe(form: Form, record: &[u8]) -> String {
         }
         Form::Analysis | Form::Oracle => {
             for f in form.fields() {
-                let values = field_values(form, record, f.name);
+                let vals = values(form, record, f.name);
                 if f.shape.last() == Some(&34) {
-                    for (r, row) in values.chunks(34).enumerate() {
+                    for (r, row) in vals.chunks(34).enumerate() {
                         let cells: Vec<String> = row
                             .iter()
                             .enumerate()
@@ -222,10 +240,10 @@ pub fn describe(form: Form, record: &[u8]) -> String {
                         let _ = writeln!(out, "{label}: {}", cells.join(" "));
                     }
                 } else if matches!(f.name, "wall" | "rinshan" | "dora_indicators" | "ura_indicators") {
-                    let tiles: Vec<String> = values.iter().map(|&v| tile_name(v)).collect();
+                    let tiles: Vec<String> = vals.iter().map(|&v| tile_name(v)).collect();
                     let _ = writeln!(out, "{}: {}", f.name, tiles.join(" "));
                 } else {
-                    let nums: Vec<String> = values.iter().map(|&v| value_text(v, f.flag)).collect();
+                    let nums: Vec<String> = vals.iter().map(|&v| value_text(v, f.flag)).collect();
                     let _ = writeln!(out, "{}: {}", f.name, nums.join(" "));
                 }
             }
@@ -233,7 +251,7 @@ pub fn describe(form: Form, record: &[u8]) -> String {
         }
     }
     out.push_str("scalars:\n");
-    scalars_text(&mut out, &field_values(form, record, "scalars"));
+    scalars_text(&mut out, &values(form, record, "scalars"));
     out
 }
 
@@ -265,7 +283,10 @@ pub fn fields_markdown() -> String {
             );
         }
     }
-    md.push_str("\n## Plane rows\n\n| rows | name | max | meaning |\n|---|---|---|---|\n");
+    md.push_str(
+        "\n## Plane rows\n\nThe `packed` form holds each yes/no row as a row of `bits` and each other row as a row \
+         of `counts`.\n\n| rows | name | max | packed | meaning |\n|---|---|---|---|---|\n",
+    );
     let mut all: Vec<Rows> = PLANE_ROWS.to_vec();
     for seat in 0..4 {
         for r in SEAT_ROWS {
@@ -292,7 +313,19 @@ pub fn fields_markdown() -> String {
         } else {
             r.name.to_string()
         };
-        let _ = writeln!(md, "| {rows} | `{name}` | {} | {} |", r.max, r.doc);
+        let packed: Vec<String> = (r.row..r.row + r.count)
+            .map(|row| match super::packed_row(row) {
+                super::PackedRow::Bits(i) => format!("bits[{i}]"),
+                super::PackedRow::Counts(i) => format!("counts[{i}]"),
+            })
+            .collect();
+        let _ = writeln!(
+            md,
+            "| {rows} | `{name}` | {} | {} | {} |",
+            r.max,
+            packed.join(", "),
+            r.doc
+        );
     }
     md.push_str("\n## Scalars\n\n| index | name | meaning |\n|---|---|---|\n");
     for s in SCALARS {
