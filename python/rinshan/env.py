@@ -9,6 +9,7 @@ through dlpack, whose buffers must not change underneath it.
 from __future__ import annotations
 
 import dataclasses
+import functools
 from collections.abc import Sequence
 from typing import Any, Optional, Union
 
@@ -50,6 +51,7 @@ def split_record(raw: np.ndarray, form: str) -> dict[str, np.ndarray]:
     return out
 
 
+@functools.cache
 def _packed_layout() -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Planes rows held as bits and as counts, and their indices in `bits` and `counts`."""
     rows = _core.packed_rows()
@@ -70,12 +72,18 @@ def unpack_planes(packed: dict) -> dict[str, np.ndarray]:
     `packed_rows()` lists."""
     bits = np.asarray(packed["bits"])
     counts = np.asarray(packed["counts"])
-    if bits.dtype != np.uint64 or counts.dtype != np.uint8 or bits.shape[:-1] != counts.shape[:-2]:
+    bit_rows, bit_index, count_rows, count_index = _packed_layout()
+    if (
+        bits.dtype != np.uint64
+        or counts.dtype != np.uint8
+        or bits.shape[-1:] != (len(bit_rows),)
+        or counts.shape[-2:] != (len(count_rows), 34)
+        or bits.shape[:-1] != counts.shape[:-2]
+    ):
         raise ValueError(
             f"packed arrays are bits (..., 36) uint64 and counts (..., 28, 34) uint8, "
             f"not {bits.shape} {bits.dtype} and {counts.shape} {counts.dtype}"
         )
-    bit_rows, bit_index, count_rows, count_index = _packed_layout()
     lead = bits.shape[:-1]
     planes = np.empty((*lead, len(bit_rows) + len(count_rows), 34), dtype=np.uint8)
     shifts = np.arange(34, dtype=np.uint64)

@@ -392,3 +392,7 @@ def test_packed_planes_unpack_to_the_planes():
         rinshan.unpack_planes(
             {"bits": every["bits"].astype(np.int64), "counts": every["counts"], "scalars": None}
         )
+    with pytest.raises(ValueError, match="packed arrays"):
+        rinshan.unpack_planes(
+            {"bits": every["bits"], "counts": every["counts"][..., :27, :], "scalars": None}
+        )

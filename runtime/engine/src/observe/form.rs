@@ -12,9 +12,10 @@ pub enum Form {
     Planes,
     /// Hand, melds, dora, the round's public events in order, and the scalars: for Transformers.
     Tokens,
-    /// The planes as bit-rows, `rows (135,) uint64` (34 bits used, bit t = tile type t) and the
-    /// same scalars: half the bytes, for learners that unpack on their device
-    /// ([`super::unpack_planes`], or `rinshan.unpack_planes` in Python).
+    /// The planes in 1,336 bytes instead of 2,272: their yes/no rows as `bits (36,) uint64` (bit t
+    /// = tile type t), their other rows as `counts (28, 34) uint8`, and the same scalars; for
+    /// learners that unpack on their device ([`super::unpack_planes`], or `rinshan.unpack_planes`
+    /// in Python).
     Packed,
     /// The opt-in analysis tier: shanten and ukeire after each discard, waits, improving draws.
     /// Computed from the observer's hand and the tiles it has seen: no more than it may know.
