@@ -384,7 +384,7 @@ pub fn agent_act(agent: u32, o: &mut ObsPlanes, mask: [u32; 3], seed: [u32; 2], 
 // then the built-in agents of bits 8.. (4 bits per seat, AGENT_CALLER = the caller's seat) play
 // until one of the caller's seats must decide or the game ends. The step's outputs add up every
 // decision played (rewards summed, events and winners merged). A host that drives the GPU makes
-// the same calls as this loop, one pass each (game_play_action, then game_advance), so that no
+// the same calls as this loop, one pass each (game_play_action, then game_advance's), so that no
 // shader holds both the step and the agents.
 pub fn game_play(s: &mut GameState, arg: u32) {
     for i in 0u32..PLAY_LIMIT {
@@ -420,35 +420,27 @@ pub fn game_play_action(state: GameState, arg: u32) -> u32 {
     play_action(&mut s, arg)
 }
 
-// One step (an action id: game_step itself), or one of hero mode's decisions (from
-// game_play_action): PLAY_DONE plays nothing, and with PLAY_ADD the step's outputs add up with
-// those already in the state. One call site of game_step: GPU compilers inline it once.
-pub fn game_advance(s: &mut GameState, arg: u32) {
+// The first pass of a step (`game_step` after its outputs are cleared), or of one of hero mode's
+// decisions (from game_play_action): PLAY_DONE plays nothing, and with PLAY_ADD the step's outputs
+// add up with those already in the state. They do so by not being cleared: hero mode plays a
+// decision with PLAY_ADD only in a game that has not ended (play_action), so the flags, ranks and
+// illegal seat it finds are zero, and every other output is summed or merged by the step itself
+// (a ron's deal-in seat replaces the one before).
+pub fn game_decide(s: &mut GameState, arg: u32) {
     if arg == PLAY_DONE {
+        s.task = TASK_IDLE;
         return;
     }
-    let rewards: [i32; 4] = s.rewards;
-    let events: u32 = s.events;
-    let winners: u32 = s.winners;
-    let deal_in: u32 = s.deal_in;
-    let yaku: [u32; 2] = s.yaku;
-    let illegal: u32 = s.illegal;
-    let terminated: u32 = s.terminated;
-    game_step(s, arg & !PLAY_ADD);
-    if (arg & PLAY_ADD) != 0u32 {
-        for p in 0u32..4u32 {
-            s.rewards[p as usize] += rewards[p as usize];
-        }
-        s.events |= events;
-        s.winners |= winners;
-        if s.deal_in == 0u32 {
-            s.deal_in = deal_in;
-        }
-        s.yaku[0] |= yaku[0];
-        s.yaku[1] |= yaku[1];
-        s.illegal |= illegal;
-        s.terminated |= terminated;
+    if (arg & PLAY_ADD) == 0u32 {
+        clear_step_outputs(s);
     }
+    step_decide(s, arg & !PLAY_ADD);
+}
+
+// A whole step or hero-mode decision: its first pass, then the step's later ones.
+pub fn game_advance(s: &mut GameState, arg: u32) {
+    game_decide(s, arg);
+    step_passes(s);
 }
 
 // The action the built-in agent seated at the player to move would play (`arg`: 4 bits per

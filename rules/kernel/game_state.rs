@@ -72,8 +72,9 @@ pub const WIN_CONCEALED_SHIFT: u32 = 24;
 pub const WIN_AKA_SHIFT: u32 = 8;
 pub const WIN_URA_SHIFT: u32 = 16;
 
-// The continuations of a step (see `run_tasks`): each piece of the game that can follow an action
-// runs from one place, so the GPU compiler inlines each heavy function once.
+// The continuations of a step (GameState.task; the passes of game_step.rs): each piece of the
+// game that can follow an action runs from one place, so the GPU compiler inlines each heavy
+// function once.
 const TASK_DONE: u32 = 0;
 const TASK_OPEN_CLAIMS: u32 = 1;
 const TASK_RESOLVE: u32 = 2;
@@ -82,6 +83,10 @@ const TASK_REPLACEMENT: u32 = 4;
 const TASK_ABORTIVE: u32 = 5;
 const TASK_TSUMO: u32 = 6;
 const TASK_END_ROUND: u32 = 7;
+// The step is settled but for its mask.
+const TASK_MASK: u32 = 8;
+// The step changes nothing more, not even the mask (a finished game; hero mode done).
+const TASK_IDLE: u32 = 9;
 // End-of-round arguments (GameState.task_flags).
 const END_DEALER_CONTINUES: u32 = 1;
 const END_DRAWN: u32 = 2;
@@ -141,6 +146,8 @@ pub struct StepView {
     // This step's score change per seat in units of 100 points (uma included at the end).
     pub rewards: [f32; 4],
     pub terminated: u32,
+    // Always 0: a game always ends by the rules (or an illegal action); kept for the
+    // terminated/truncated pair RL APIs expect.
     pub truncated: u32,
     // 1 when this step's action was illegal (the game ended with the penalty).
     pub illegal: u32,
@@ -218,14 +225,15 @@ pub struct GameState {
     // Per seat: the claim options offered (CLAIM_* bits) and the action chosen (NO_CHOICE until then).
     pub claim_options: [u32; 4],
     pub claim_choices: [u32; 4],
-    // Arguments of the pending task: a seat, and END_* flags for TASK_END_ROUND.
+    // The pending task of a step between its passes (TASK_DONE between steps), and its
+    // arguments: a seat, and END_* flags for TASK_END_ROUND.
+    pub task: u32,
     pub task_seat: u32,
     pub task_flags: u32,
     // Outputs of the last step (see StepView).
     pub mask: [u32; 3],
     pub rewards: [i32; 4],
     pub terminated: u32,
-    pub truncated: u32,
     pub illegal: u32,
     pub events: u32,
     pub winners: u32,

@@ -23,45 +23,80 @@ fn begin_game(s: &mut GameState, dealer: u32, wall: [u32; 136]) {
     start_round(s, wall);
 }
 
-// Runs what follows an action until the step settles. Every continuation is called from this one
-// loop rather than from each other, so each heavy function (scoring, dealing, masks) is inlined
-// once by GPU compilers instead of once per path.
-fn run_tasks(s: &mut GameState, first: u32) {
-    let mut task: u32 = first;
-    loop {
-        if task == TASK_DONE {
-            break;
-        }
-        if task == TASK_OPEN_CLAIMS {
-            task = open_claims(s);
-        } else if task == TASK_RESOLVE {
-            task = resolve_claims(s);
-        } else if task == TASK_AFTER_DISCARD {
-            task = after_discard(s);
-        } else if task == TASK_REPLACEMENT {
-            let seat: u32 = s.task_seat;
-            draw_replacement(s, seat);
-            task = TASK_DONE;
-        } else if task == TASK_ABORTIVE {
-            s.events |= EVENT_ABORTIVE_DRAW;
-            s.task_flags = END_DEALER_CONTINUES | END_DRAWN | END_ABORTIVE;
-            task = TASK_END_ROUND;
-        } else if task == TASK_TSUMO {
-            let winner: u32 = s.task_seat;
-            settle_tsumo(s, winner);
-            s.task_flags = 0u32;
-            if winner == s.dealer {
-                s.task_flags = END_DEALER_CONTINUES;
-            }
-            task = TASK_END_ROUND;
-        } else if task == TASK_END_ROUND {
-            let flags: u32 = s.task_flags;
-            end_round(s, flags);
-            task = TASK_DONE;
-        } else {
-            task = TASK_DONE;
-        }
+// A step runs as passes over the state, each pass the continuations (`GameState.task`) of one
+// stage: the decision, the claims on a discard, what follows them (the next draw, a replacement
+// tile, a tsumo, an abortive draw), the end of the round, then the new mask. A task only ever
+// leads to one numbered after it (TASK_*), so each runs at most once, in that order, and the
+// passes play a whole step in straight lines. The CPU calls them in a row (`game_step`); the GPU
+// dispatches each as a pipeline of its own: one shader holding the whole step took Mesa's
+// lavapipe 2.5 minutes to compile, its parts two thirds of that in all (docs/speed.md).
+
+// The claims stage: a discard's claim window opened, and the claims resolved once every
+// claimant decided.
+pub fn game_claims(s: &mut GameState, _arg: u32) {
+    if s.task == TASK_OPEN_CLAIMS {
+        s.task = open_claims(s);
     }
+    if s.task == TASK_RESOLVE {
+        s.task = resolve_claims(s);
+    }
+}
+
+// What follows the claims: the next draw (or an exhaustive or abortive draw), a kan's replacement
+// tile, a tsumo's payments.
+pub fn game_flow(s: &mut GameState, _arg: u32) {
+    if s.task == TASK_AFTER_DISCARD {
+        s.task = after_discard(s);
+    }
+    if s.task == TASK_REPLACEMENT {
+        let seat: u32 = s.task_seat;
+        draw_replacement(s, seat);
+        s.task = TASK_DONE;
+    }
+    if s.task == TASK_ABORTIVE {
+        s.events |= EVENT_ABORTIVE_DRAW;
+        s.task_flags = END_DEALER_CONTINUES | END_DRAWN | END_ABORTIVE;
+        s.task = TASK_END_ROUND;
+    }
+    if s.task == TASK_TSUMO {
+        let winner: u32 = s.task_seat;
+        settle_tsumo(s, winner);
+        s.task_flags = 0u32;
+        if winner == s.dealer {
+            s.task_flags = END_DEALER_CONTINUES;
+        }
+        s.task = TASK_END_ROUND;
+    }
+}
+
+// The end of the round (the next deal, or the game's end), and with auto-reset the next game.
+pub fn game_settle(s: &mut GameState, _arg: u32) {
+    if s.task == TASK_IDLE {
+        return;
+    }
+    if s.task == TASK_END_ROUND {
+        let flags: u32 = s.task_flags;
+        end_round(s, flags);
+    }
+    if s.terminated != 0u32 && s.auto_reset != 0u32 {
+        // Pgx-style auto-reset: the next game starts in this step; the view still reports the end.
+        s.games += 1u32;
+        let dealer: u32 = first_dealer(s.seed, s.games, 4u32);
+        let wall: [u32; 136] = shuffled_wall(s.seed, s.games, 0u32);
+        let finished_rounds: u32 = s.rounds;
+        begin_game(s, dealer, wall);
+        s.terminated = 1u32;
+        s.rounds = finished_rounds;
+    }
+    s.task = TASK_MASK;
+}
+
+// The legal actions of the step's outcome; the step is settled.
+pub fn game_mask(s: &mut GameState, _arg: u32) {
+    if s.task == TASK_MASK {
+        s.mask = compute_mask(s);
+    }
+    s.task = TASK_DONE;
 }
 
 fn first_dealer(seed: [u32; 2], games: u32, requested: u32) -> u32 {
@@ -100,8 +135,10 @@ fn clear_step_outputs(s: &mut GameState) {
     s.ranks = 0u32;
 }
 
-pub fn game_step(s: &mut GameState, action: u32) {
-    clear_step_outputs(s);
+// The decision: the action played, or the game ended by an illegal one. Leaves the task that
+// follows in `s.task` (TASK_IDLE: the step changes nothing more, not even the mask).
+fn step_decide(s: &mut GameState, action: u32) {
+    s.task = TASK_IDLE;
     if s.terminated != 0u32 {
         if s.auto_reset == 0u32 {
             // A finished game without auto-reset stays finished; its view repeats with no reward.
@@ -112,31 +149,31 @@ pub fn game_step(s: &mut GameState, action: u32) {
     }
     s.steps += 1u32;
     let actor: u32 = s.current;
+    s.task = TASK_DONE;
     if action >= NUM_ACTIONS || !mask_has(s.mask, action) {
         s.illegal = actor + 1u32;
         s.phase = PHASE_OVER;
         s.terminated = 1u32;
         s.events |= EVENT_GAME_OVER;
-    } else {
-        let mut next: u32 = TASK_DONE;
-        if s.phase == PHASE_CLAIM {
-            next = do_claim_decision(s, action);
-        } else if s.phase != PHASE_OVER {
-            next = do_turn_action(s, action);
-        }
-        run_tasks(s, next);
+    } else if s.phase == PHASE_CLAIM {
+        s.task = do_claim_decision(s, action);
+    } else if s.phase != PHASE_OVER {
+        s.task = do_turn_action(s, action);
     }
-    if s.terminated != 0u32 && s.auto_reset != 0u32 {
-        // Pgx-style auto-reset: the next game starts in this step; the view still reports the end.
-        s.games += 1u32;
-        let dealer: u32 = first_dealer(s.seed, s.games, 4u32);
-        let wall: [u32; 136] = shuffled_wall(s.seed, s.games, 0u32);
-        let finished_rounds: u32 = s.rounds;
-        begin_game(s, dealer, wall);
-        s.terminated = 1u32;
-        s.rounds = finished_rounds;
-    }
-    s.mask = compute_mask(s);
+}
+
+// The passes after the decision, in their order.
+fn step_passes(s: &mut GameState) {
+    game_claims(s, 0u32);
+    game_flow(s, 0u32);
+    game_settle(s, 0u32);
+    game_mask(s, 0u32);
+}
+
+pub fn game_step(s: &mut GameState, action: u32) {
+    clear_step_outputs(s);
+    step_decide(s, action);
+    step_passes(s);
 }
 
 // Replaces the round a game is about to play with the given table and wall (log replay: each
@@ -170,7 +207,7 @@ pub fn game_view(s: GameState) -> StepView {
         mask: s.mask,
         rewards: rewards,
         terminated: s.terminated,
-        truncated: s.truncated,
+        truncated: 0u32,
         illegal: (s.illegal != 0u32) as u32,
         events: s.events,
         winners: s.winners,

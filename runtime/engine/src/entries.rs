@@ -12,9 +12,15 @@ pub const ENTRIES: [(&str, &str, &str, &str); 4] = [
 /// The in-place update entry points, after [`ENTRIES`] in binding order: (entry point, kernel
 /// function `fn(&mut State, Arg)`, state struct, argument type). The k-th entry point of the
 /// module (k counts [`ENTRIES`] first) binds its state (read-write) at 1+2k and its arguments at 2+2k.
-/// The step's entry runs `game_advance`: a step, or one of hero mode's decisions.
-pub const UPDATE_ENTRIES: [(&str, &str, &str, &str); 2] = [
-    ("game_step_main", "game_advance", "GameState", "u32"),
+/// A step is the first five, in this order (rules/kernel/game_step.rs): `game_decide` plays an
+/// action id or one of hero mode's decisions, and the others, whose argument is unused, play what
+/// follows it stage by stage.
+pub const UPDATE_ENTRIES: [(&str, &str, &str, &str); 6] = [
+    ("game_step_main", "game_decide", "GameState", "u32"),
+    ("game_claims_main", "game_claims", "GameState", "u32"),
+    ("game_flow_main", "game_flow", "GameState", "u32"),
+    ("game_settle_main", "game_settle", "GameState", "u32"),
+    ("game_mask_main", "game_mask", "GameState", "u32"),
     ("game_deal_main", "game_deal", "GameState", "DealInput"),
 ];
 

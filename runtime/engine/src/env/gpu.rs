@@ -1,9 +1,10 @@
 //! The GPU side of [`crate::env::Env`]: the B game states live in one storage buffer on the device.
 //! A reset uploads the `ResetInput`s and runs `game_new_main` into the state buffer; a step
-//! uploads B action ids, runs `game_step_main` on the states in place, then `game_view_main`; only
-//! the `StepView`s come back. A forced deal (log replay) uploads `DealInput`s and runs
+//! uploads B action ids, runs the step's five passes on the states in place (`game_step_main`,
+//! then `game_claims_main`, `game_flow_main`, `game_settle_main` and `game_mask_main`: the step in
+//! one shader took drivers minutes to compile), then `game_view_main`; only the `StepView`s come back. A forced deal (log replay) uploads `DealInput`s and runs
 //! `game_deal_main` on the states in place. Hero mode alternates `game_play_action_main` (the
-//! agents) and `game_step_main` until every env waits for the caller, as the CPU kernel's
+//! agents) and the step's passes until every env waits for the caller, as the CPU kernel's
 //! `game_play` loops: one shader holding the step and the agents took drivers minutes to compile,
 //! and NVIDIA's lost the device on it.
 
@@ -53,18 +54,30 @@ fn observe_entry(form: Form) -> &'static str {
 const NEW: &str = "game_new_main";
 const VIEW: &str = "game_view_main";
 const STEP: &str = "game_step_main";
+const CLAIMS: &str = "game_claims_main";
+const FLOW: &str = "game_flow_main";
+const SETTLE: &str = "game_settle_main";
+const MASK: &str = "game_mask_main";
 const DEAL: &str = "game_deal_main";
 const AGENT_ACTION: &str = "agent_action_main";
 const PLAY_ACTION: &str = "game_play_action_main";
 
 /// The passes, made on first use (a driver may take long to compile the step pipeline).
-#[derive(Clone, Copy)]
+#[derive(Clone, Copy, PartialEq, Eq)]
 enum Stage {
     New = 0,
     Step = 1,
-    View = 2,
-    Deal = 3,
+    Claims = 2,
+    Flow = 3,
+    Settle = 4,
+    Mask = 5,
+    View = 6,
+    Deal = 7,
 }
+
+/// A step's passes, in order (entries.rs): the first reads the action ids (or hero mode's
+/// decisions), the others only the states.
+const STEP_PASSES: [Stage; 5] = [Stage::Step, Stage::Claims, Stage::Flow, Stage::Settle, Stage::Mask];
 
 struct Pass {
     pipeline: wgpu::ComputePipeline,
@@ -85,7 +98,7 @@ pub(crate) struct GpuEnv {
     views_buffer: wgpu::Buffer,
     view_readback: wgpu::Buffer,
     wgsl: &'static str,
-    passes: [Option<Pass>; 4],
+    passes: [Option<Pass>; 8],
     /// Hero mode's passes and buffers, made on its first step.
     play: Option<PlayPasses>,
     /// The words of the last upload that the host rewrites first (clamped action ids, hero mode's
@@ -164,7 +177,7 @@ impl GpuEnv {
             views_buffer: views,
             view_readback,
             wgsl,
-            passes: [None, None, None, None],
+            passes: Default::default(),
             play: None,
             upload: Vec::with_capacity(batch),
             views: Vec::with_capacity(batch * view_words),
@@ -188,6 +201,11 @@ impl GpuEnv {
         let (spec, first, second) = match stage {
             Stage::New => (EntrySpec::map(NEW), &self.reset_inputs, &self.states),
             Stage::Step => (EntrySpec::update(STEP), &self.states, &self.actions),
+            // Their argument is unused: any buffer of a word per env binds.
+            Stage::Claims => (EntrySpec::update(CLAIMS), &self.states, &self.actions),
+            Stage::Flow => (EntrySpec::update(FLOW), &self.states, &self.actions),
+            Stage::Settle => (EntrySpec::update(SETTLE), &self.states, &self.actions),
+            Stage::Mask => (EntrySpec::update(MASK), &self.states, &self.actions),
             Stage::View => (EntrySpec::map(VIEW), &self.states, &self.views_buffer),
             Stage::Deal => {
                 let Some(deals) = &self.deal_inputs else {
@@ -201,22 +219,19 @@ impl GpuEnv {
         self.passes[stage as usize] = Some(Pass { pipeline, bind_group });
     }
 
-    /// Runs `first` (a reset or a step) then the view pass, and reads the views back.
-    fn run(&mut self, first: Stage) -> Result<&[u32], GpuError> {
-        self.dispatch(&[first, Stage::View])
-    }
-
     /// Replaces every env's state with `states` and reads their views back.
     pub(crate) fn load(&mut self, states: &[u32]) -> Result<&[u32], GpuError> {
         self.gpu
             .queue()
             .write_buffer(&self.states, 0, bytemuck::cast_slice(states));
-        self.dispatch(&[Stage::View])
+        self.dispatch(&[])
     }
 
-    /// Runs the passes of `stages` in order over the batch, and reads the views back.
+    /// Runs the passes of `stages` in order over the batch, then the view pass, and reads the
+    /// views back.
     fn dispatch(&mut self, stages: &[Stage]) -> Result<&[u32], GpuError> {
-        for &stage in stages {
+        let stages = stages.iter().chain([&Stage::View]);
+        for &stage in stages.clone() {
             self.ensure(stage);
         }
         let mut encoder = self
@@ -247,7 +262,7 @@ impl GpuEnv {
         self.gpu
             .queue()
             .write_buffer(&self.reset_inputs, 0, bytemuck::cast_slice(inputs));
-        self.run(Stage::New)
+        self.dispatch(&[Stage::New])
     }
 
     /// One step (`play`: hero mode, `actions` are `game_play` arguments).
@@ -262,20 +277,35 @@ impl GpuEnv {
         self.gpu
             .queue()
             .write_buffer(&self.actions, 0, bytemuck::cast_slice(&self.upload));
-        self.run(Stage::Step)
+        self.dispatch(&STEP_PASSES)
     }
 
     /// Hero mode: the decisions of `game_play` (its arguments in `args`), one pass of the agents
-    /// and one of the step at a time, in growing batches of passes between checks for an env that
-    /// still plays.
+    /// and the step's passes at a time, in growing batches of passes between checks for an env
+    /// that still plays.
     fn play(&mut self, args: &[u32]) -> Result<&[u32], GpuError> {
-        self.ensure(Stage::Step);
+        for stage in STEP_PASSES {
+            self.ensure(stage);
+        }
         if self.play.is_none() {
             self.play = Some(self.play_passes());
         }
-        let (Some(play), Some(step)) = (&mut self.play, &self.passes[Stage::Step as usize]) else {
+        let Some(play) = &mut self.play else {
             unreachable!("made above")
         };
+        // The step's passes: the first reads the decisions the agents' pass wrote.
+        let mut step = [None; STEP_PASSES.len()];
+        for (pass, stage) in step.iter_mut().zip(STEP_PASSES) {
+            let Some(p) = &self.passes[stage as usize] else {
+                unreachable!("made above")
+            };
+            let group = if stage == Stage::Step {
+                &play.step_group
+            } else {
+                &p.bind_group
+            };
+            *pass = Some((&p.pipeline, group));
+        }
         let queue = self.gpu.queue();
         self.upload.clear();
         self.upload.extend(args.iter().map(|&a| a | k::PLAY_FIRST));
@@ -285,16 +315,21 @@ impl GpuEnv {
         let encode = |encoder: &mut wgpu::CommandEncoder, pipeline, bind_group| {
             encode_pass(encoder, "rinshan hero mode", pipeline, bind_group, groups)
         };
+        let encode_step = |encoder: &mut wgpu::CommandEncoder| {
+            for (pipeline, group) in step.iter().flatten() {
+                encode(encoder, pipeline, group);
+            }
+        };
         let device = self.gpu.device();
         let mut encoder = device.create_command_encoder(&Default::default());
         encode(&mut encoder, &play.action, &play.first_group);
-        encode(&mut encoder, &step.pipeline, &play.step_group);
+        encode_step(&mut encoder);
         let mut played = 1;
         let mut chunk = 4;
         loop {
             for _ in 0..chunk.min(k::PLAY_LIMIT - played) {
                 encode(&mut encoder, &play.action, &play.later_group);
-                encode(&mut encoder, &step.pipeline, &play.step_group);
+                encode_step(&mut encoder);
                 played += 1;
             }
             // The next decisions, to see whether any env still plays.
@@ -308,7 +343,7 @@ impl GpuEnv {
             chunk = (chunk * 2).min(256);
             encoder = device.create_command_encoder(&Default::default());
         }
-        self.dispatch(&[Stage::View])
+        self.dispatch(&[])
     }
 
     fn play_passes(&mut self) -> PlayPasses {
@@ -359,7 +394,7 @@ impl GpuEnv {
         if let Some(deals) = &self.deal_inputs {
             self.gpu.queue().write_buffer(deals, 0, bytemuck::cast_slice(inputs));
         }
-        self.run(Stage::Deal)
+        self.dispatch(&[Stage::Deal])
     }
 
     /// Observations of `form` for the seats in `args` (one per env; 4 = the current player), read
