@@ -125,6 +125,82 @@ fn hero_mode_plays_the_same_game_as_a_loop_over_the_agents() {
     }
 }
 
+/// A hero-mode step reports every decision it played: its rewards summed, its events, winners
+/// and yaku merged, the last deal-in seat, and the final places and state of the last decision,
+/// as plain steps (`game_step`, whose games the fingerprints pin) of the same decisions add up.
+#[test]
+fn hero_mode_reports_the_outputs_of_every_decision_it_played() {
+    const B: usize = 16;
+    let seating = [None, Some(Agent::Defensive), Some(Agent::Greedy), Some(Agent::Rule)];
+    let mut env = Env::new(hero_config(B, vec![seating])).expect("env");
+    let mut last = env.reset().expect("reset").clone();
+    let words = env.state_words();
+    let mut rng = Rng::new(5);
+    let mut merged_steps = 0;
+    while !last.terminated.iter().all(|&t| t) {
+        let before = env.states_words().expect("states");
+        let actions: Vec<u32> = (0..B).map(|i| rng.pick_legal(&last.legal_action_mask[i])).collect();
+        let step = env.step(&actions).expect("step").clone();
+        let after = env.states_words().expect("states");
+        for i in 0..B {
+            if last.terminated[i] {
+                continue;
+            }
+            let mut s: kernel::GameState =
+                *bytemuck::from_bytes(bytemuck::cast_slice(&before[i * words..(i + 1) * words]));
+            let (mut rewards, mut events, mut winners, mut deal_in, mut yaku) = ([0i32; 4], 0, 0, 0, [0u32; 2]);
+            // The caller's action when its seat is to move (after a reset an agent may be first).
+            let agent_action = |s: &kernel::GameState, agent: Agent| {
+                red::agent_act(
+                    agent.kernel(),
+                    &mut red::observe_planes(*s, kernel::OBSERVE_CURRENT),
+                    s.mask,
+                    s.seed,
+                    s.steps,
+                )
+            };
+            let mut a = seating[s.current as usize].map_or(actions[i], |agent| agent_action(&s, agent));
+            let mut decisions = 0;
+            loop {
+                red::game_step(&mut s, a);
+                decisions += 1;
+                for (r, x) in rewards.iter_mut().zip(s.rewards) {
+                    *r += x;
+                }
+                events |= s.events;
+                winners |= s.winners;
+                if s.deal_in != 0 {
+                    deal_in = s.deal_in;
+                }
+                yaku = [yaku[0] | s.yaku[0], yaku[1] | s.yaku[1]];
+                let Some(agent) = seating[s.current as usize] else {
+                    break;
+                };
+                if s.terminated != 0 {
+                    break;
+                }
+                a = agent_action(&s, agent);
+            }
+            merged_steps += usize::from(decisions > 1 && events != 0);
+            let e: &kernel::GameState = bytemuck::from_bytes(bytemuck::cast_slice(&after[i * words..(i + 1) * words]));
+            assert_eq!(s.scores, e.scores, "env {i}: scores");
+            assert_eq!(s.steps, e.steps, "env {i}: decisions");
+            assert_eq!(step.rewards[i], rewards.map(|r| r as f32), "env {i}: rewards");
+            assert_eq!(step.events[i], events, "env {i}: events");
+            assert_eq!(step.winners[i], winners, "env {i}: winners");
+            assert_eq!(step.deal_in[i], deal_in, "env {i}: deal-in seat");
+            assert_eq!(step.yaku[i], yaku, "env {i}: yaku");
+            assert_eq!(step.terminated[i], s.terminated != 0, "env {i}: terminated");
+            assert_eq!(step.ranks[i], s.ranks.to_le_bytes(), "env {i}: final places");
+        }
+        last = step;
+    }
+    assert!(
+        merged_steps > B,
+        "only {merged_steps} hero steps settled a round among other decisions"
+    );
+}
+
 /// Observations are available in hero mode for the caller's seat.
 #[test]
 fn hero_mode_observes_the_callers_seat() {

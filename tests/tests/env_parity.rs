@@ -56,8 +56,8 @@ fn parity(variant: Variant) {
         started.elapsed().as_secs_f64()
     );
     if software {
-        // Mesa's lavapipe compiles game_step_main in about 5 minutes on 2 cores the first time
-        // (its shader cache makes later runs fast); the games themselves take seconds.
+        // Mesa's lavapipe compiles the step's five pipelines in about 2 minutes of one core the
+        // first time (its shader cache makes later runs fast); the games themselves take seconds.
         eprintln!("{variant}: stepping whole games on a software adapter");
     }
     let mut rngs: Vec<Rng> = (0..BATCH as u64).map(|i| Rng::new(0xabc0 + i)).collect();
