@@ -1,6 +1,7 @@
 //! Saving and restoring every env's game (search, checkpoints, bug reports). A saved env is its
 //! `GameState` words followed by a check pair: the kernels index tables with the state's bytes, so
-//! a state edited by hand, cut short or made by another variant is refused, not stepped.
+//! a state edited by hand, cut short, made by another variant or laid out by another build is
+//! refused, not stepped.
 
 use super::config::EnvError;
 use super::games::{Backing, Env};
@@ -11,9 +12,26 @@ use crate::generated::kernel;
 /// Words after each env's state in [`Env::save_states`]: the check pair.
 pub const CHECK_WORDS: usize = 2;
 
-/// The check pair of one env's state words for `variant`.
-fn check(variant: crate::Variant, words: &[u32]) -> [u32; 2] {
+/// What the check pair starts from: the variant and the layout of its `GameState` (the struct's
+/// declaration in the variant's WGSL: its fields' names, types and order), so that the words of a
+/// build whose state is laid out otherwise fail the check instead of being read into the wrong
+/// fields.
+fn check_seed(variant: crate::Variant) -> u64 {
+    let wgsl = with_variant!(variant, v => v::WGSL);
+    let layout = wgsl
+        .split_once("struct GameState {")
+        .and_then(|(_, rest)| rest.split_once("\n}"))
+        .map_or("", |(fields, _)| fields);
     let mut h = mix64(0x7269_6e73_6861_6e00 ^ variant as u64);
+    for b in layout.bytes() {
+        h = mix64(h ^ u64::from(b));
+    }
+    h
+}
+
+/// The check pair of one env's state words, from [`check_seed`].
+fn check(seed: u64, words: &[u32]) -> [u32; 2] {
+    let mut h = seed;
     for &w in words {
         h = mix64(h ^ u64::from(w));
     }
@@ -29,12 +47,12 @@ impl Env {
     /// Every env's game, [`Env::saved_words`] words per env, for [`Env::load_states`] (here or in
     /// another env of the same variant and batch).
     pub fn save_states(&self) -> Result<Vec<u32>, EnvError> {
-        let variant = self.variant();
+        let seed = check_seed(self.variant());
         let states = self.states_words()?;
         let mut out = Vec::with_capacity(self.batch() * self.saved_words());
         for s in states.chunks(self.state_words()) {
             out.extend_from_slice(s);
-            out.extend_from_slice(&check(variant, s));
+            out.extend_from_slice(&check(seed, s));
         }
         Ok(out)
     }
@@ -52,15 +70,16 @@ impl Env {
             });
         }
         let variant = self.variant();
+        let seed = check_seed(variant);
         let w = self.state_words();
         let mut states = Vec::with_capacity(self.batch() * w);
         for (env, one) in saved.chunks(n).enumerate() {
             let (s, c) = one.split_at(w);
-            if check(variant, s) != c {
+            if check(seed, s) != c {
                 return Err(EnvError::BadState {
                     env,
                     reason: format!(
-                        "its check words do not match: it was edited, or saved by an env of another variant than {variant}"
+                        "its check words do not match: it was edited, or saved by an env of another variant than {variant} or by a rinshan whose game state is laid out otherwise"
                     ),
                 });
             }
@@ -85,5 +104,41 @@ impl Env {
         }
         self.write_observations()?;
         Ok(&self.step)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::env::Config;
+
+    /// The check covers the state's layout: the declaration it reads holds every field, and a
+    /// state saved by the builds before it (their check seeded by the variant alone, whatever
+    /// the layout) is refused.
+    #[test]
+    fn states_saved_with_another_layout_are_refused() {
+        for &variant in crate::Variant::ALL {
+            let wgsl = with_variant!(variant, v => v::WGSL);
+            let fields = wgsl
+                .split_once("struct GameState {")
+                .and_then(|(_, rest)| rest.split_once("\n}"))
+                .map(|(fields, _)| fields)
+                .expect("the GameState declaration");
+            for field in ["seed:", "task:", "task_seat:", "log_len:"] {
+                assert!(fields.contains(field), "{variant}: {field} not in the layout");
+            }
+            let mut env = Env::new(Config::new(variant, 2)).expect("env");
+            env.reset().expect("reset");
+            let mut saved = env.save_states().expect("save");
+            env.load_states(&saved).expect("this build's states load");
+            let old_seed = mix64(0x7269_6e73_6861_6e00 ^ variant as u64);
+            let n = env.saved_words();
+            for one in saved.chunks_mut(n) {
+                let (s, c) = one.split_at_mut(n - CHECK_WORDS);
+                c.copy_from_slice(&check(old_seed, s));
+            }
+            let e = env.load_states(&saved).expect_err("an older build's states");
+            assert!(e.to_string().contains("laid out otherwise"), "{variant}: {e}");
+        }
     }
 }
