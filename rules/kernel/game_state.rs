@@ -83,8 +83,8 @@ const TASK_REPLACEMENT: u32 = 4;
 const TASK_ABORTIVE: u32 = 5;
 const TASK_TSUMO: u32 = 6;
 const TASK_END_ROUND: u32 = 7;
-// The step is settled but for its mask.
-const TASK_MASK: u32 = 8;
+// The game ended in this step: with auto-reset the next one starts.
+const TASK_NEW_GAME: u32 = 8;
 // The step changes nothing more, not even the mask (a finished game; hero mode done).
 const TASK_IDLE: u32 = 9;
 // End-of-round arguments (GameState.task_flags).

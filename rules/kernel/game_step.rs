@@ -26,10 +26,24 @@ fn begin_game(s: &mut GameState, dealer: u32, wall: [u32; 136]) {
 // A step runs as passes over the state, each pass the continuations (`GameState.task`) of one
 // stage: the decision, the claims on a discard, what follows them (the next draw, a replacement
 // tile, a tsumo, an abortive draw), the end of the round, then the new mask. A task only ever
-// leads to one numbered after it (TASK_*), so each runs at most once, in that order, and the
-// passes play a whole step in straight lines. The CPU calls them in a row (`game_step`); the GPU
+// leads to one numbered after it (TASK_*) or ends the step's play (TASK_DONE), so each runs at
+// most once, in that order, and the passes play a whole step in straight lines. The CPU calls them in a row (`game_step`); the GPU
 // dispatches each as a pipeline of its own: one shader holding the whole step took Mesa's
 // lavapipe 2.5 minutes to compile, its parts two thirds of that in all (docs/speed.md).
+
+// Whether a pass has work: the GPU skips the envs whose task its guard (entries.rs) rules out,
+// without copying their state. Each pass leaves every other state as it is.
+pub fn claims_pending(task: u32) -> bool {
+    task == TASK_OPEN_CLAIMS || task == TASK_RESOLVE
+}
+
+pub fn flow_pending(task: u32) -> bool {
+    task >= TASK_AFTER_DISCARD && task <= TASK_TSUMO
+}
+
+pub fn settle_pending(task: u32) -> bool {
+    task == TASK_END_ROUND || task == TASK_NEW_GAME
+}
 
 // The claims stage: a discard's claim window opened, and the claims resolved once every
 // claimant decided.
@@ -71,29 +85,32 @@ pub fn game_flow(s: &mut GameState, _arg: u32) {
 
 // The end of the round (the next deal, or the game's end), and with auto-reset the next game.
 pub fn game_settle(s: &mut GameState, _arg: u32) {
-    if s.task == TASK_IDLE {
-        return;
-    }
     if s.task == TASK_END_ROUND {
         let flags: u32 = s.task_flags;
         end_round(s, flags);
+        s.task = TASK_DONE;
+        if s.terminated != 0u32 {
+            s.task = TASK_NEW_GAME;
+        }
     }
-    if s.terminated != 0u32 && s.auto_reset != 0u32 {
-        // Pgx-style auto-reset: the next game starts in this step; the view still reports the end.
-        s.games += 1u32;
-        let dealer: u32 = first_dealer(s.seed, s.games, 4u32);
-        let wall: [u32; 136] = shuffled_wall(s.seed, s.games, 0u32);
-        let finished_rounds: u32 = s.rounds;
-        begin_game(s, dealer, wall);
-        s.terminated = 1u32;
-        s.rounds = finished_rounds;
+    if s.task == TASK_NEW_GAME {
+        if s.auto_reset != 0u32 {
+            // Pgx-style auto-reset: the next game starts in this step; the view still reports the end.
+            s.games += 1u32;
+            let dealer: u32 = first_dealer(s.seed, s.games, 4u32);
+            let wall: [u32; 136] = shuffled_wall(s.seed, s.games, 0u32);
+            let finished_rounds: u32 = s.rounds;
+            begin_game(s, dealer, wall);
+            s.terminated = 1u32;
+            s.rounds = finished_rounds;
+        }
+        s.task = TASK_DONE;
     }
-    s.task = TASK_MASK;
 }
 
 // The legal actions of the step's outcome; the step is settled.
 pub fn game_mask(s: &mut GameState, _arg: u32) {
-    if s.task == TASK_MASK {
+    if s.task != TASK_IDLE {
         s.mask = compute_mask(s);
     }
     s.task = TASK_DONE;
@@ -155,6 +172,7 @@ fn step_decide(s: &mut GameState, action: u32) {
         s.phase = PHASE_OVER;
         s.terminated = 1u32;
         s.events |= EVENT_GAME_OVER;
+        s.task = TASK_NEW_GAME;
     } else if s.phase == PHASE_CLAIM {
         s.task = do_claim_decision(s, action);
     } else if s.phase != PHASE_OVER {

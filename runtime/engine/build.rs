@@ -133,8 +133,8 @@ fn main() {
     }
     let mut io_types: Vec<&str> = ENTRIES
         .iter()
-        .chain(UPDATE_ENTRIES.iter())
         .flat_map(|(_, _, input, output)| [*input, *output])
+        .chain(UPDATE_ENTRIES.iter().flat_map(|(_, _, state, arg, _)| [*state, *arg]))
         .chain(
             READ_ENTRIES
                 .iter()

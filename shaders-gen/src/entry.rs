@@ -10,7 +10,8 @@
 //!   read-only argument array at binding `2 + 2k`; one invocation per state record copies the
 //!   record into a function-scope `var`, passes a pointer to it with the matching argument,
 //!   and writes it back (a `ptr<storage>` cannot be passed to a kernel function that takes
-//!   `ptr<function, T>`, so the copy is what makes `&mut State` work in place).
+//!   `ptr<function, T>`, so the copy is what makes `&mut State` work in place). With a guard,
+//!   a record whose guard is false is left alone before that copy.
 //! - a `ReadEntry` takes two slots, k and k + 1: its read-only state array at binding `1 + 2k`,
 //!   its read-only argument array at `2 + 2k` and its output array at `3 + 2k` (`4 + 2k` stays
 //!   unused), so the entries around it keep the two-binding layout.
@@ -125,9 +126,20 @@ pub(crate) fn lower_update_entry(prog: &Program, k: usize, entry: &UpdateEntry, 
         })?;
     }
     let func = wgsl_ident(&entry.function);
-    // The wrapper's locals must not hide the function it calls.
-    let local = if func == "state" { "state_1" } else { "state" };
-    let index = if func == "i" { "i_1" } else { "i" };
+    // The wrapper's locals must not hide the functions it calls.
+    let guard_fn = entry.guard.as_ref().map(|g| wgsl_ident(&g.function));
+    let calls = |n: &str| func == n || guard_fn.as_deref() == Some(n);
+    let local = if calls("state") { "state_1" } else { "state" };
+    let index = if calls("i") { "i_1" } else { "i" };
+    let guard = match &entry.guard {
+        None => String::new(),
+        Some(g) => {
+            check_guard(prog, &entry.state, g, &bad)?;
+            let field = wgsl_ident(&g.field);
+            let guard_fn = wgsl_ident(&g.function);
+            format!("if (!{guard_fn}({name}_state[{index}].{field})) {{ return; }}\n    ")
+        }
+    };
     let (bstate, barg) = (1 + 2 * k, 2 + 2 * k);
     let state_w = state.wgsl();
     let arg_w = arg.wgsl();
@@ -139,11 +151,36 @@ pub(crate) fn lower_update_entry(prog: &Program, k: usize, entry: &UpdateEntry, 
          fn {name}(@builtin(global_invocation_id) gid: vec3<u32>) {{\n    \
              let {index} = gid.x;\n    \
              if ({index} >= arrayLength(&{name}_state)) {{ return; }}\n    \
+             {guard}\
              var {local} = {name}_state[{index}];\n    \
              {func}(&{local}, {name}_arg[{index}]);\n    \
              {name}_state[{index}] = {local};\n\
          }}\n"
     ))
+}
+
+/// A guard's function is a kernel `fn(u32) -> bool` and its field a `u32` field of the state.
+fn check_guard(prog: &Program, state: &str, guard: &crate::Guard, bad: &impl Fn(String) -> Error) -> Result<()> {
+    let (field, function) = (&guard.field, &guard.function);
+    let is_u32_field = prog
+        .structs
+        .get(state)
+        .is_some_and(|s| s.fields.iter().any(|(name, ty)| name == field && *ty == Ty::U32));
+    if !is_u32_field {
+        return Err(bad(format!(
+            "the guard reads `{state}.{field}`, which is not a `u32` field of `{state}`"
+        )));
+    }
+    let right = prog
+        .fns
+        .get(function)
+        .is_some_and(|f| f.params.len() == 1 && f.params[0].ty == Ty::U32 && f.ret == Ty::Bool);
+    if !right {
+        return Err(bad(format!(
+            "the guard needs `fn {function}({field}: u32) -> bool` in the kernel sources"
+        )));
+    }
+    Ok(())
 }
 
 pub(crate) fn lower_read_entry(prog: &Program, k: usize, entry: &ReadEntry, fallback: Diag) -> Result<String> {

@@ -72,6 +72,18 @@ pub struct UpdateEntry {
     pub function: String,
     pub state: String,
     pub arg: String,
+    /// Where this is false the entry leaves the record alone without copying it in and out.
+    pub guard: Option<Guard>,
+}
+
+/// When an update entry has work: `function(state.field)`, a kernel `fn(u32) -> bool` of one
+/// `u32` field of the state, read straight from the storage buffer. The entry's function must
+/// leave the state unchanged wherever it is false (one pass of a step that runs as several,
+/// which most records skip).
+#[derive(Debug, Clone)]
+pub struct Guard {
+    pub field: String,
+    pub function: String,
 }
 
 /// An entry that reads a record with an argument: `fn function(state: State, arg: Arg) -> Out`.
@@ -110,12 +122,22 @@ impl From<UpdateEntry> for EntryPoint {
     }
 }
 
+/// An update entry as a plain table row: `(name, function, state, arg, guard)`, the guard as
+/// `(field, function)`.
+pub type UpdateTable = (
+    &'static str,
+    &'static str,
+    &'static str,
+    &'static str,
+    Option<(&'static str, &'static str)>,
+);
+
 /// The entry points of a module from plain tables, map entries first, then update entries, then
 /// read entries (the binding order): `(name, function, input, output)`, `(name, function, state,
-/// arg)` and `(name, function, state, arg, output)`.
+/// arg, guard)` with the guard as `(field, function)`, and `(name, function, state, arg, output)`.
 pub fn entry_points(
     map: &[(&str, &str, &str, &str)],
-    update: &[(&str, &str, &str, &str)],
+    update: &[UpdateTable],
     read: &[(&str, &str, &str, &str, &str)],
 ) -> Vec<EntryPoint> {
     let maps = map.iter().map(|(name, function, input, output)| {
@@ -126,12 +148,16 @@ pub fn entry_points(
             output: output.to_string(),
         })
     });
-    let updates = update.iter().map(|(name, function, state, arg)| {
+    let updates = update.iter().map(|(name, function, state, arg, guard)| {
         EntryPoint::Update(UpdateEntry {
             name: name.to_string(),
             function: function.to_string(),
             state: state.to_string(),
             arg: arg.to_string(),
+            guard: guard.map(|(field, function)| Guard {
+                field: field.to_string(),
+                function: function.to_string(),
+            }),
         })
     });
     let reads = read.iter().map(|(name, function, state, arg, output)| {

@@ -268,6 +268,7 @@ fn update_kernel_matches_native_on_gpu() {
             function: function.into(),
             state: "GameState".into(),
             arg: arg.into(),
+            guard: None,
         })
     };
     let wgsl = translate_entry_points(

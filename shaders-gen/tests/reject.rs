@@ -1,7 +1,7 @@
 //! Constructs outside the kernel subset are rejected at the right place, with a message
 //! that says what to write instead.
 
-use rinshan_shaders_gen::{translate, translate_entry_points, EntryPoint, Error, Source, UpdateEntry};
+use rinshan_shaders_gen::{translate, translate_entry_points, EntryPoint, Error, Guard, Source, UpdateEntry};
 
 fn reject(text: &str) -> Error {
     let src = Source {
@@ -231,16 +231,24 @@ fn syntax_errors_are_located() {
 }
 
 fn reject_update(text: &str, function: &str, state: &str, arg: &str) -> Error {
+    reject_update_entry(
+        text,
+        UpdateEntry {
+            name: "upd".into(),
+            function: function.into(),
+            state: state.into(),
+            arg: arg.into(),
+            guard: None,
+        },
+    )
+}
+
+fn reject_update_entry(text: &str, entry: UpdateEntry) -> Error {
     let src = Source {
         path: "kernels/k.rs".into(),
         text: text.into(),
     };
-    let entry = EntryPoint::Update(UpdateEntry {
-        name: "upd".into(),
-        function: function.into(),
-        state: state.into(),
-        arg: arg.into(),
-    });
+    let entry = EntryPoint::Update(entry);
     match translate_entry_points(&[src], &[entry]) {
         Ok(wgsl) => panic!("expected a rejection, got WGSL:\n{wgsl}"),
         Err(e) => e,
@@ -296,4 +304,34 @@ fn update_entry_unknown_function_and_name_clash() {
     let src = format!("{UPDATE_SRC}\nconst upd_state: u32 = 1;\n");
     let e = reject_update(&src, "ok", "S", "u32");
     assert!(e.message.contains("needs the name `upd_state`"), "{e}");
+}
+
+#[test]
+fn a_guard_must_read_a_u32_field_with_a_u32_predicate() {
+    let src = format!("{UPDATE_SRC}\npub fn is_one(x: u32) -> bool {{\n    x == 1u32\n}}\n\npub fn widen(x: u32) -> u32 {{\n    x\n}}\n");
+    let guarded = |field: &str, function: &str| UpdateEntry {
+        name: "upd".into(),
+        function: "ok".into(),
+        state: "S".into(),
+        arg: "u32".into(),
+        guard: Some(Guard {
+            field: field.into(),
+            function: function.into(),
+        }),
+    };
+    let e = reject_update_entry(&src, guarded("y", "is_one"));
+    assert_eq!((e.line, e.column), (22, 8), "{e}");
+    assert!(
+        e.message
+            .contains("the guard reads `S.y`, which is not a `u32` field of `S`"),
+        "{e}"
+    );
+    for function in ["widen", "missing"] {
+        let e = reject_update_entry(&src, guarded("x", function));
+        assert!(
+            e.message
+                .contains(&format!("the guard needs `fn {function}(x: u32) -> bool`")),
+            "{e}"
+        );
+    }
 }

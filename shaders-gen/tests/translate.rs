@@ -2,7 +2,7 @@
 //! same file compiles and runs as native Rust.
 
 use rinshan_shaders_gen::{
-    translate, translate_entry_points, validate_with_info, Entry, EntryPoint, ReadEntry, Source, UpdateEntry,
+    translate, translate_entry_points, validate_with_info, Entry, EntryPoint, Guard, ReadEntry, Source, UpdateEntry,
 };
 
 const FIXTURE: &str = include_str!("fixtures/sample_kernel.rs");
@@ -222,6 +222,7 @@ fn update_entry(name: &str, function: &str, arg: &str) -> EntryPoint {
         function: function.into(),
         state: "GameState".into(),
         arg: arg.into(),
+        guard: None,
     })
 }
 
@@ -319,6 +320,7 @@ fn mixed_entry_kinds_share_the_binding_sequence() {
                 function: "bump".into(),
                 state: "A".into(),
                 arg: "u32".into(),
+                guard: None,
             }),
         ],
     )
@@ -331,6 +333,33 @@ fn mixed_entry_kinds_share_the_binding_sequence() {
     ] {
         assert!(wgsl.contains(needle), "missing {needle}:\n{wgsl}");
     }
+    assert_spirv(&wgsl);
+}
+
+/// A guarded update entry tests its guard on the stored record before copying it, and the WGSL
+/// still validates; the guard's function keeps its name, and the wrapper's locals move aside.
+#[test]
+fn a_guarded_update_entry_skips_records_before_copying_them() {
+    let src = "#[derive(Clone, Copy)]\npub struct A {\n    x: u32,\n    task: u32,\n}\n\npub fn i(task: u32) -> bool {\n    task == 3u32\n}\n\npub fn bump(a: &mut A, by: u32) {\n    if a.task == 3u32 {\n        a.x += by;\n    }\n}\n";
+    let wgsl = translate_entry_points(
+        &[Source {
+            path: "k.rs".into(),
+            text: src.into(),
+        }],
+        &[EntryPoint::Update(UpdateEntry {
+            name: "upd".into(),
+            function: "bump".into(),
+            state: "A".into(),
+            arg: "u32".into(),
+            guard: Some(Guard {
+                field: "task".into(),
+                function: "i".into(),
+            }),
+        })],
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let wrapper = "    let i_1 = gid.x;\n    if (i_1 >= arrayLength(&upd_state)) { return; }\n    if (!i(upd_state[i_1].task)) { return; }\n    var state = upd_state[i_1];\n";
+    assert!(wgsl.contains(wrapper), "missing {wrapper}:\n{wgsl}");
     assert_spirv(&wgsl);
 }
 
@@ -355,6 +384,7 @@ fn a_read_entry_takes_two_slots_and_the_next_entry_follows_them() {
                 function: "bump".into(),
                 state: "A".into(),
                 arg: "u32".into(),
+                guard: None,
             }),
         ],
     )
@@ -406,6 +436,7 @@ fn update_wrapper_locals_do_not_hide_the_function() {
             function: function.into(),
             state: "S".into(),
             arg: "u32".into(),
+            guard: None,
         })
     };
     let wgsl = translate_entry_points(

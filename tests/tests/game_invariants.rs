@@ -223,3 +223,73 @@ fn auto_reset_starts_the_next_game_in_the_same_step() {
     }
     assert!(finished >= 10, "single-round games keep coming: {finished}");
 }
+
+/// A step is five passes (rules/kernel/game_step.rs), and the GPU skips a pass for the envs whose
+/// task its guard rules out, without running it. So a pass must leave a state whose guard is
+/// false exactly as it is, and the passes in order must be the step. Checked at every decision of
+/// single-round games with auto-reset, with an illegal action now and then (the paths that end a
+/// game and deal the next).
+#[test]
+fn a_step_pass_leaves_alone_the_states_its_guard_rules_out() {
+    use rinshan_engine::generated::red;
+    type Pass = (fn(u32) -> bool, fn(&mut GameState, u32));
+    let passes: [(&str, Pass); 3] = [
+        ("claims", (red::claims_pending, red::game_claims)),
+        ("flow", (red::flow_pending, red::game_flow)),
+        ("settle", (red::settle_pending, red::game_settle)),
+    ];
+    let mut rng = Rng::new(17);
+    let input = k::ResetInput {
+        seed: [5, 17],
+        mode: 0,
+        dealer: 4,
+        use_wall: 0,
+        wall: [0; 136],
+        uma: [0; 4],
+        penalty: -1.0,
+        auto_reset: 1,
+    };
+    let mut s = red::game_new(input);
+    let mut ran = [0u32; 3];
+    let mut skipped = [0u32; 3];
+    for step in 0..30_000 {
+        let a = if rng.below(300) == 0 {
+            red::NUM_ACTIONS + rng.below(8)
+        } else {
+            rng.pick_legal(&s.mask)
+        };
+        let mut whole = s;
+        red::game_step(&mut whole, a);
+        let mut p = s;
+        red::game_decide(&mut p, a);
+        for (i, (name, (pending, pass))) in passes.iter().enumerate() {
+            if pending(p.task) {
+                ran[i] += 1;
+            } else {
+                skipped[i] += 1;
+                let mut q = p;
+                pass(&mut q, 0);
+                assert!(
+                    bytemuck::bytes_of(&q) == bytemuck::bytes_of(&p),
+                    "step {step}: the {name} pass changed a state its guard rules out (task {})",
+                    p.task
+                );
+            }
+            pass(&mut p, 0);
+        }
+        red::game_mask(&mut p, 0);
+        assert!(
+            bytemuck::bytes_of(&p) == bytemuck::bytes_of(&whole),
+            "step {step}: the passes differ from game_step"
+        );
+        s = whole;
+    }
+    for (i, (name, _)) in passes.iter().enumerate() {
+        assert!(
+            ran[i] > 100 && skipped[i] > 100,
+            "{name}: ran {} and skipped {} times",
+            ran[i],
+            skipped[i]
+        );
+    }
+}

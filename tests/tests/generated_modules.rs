@@ -19,8 +19,8 @@ fn every_variant_module_validates_with_naga() {
         let entries: Vec<&str> = module.entry_points.iter().map(|e| e.name.as_str()).collect();
         let expected: Vec<&str> = rinshan_tests::entries::ENTRIES
             .iter()
-            .chain(rinshan_tests::entries::UPDATE_ENTRIES.iter())
             .map(|e| e.0)
+            .chain(rinshan_tests::entries::UPDATE_ENTRIES.iter().map(|e| e.0))
             .chain(rinshan_tests::entries::READ_ENTRIES.iter().map(|e| e.0))
             .collect();
         assert_eq!(entries, expected, "{v}");
@@ -90,8 +90,8 @@ fn every_variant_lays_out_the_shared_records_alike_and_at_the_rust_size() {
         .collect();
     let mut records: Vec<&str> = rinshan_tests::entries::ENTRIES
         .iter()
-        .chain(rinshan_tests::entries::UPDATE_ENTRIES.iter())
         .flat_map(|e| [e.2, e.3])
+        .chain(rinshan_tests::entries::UPDATE_ENTRIES.iter().flat_map(|e| [e.2, e.3]))
         .filter(|ty| !matches!(*ty, "u32" | "i32" | "f32"))
         .collect();
     records.sort_unstable();

@@ -10,19 +10,48 @@ pub const ENTRIES: [(&str, &str, &str, &str); 4] = [
 ];
 
 /// The in-place update entry points, after [`ENTRIES`] in binding order: (entry point, kernel
-/// function `fn(&mut State, Arg)`, state struct, argument type). The k-th entry point of the
-/// module (k counts [`ENTRIES`] first) binds its state (read-write) at 1+2k and its arguments at 2+2k.
+/// function `fn(&mut State, Arg)`, state struct, argument type, guard). The k-th entry point of the
+/// module (k counts [`ENTRIES`] first) binds its state (read-write) at 1+2k and its arguments at
+/// 2+2k. A guard `(field, function)` skips the records where `function(state.field)` is false
+/// without copying them (the entry's function would leave them as they are).
 /// A step is the first five, in this order (rules/kernel/game_step.rs): `game_decide` plays an
 /// action id or one of hero mode's decisions, and the others, whose argument is unused, play what
 /// follows it stage by stage.
-pub const UPDATE_ENTRIES: [(&str, &str, &str, &str); 6] = [
-    ("game_step_main", "game_decide", "GameState", "u32"),
-    ("game_claims_main", "game_claims", "GameState", "u32"),
-    ("game_flow_main", "game_flow", "GameState", "u32"),
-    ("game_settle_main", "game_settle", "GameState", "u32"),
-    ("game_mask_main", "game_mask", "GameState", "u32"),
-    ("game_deal_main", "game_deal", "GameState", "DealInput"),
+pub const UPDATE_ENTRIES: [UpdateTable; 6] = [
+    ("game_step_main", "game_decide", "GameState", "u32", None),
+    (
+        "game_claims_main",
+        "game_claims",
+        "GameState",
+        "u32",
+        Some(("task", "claims_pending")),
+    ),
+    (
+        "game_flow_main",
+        "game_flow",
+        "GameState",
+        "u32",
+        Some(("task", "flow_pending")),
+    ),
+    (
+        "game_settle_main",
+        "game_settle",
+        "GameState",
+        "u32",
+        Some(("task", "settle_pending")),
+    ),
+    ("game_mask_main", "game_mask", "GameState", "u32", None),
+    ("game_deal_main", "game_deal", "GameState", "DealInput", None),
 ];
+
+/// An update entry: (entry point, function, state, argument, guard as (field, function)).
+pub type UpdateTable = (
+    &'static str,
+    &'static str,
+    &'static str,
+    &'static str,
+    Option<(&'static str, &'static str)>,
+);
 
 /// The read entry points, after [`UPDATE_ENTRIES`] in binding order: (entry point, kernel function
 /// `fn(State, Arg) -> Out`, state struct, argument type, output struct). Each takes two binding

@@ -87,8 +87,8 @@ impl EntrySpec {
     fn index(name: &str) -> u32 {
         let slots = entries::ENTRIES
             .iter()
-            .chain(entries::UPDATE_ENTRIES.iter())
             .map(|e| (e.0, 1))
+            .chain(entries::UPDATE_ENTRIES.iter().map(|e| (e.0, 1)))
             .chain(entries::READ_ENTRIES.iter().map(|e| (e.0, 2)));
         let mut k = 0;
         for (n, size) in slots {
