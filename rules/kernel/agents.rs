@@ -384,7 +384,7 @@ pub fn agent_act(agent: u32, o: &mut ObsPlanes, mask: [u32; 3], seed: [u32; 2], 
 // then the built-in agents of bits 8.. (4 bits per seat, AGENT_CALLER = the caller's seat) play
 // until one of the caller's seats must decide or the game ends. The step's outputs add up every
 // decision played (rewards summed, events and winners merged). A host that drives the GPU makes
-// the same calls as this loop, one pass each (game_play_action, then game_advance's), so that no
+// the same calls as this loop, a pass of game_play_action then the step's passes, so that no
 // shader holds both the step and the agents.
 pub fn game_play(s: &mut GameState, arg: u32) {
     for i in 0u32..PLAY_LIMIT {

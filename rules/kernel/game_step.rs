@@ -27,9 +27,10 @@ fn begin_game(s: &mut GameState, dealer: u32, wall: [u32; 136]) {
 // stage: the decision, the claims on a discard, what follows them (the next draw, a replacement
 // tile, a tsumo, an abortive draw), the end of the round, then the new mask. A task only ever
 // leads to one numbered after it (TASK_*) or ends the step's play (TASK_DONE), so each runs at
-// most once, in that order, and the passes play a whole step in straight lines. The CPU calls them in a row (`game_step`); the GPU
-// dispatches each as a pipeline of its own: one shader holding the whole step took Mesa's
-// lavapipe 2.5 minutes to compile, its parts two thirds of that in all (docs/speed.md).
+// most once, in that order, and the passes play a whole step in straight lines. The CPU calls
+// them in a row (`game_step`); the GPU dispatches each as a pipeline of its own: one shader
+// holding the whole step took Mesa's lavapipe 2.5 minutes to compile, its parts 0.63x of that in
+// all (docs/speed.md).
 
 // Whether a pass has work: the GPU skips the envs whose task its guard (entries.rs) rules out,
 // without copying their state. Each pass leaves every other state as it is.
