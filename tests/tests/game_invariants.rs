@@ -191,12 +191,10 @@ fn game_state_fits_in_one_kib() {
     assert!(std::mem::size_of::<GameState>() <= 1024);
 }
 
-#[test]
-fn auto_reset_starts_the_next_game_in_the_same_step() {
-    use rinshan_engine::generated::red;
-    let mut rng = Rng::new(3);
-    let input = k::ResetInput {
-        seed: [9, 9],
+/// One-round games that follow each other (auto-reset) from `seed`.
+fn single_rounds_with_auto_reset(seed: [u32; 2]) -> k::ResetInput {
+    k::ResetInput {
+        seed,
         mode: 0,
         dealer: 4,
         use_wall: 0,
@@ -204,8 +202,14 @@ fn auto_reset_starts_the_next_game_in_the_same_step() {
         uma: [0; 4],
         penalty: -1.0,
         auto_reset: 1,
-    };
-    let mut s = red::game_new(input);
+    }
+}
+
+#[test]
+fn auto_reset_starts_the_next_game_in_the_same_step() {
+    use rinshan_engine::generated::red;
+    let mut rng = Rng::new(3);
+    let mut s = red::game_new(single_rounds_with_auto_reset([9, 9]));
     let mut finished = 0;
     for _ in 0..5_000 {
         let view = red::game_view(s);
@@ -239,17 +243,7 @@ fn a_step_pass_leaves_alone_the_states_its_guard_rules_out() {
         ("settle", (red::settle_pending, red::game_settle)),
     ];
     let mut rng = Rng::new(17);
-    let input = k::ResetInput {
-        seed: [5, 17],
-        mode: 0,
-        dealer: 4,
-        use_wall: 0,
-        wall: [0; 136],
-        uma: [0; 4],
-        penalty: -1.0,
-        auto_reset: 1,
-    };
-    let mut s = red::game_new(input);
+    let mut s = red::game_new(single_rounds_with_auto_reset([5, 17]));
     let mut ran = [0u32; 3];
     let mut skipped = [0u32; 3];
     for step in 0..30_000 {

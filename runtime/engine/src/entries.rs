@@ -17,7 +17,7 @@ pub const ENTRIES: [(&str, &str, &str, &str); 4] = [
 /// A step is the first five, in this order (rules/kernel/game_step.rs): `game_decide` plays an
 /// action id or one of hero mode's decisions, and the others, whose argument is unused, play what
 /// follows it stage by stage.
-pub const UPDATE_ENTRIES: [UpdateTable; 6] = [
+pub const UPDATE_ENTRIES: [(&str, &str, &str, &str, Guard); 6] = [
     ("game_step_main", "game_decide", "GameState", "u32", None),
     (
         "game_claims_main",
@@ -44,14 +44,8 @@ pub const UPDATE_ENTRIES: [UpdateTable; 6] = [
     ("game_deal_main", "game_deal", "GameState", "DealInput", None),
 ];
 
-/// An update entry: (entry point, function, state, argument, guard as (field, function)).
-pub type UpdateTable = (
-    &'static str,
-    &'static str,
-    &'static str,
-    &'static str,
-    Option<(&'static str, &'static str)>,
-);
+/// An update entry's guard: `(field, function)`, or none.
+pub type Guard = Option<(&'static str, &'static str)>;
 
 /// The read entry points, after [`UPDATE_ENTRIES`] in binding order: (entry point, kernel function
 /// `fn(State, Arg) -> Out`, state struct, argument type, output struct). Each takes two binding
