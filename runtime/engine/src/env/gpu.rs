@@ -2,11 +2,12 @@
 //! A reset uploads the `ResetInput`s and runs `game_new_main` into the state buffer; a step
 //! uploads B action ids, runs the step's five passes on the states in place (`game_step_main`,
 //! then `game_claims_main`, `game_flow_main`, `game_settle_main` and `game_mask_main`: the step in
-//! one shader took drivers minutes to compile), then `game_view_main`; only the `StepView`s come back. A forced deal (log replay) uploads `DealInput`s and runs
-//! `game_deal_main` on the states in place. Hero mode alternates `game_play_action_main` (the
-//! agents) and the step's passes until every env waits for the caller, as the CPU kernel's
-//! `game_play` loops: one shader holding the step and the agents took drivers minutes to compile,
-//! and NVIDIA's lost the device on it.
+//! one shader took drivers minutes to compile), then `game_view_main`; only the `StepView`s come
+//! back. A forced deal (log replay) uploads `DealInput`s and runs `game_deal_main` on the states
+//! in place. Hero mode alternates `game_play_action_main` (the agents) and the step's passes
+//! until every env waits for the caller, as the CPU kernel's `game_play` loops: one shader
+//! holding the step and the agents took drivers minutes to compile, and NVIDIA's lost the device
+//! on it.
 
 use crate::generated::kernel as k;
 use crate::gpu::{groups, EntrySpec, Gpu, GpuError};
@@ -98,7 +99,7 @@ pub(crate) struct GpuEnv {
     views_buffer: wgpu::Buffer,
     view_readback: wgpu::Buffer,
     wgsl: &'static str,
-    passes: [Option<Pass>; 8],
+    passes: [Option<Pass>; Stage::Deal as usize + 1],
     /// Hero mode's passes and buffers, made on its first step.
     play: Option<PlayPasses>,
     /// The words of the last upload that the host rewrites first (clamped action ids, hero mode's
