@@ -131,14 +131,13 @@ pub(crate) fn lower_update_entry(prog: &Program, k: usize, entry: &UpdateEntry, 
     let calls = |n: &str| func == n || guard_fn.as_deref() == Some(n);
     let local = if calls("state") { "state_1" } else { "state" };
     let index = if calls("i") { "i_1" } else { "i" };
-    let guard = match &entry.guard {
-        None => String::new(),
-        Some(g) => {
+    let guard = match (&entry.guard, &guard_fn) {
+        (Some(g), Some(guard_fn)) => {
             check_guard(prog, &entry.state, g, &bad)?;
             let field = wgsl_ident(&g.field);
-            let guard_fn = wgsl_ident(&g.function);
             format!("if (!{guard_fn}({name}_state[{index}].{field})) {{ return; }}\n    ")
         }
+        _ => String::new(),
     };
     let (bstate, barg) = (1 + 2 * k, 2 + 2 * k);
     let state_w = state.wgsl();

@@ -12,18 +12,22 @@ use crate::generated::kernel;
 /// Words after each env's state in [`Env::save_states`]: the check pair.
 pub const CHECK_WORDS: usize = 2;
 
-/// What the check pair starts from: the variant and the layout of its `GameState` (the struct's
-/// declaration in the variant's WGSL: its fields' names, types and order), so that the words of a
-/// build whose state is laid out otherwise fail the check instead of being read into the wrong
-/// fields.
-fn check_seed(variant: crate::Variant) -> u64 {
+/// Mixed with the variant into every check pair.
+const CHECK_SALT: u64 = 0x7269_6e73_6861_6e00;
+
+/// The fields of the variant's `GameState` as its WGSL declares them: names, types and order.
+fn state_layout(variant: crate::Variant) -> Option<&'static str> {
     let wgsl = with_variant!(variant, v => v::WGSL);
-    let layout = wgsl
-        .split_once("struct GameState {")
-        .and_then(|(_, rest)| rest.split_once("\n}"))
-        .map_or("", |(fields, _)| fields);
-    let mut h = mix64(0x7269_6e73_6861_6e00 ^ variant as u64);
-    for b in layout.bytes() {
+    let (_, rest) = wgsl.split_once("struct GameState {")?;
+    rest.split_once("\n}").map(|(fields, _)| fields)
+}
+
+/// What the check pair starts from: the variant and the layout of its `GameState`, so that the
+/// words of a build whose state is laid out otherwise fail the check instead of being read into
+/// the wrong fields.
+fn check_seed(variant: crate::Variant) -> u64 {
+    let mut h = mix64(CHECK_SALT ^ variant as u64);
+    for b in state_layout(variant).unwrap_or_default().bytes() {
         h = mix64(h ^ u64::from(b));
     }
     h
@@ -118,12 +122,7 @@ mod tests {
     #[test]
     fn states_saved_with_another_layout_are_refused() {
         for &variant in crate::Variant::ALL {
-            let wgsl = with_variant!(variant, v => v::WGSL);
-            let fields = wgsl
-                .split_once("struct GameState {")
-                .and_then(|(_, rest)| rest.split_once("\n}"))
-                .map(|(fields, _)| fields)
-                .expect("the GameState declaration");
+            let fields = state_layout(variant).expect("the GameState declaration");
             for field in ["seed:", "task:", "task_seat:", "log_len:"] {
                 assert!(fields.contains(field), "{variant}: {field} not in the layout");
             }
@@ -131,7 +130,7 @@ mod tests {
             env.reset().expect("reset");
             let mut saved = env.save_states().expect("save");
             env.load_states(&saved).expect("this build's states load");
-            let old_seed = mix64(0x7269_6e73_6861_6e00 ^ variant as u64);
+            let old_seed = mix64(CHECK_SALT ^ variant as u64);
             let n = env.saved_words();
             for one in saved.chunks_mut(n) {
                 let (s, c) = one.split_at_mut(n - CHECK_WORDS);
