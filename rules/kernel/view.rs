@@ -8,6 +8,7 @@
 // Field meanings, scales and dtypes are documented once, on the host (rinshan_engine::observe).
 
 // What the view needs about one observer, gathered once.
+#[derive(Clone, Copy)]
 struct Seen {
     seat: u32,
     hand: [u32; 34],
@@ -56,13 +57,17 @@ fn river_entry(s: &mut GameState, q: u32, i: u32) -> u32 {
 }
 
 fn gather(s: &mut GameState, seat: u32) -> Seen {
-    let hand: [u32; 34] = hand_counts(s, seat);
-    let mut seen: [u32; 34] = hand;
+    let t: TableTiles = table_tiles(s);
+    gather_with(s, seat, t)
+}
+
+// The tiles on the table: every river tile not called away (those are counted in the caller's
+// meld) and every meld's.
+fn table_tiles(s: &mut GameState) -> TableTiles {
+    let mut seen: [u32; 34] = [0u32; 34];
     let mut red_seen: u32 = 0u32;
-    let mut dora: [u32; 34] = [0u32; 34];
     for q in 0u32..4u32 {
         for i in 0u32..byte_of(s.river_lens, q) {
-            // Tiles called away are counted in the caller's meld.
             let e: u32 = river_entry(s, q, i);
             let v: u32 = e & 63u32;
             let kept: u32 = 1u32 - ((e >> 6u32) & 1u32);
@@ -79,6 +84,19 @@ fn gather(s: &mut GameState, seat: u32) -> Seen {
             }
         }
     }
+    TableTiles {
+        seen: seen,
+        red_seen: red_seen,
+    }
+}
+
+// The observer's facts, given the tiles on the table: the indicators and its own hand are added
+// here.
+fn gather_with(s: &mut GameState, seat: u32, table: TableTiles) -> Seen {
+    let hand: [u32; 34] = hand_counts(s, seat);
+    let mut seen: [u32; 34] = table.seen;
+    let mut red_seen: u32 = table.red_seen;
+    let mut dora: [u32; 34] = [0u32; 34];
     for i in 0u32..s.dora_revealed {
         let v: u32 = wall_tile(s, WALL_DORA + i);
         let t: u32 = value_type(v);
@@ -89,7 +107,7 @@ fn gather(s: &mut GameState, seat: u32) -> Seen {
         }
     }
     for t in 0u32..34u32 {
-        seen[t as usize] = seen[t as usize].min(4u32);
+        seen[t as usize] = (seen[t as usize] + hand[t as usize]).min(4u32);
     }
     Seen {
         seat: seat,
@@ -373,34 +391,68 @@ fn held_sets(hand: [u32; 34]) -> [u32; 8] {
     held
 }
 
+// The 32 bits of the action mask from bit `at` on. The sets below are read a word at a time: a
+// loop over the actions that sets one bit per action, at an index known only at run time, kept
+// the set in memory and stalled on it (a quarter of the planes' own rows).
+fn mask_word(m: [u32; 3], at: u32) -> u32 {
+    let w: u32 = at / 32u32;
+    let sh: u32 = at % 32u32;
+    if w >= 3u32 {
+        return 0u32;
+    }
+    let mut x: u32 = m[w as usize] >> sh;
+    if sh != 0u32 && w < 2u32 {
+        x |= m[(w + 1u32) as usize] << (32u32 - sh);
+    }
+    x
+}
+
 // The types the player to move may discard (a red and a black five are one type here).
 fn legal_discards(s: &mut GameState) -> [u32; 2] {
     let m: [u32; 3] = s.mask;
-    let mut legal: [u32; 2] = [0u32; 2];
-    for a in 0u32..ACTION_DISCARD_COUNT {
-        let t: u32 = value_type(a);
-        legal[(t / 32u32) as usize] |= (mask_has(m, ACTION_DISCARD + a) as u32) << (t % 32u32);
+    let mut lo: u32 = mask_word(m, ACTION_DISCARD);
+    let mut hi: u32 = mask_word(m, ACTION_DISCARD + 32u32) & 3u32;
+    // The red fives' ids, after the 34 types' (their types are 4, 13 and 22).
+    for a in 34u32..ACTION_DISCARD_COUNT {
+        lo |= (mask_has(m, ACTION_DISCARD + a) as u32) << value_type(a);
     }
     if mask_has(m, ACTION_TSUMOGIRI) {
-        set_add(&mut legal, value_type(s.drawn));
+        let t: u32 = value_type(s.drawn);
+        lo |= bit_lo(t);
+        hi |= bit_hi(t);
     }
-    legal
+    [lo, hi]
 }
 
 // The types of the closed or added kans the player to move may declare.
 fn legal_self_kans(s: &mut GameState) -> [u32; 2] {
     let m: [u32; 3] = s.mask;
-    let mut kans: [u32; 2] = [0u32; 2];
-    for t in 0u32..34u32 {
-        kans[(t / 32u32) as usize] |= (mask_has(m, ACTION_SELF_KAN + t) as u32) << (t % 32u32);
-    }
-    kans
+    [mask_word(m, ACTION_SELF_KAN), mask_word(m, ACTION_SELF_KAN + 32u32) & 3u32]
 }
 
 // Writes the planes into a zeroed record.
 fn write_planes(s: &mut GameState, arg: u32, o: &mut ObsPlanes) {
     let seat: u32 = observer(s, arg);
     let v: Seen = gather(s, seat);
+    write_own_planes(s, v, o);
+    view_seat_planes(s, seat, o);
+    o.scalars = view_scalars(s, v);
+}
+
+// The host's form of the planes for a game whose seat blocks and table tiles it keeps up to date
+// from the round's log (rinshan_engine::observe's `TableView`): every row but the seat blocks
+// (rows P_SEAT..P_DORA_INDICATORS, which the host writes; this leaves them as they are, and
+// expects the other rows zeroed), and the scalars.
+pub fn planes_but_seats_into(s: &mut GameState, arg: u32, table: TableTiles, o: &mut ObsPlanes) {
+    let seat: u32 = observer(s, arg);
+    let v: Seen = gather_with(s, seat, table);
+    write_own_planes(s, v, o);
+    o.scalars = view_scalars(s, v);
+}
+
+// Every planes row but the seat blocks, into zeroed rows.
+fn write_own_planes(s: &mut GameState, v: Seen, o: &mut ObsPlanes) {
+    let seat: u32 = v.seat;
     let held: [u32; 8] = held_sets(v.hand);
     for k in 0u32..4u32 {
         put_set(o, P_HAND + k, [held[(k * 2u32) as usize], held[(k * 2u32 + 1u32) as usize]]);
@@ -443,8 +495,6 @@ fn write_planes(s: &mut GameState, arg: u32, o: &mut ObsPlanes) {
         let at: u32 = P_DORA_INDICATORS * 34u32 + t;
         o.planes[(at / 4u32) as usize] += 1u32 << ((at % 4u32) * 8u32);
     }
-    view_seat_planes(s, seat, o);
-    o.scalars = view_scalars(s, v);
 }
 
 // Rows P_SEAT.. : each seat's river, melds and the tiles safe against it.
@@ -522,6 +572,20 @@ pub fn tokens_into(s: &mut GameState, arg: u32, o: &mut ObsTokens) {
 fn write_tokens(s: &mut GameState, arg: u32, o: &mut ObsTokens) {
     let seat: u32 = observer(s, arg);
     let v: Seen = gather(s, seat);
+    write_tokens_seen(s, v, o);
+}
+
+// The host's form of the tokens for a game whose table tiles it keeps up to date (as
+// `planes_but_seats_into`): the same record, without counting the table's tiles again.
+pub fn tokens_with_table_into(s: &mut GameState, arg: u32, table: TableTiles, o: &mut ObsTokens) {
+    o.words = [0u32; 254];
+    let seat: u32 = observer(s, arg);
+    let v: Seen = gather_with(s, seat, table);
+    write_tokens_seen(s, v, o);
+}
+
+fn write_tokens_seen(s: &mut GameState, v: Seen, o: &mut ObsTokens) {
+    let seat: u32 = v.seat;
     for t in 0u32..34u32 {
         put_tok(o, T_HAND + t, v.hand[t as usize]);
         put_tok(o, T_SEEN + t, v.seen[t as usize]);

@@ -85,6 +85,14 @@ pub const RIICHI_DECLARED: u32 = 1;
 pub const RIICHI_ACCEPTED: u32 = 2;
 pub const RIICHI_DOUBLE: u32 = 3;
 
+// The tiles every seat sees on the table, by type: river tiles not called away and the melds'
+// tiles; and the suits (a bit each) with a red five among them.
+#[derive(Clone, Copy)]
+pub struct TableTiles {
+    pub seen: [u32; 34],
+    pub red_seen: u32,
+}
+
 #[derive(Clone, Copy)]
 #[repr(C)]
 pub struct ObsPlanes {

@@ -53,6 +53,24 @@ pub fn packed_into(s: &mut GameState, arg: u32, o: &mut ObsPacked) {
 fn write_packed(s: &mut GameState, arg: u32, o: &mut ObsPacked) {
     let seat: u32 = observer(s, arg);
     let v: Seen = gather(s, seat);
+    write_own_packed(s, v, o);
+    packed_seat_rows(s, seat, o);
+    o.scalars = view_scalars(s, v);
+}
+
+// The host's form for a game whose seat rows it keeps up to date, as `planes_but_seats_into`:
+// every row but the seat blocks' (which the host writes first, into a zeroed record), and the
+// scalars.
+pub fn packed_but_seats_into(s: &mut GameState, arg: u32, table: TableTiles, o: &mut ObsPacked) {
+    let seat: u32 = observer(s, arg);
+    let v: Seen = gather_with(s, seat, table);
+    write_own_packed(s, v, o);
+    o.scalars = view_scalars(s, v);
+}
+
+// Every row but the seat blocks', into zeroed rows.
+fn write_own_packed(s: &mut GameState, v: Seen, o: &mut ObsPacked) {
+    let seat: u32 = v.seat;
     let held: [u32; 8] = held_sets(v.hand);
     for k in 0u32..4u32 {
         put_bits(o, P_HAND + k, [held[(k * 2u32) as usize], held[(k * 2u32 + 1u32) as usize]]);
@@ -101,8 +119,6 @@ fn write_packed(s: &mut GameState, arg: u32, o: &mut ObsPacked) {
     for i in 0u32..s.dora_revealed {
         add_count(o, indicators, value_type(wall_tile(s, WALL_DORA + i)), 1u32);
     }
-    packed_seat_rows(s, seat, o);
-    o.scalars = view_scalars(s, v);
 }
 
 // Rows P_SEAT.. : each seat's river, melds and the tiles safe against it.

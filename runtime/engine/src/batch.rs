@@ -3,6 +3,7 @@
 use rayon::prelude::*;
 
 use crate::generated::kernel;
+use crate::observe::TableView;
 
 /// `out[i] = f(states[i], args[i])` over the batch, in parallel unless `serial`.
 pub(crate) fn each<T: bytemuck::Pod + Send>(
@@ -15,17 +16,32 @@ pub(crate) fn each<T: bytemuck::Pod + Send>(
     rows(out, sts, args, serial, |o: &mut T, s, a| *o = f(*s, a));
 }
 
-/// As [`each`], for a kernel function that writes its record in place: `f(&mut state, arg,
-/// &mut out[i])` on a copy of each state (the kernel takes states as `&mut`), so the record is
-/// not built elsewhere and copied.
-pub(crate) fn each_into<T: bytemuck::Pod + Send>(
+/// `f(&mut state, arg, view, &mut out[i])` over the batch, in parallel unless `serial`, for a
+/// writer that fills its record in place and reads each state's [`TableView`], brought up to that
+/// state's log first. The kernel takes states as `&mut`: it gets a copy of each.
+pub(crate) fn each_followed<T: bytemuck::Pod + Send>(
     out: &mut [u32],
     sts: &[kernel::GameState],
     args: &[u32],
+    tables: &mut [TableView],
     serial: bool,
-    f: fn(&mut kernel::GameState, u32, &mut T),
+    f: impl Fn(&mut kernel::GameState, u32, &TableView, &mut T) + Sync + Send,
 ) {
-    rows(out, sts, args, serial, |o: &mut T, s, a| f(&mut { *s }, a, o));
+    let outs: &mut [T] = bytemuck::cast_slice_mut(out);
+    let one = |(((o, s), a), t): (((&mut T, &kernel::GameState), &u32), &mut TableView)| {
+        t.follow(s);
+        f(&mut { *s }, *a, t, o);
+    };
+    if serial {
+        outs.iter_mut().zip(sts).zip(args).zip(tables.iter_mut()).for_each(one);
+    } else {
+        outs.par_iter_mut()
+            .zip(sts.par_iter())
+            .zip(args.par_iter())
+            .zip(tables.par_iter_mut())
+            .with_min_len(8)
+            .for_each(one);
+    }
 }
 
 /// `one(record i, state i, arg i)` over the batch, in parallel unless `serial`.

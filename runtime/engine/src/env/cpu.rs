@@ -3,12 +3,15 @@
 use rayon::prelude::*;
 
 use crate::generated::kernel;
+use crate::observe::{observe_cpu, Form, TableView};
 use crate::Variant;
 
 /// The CPU backend: every env's `GameState` as raw kernel words, stepped with rayon.
 pub(super) struct CpuEnv {
     pub(super) states: Vec<u32>,
     pub(super) views: Vec<u32>,
+    /// What each game's table shows, for the planes (made on their first use).
+    pub(super) tables: Vec<TableView>,
     pub(super) pool: Option<rayon::ThreadPool>,
     pub(super) serial: bool,
 }
@@ -25,6 +28,13 @@ impl CpuEnv {
             Some(pool) if !self.serial => pool.install(job),
             _ => job(),
         }
+    }
+
+    /// Writes `form` observations of every game for the seats in `args` into `out`.
+    pub(super) fn observe(&mut self, variant: Variant, form: Form, args: &[u32], out: &mut [u32]) {
+        let mut tables = std::mem::take(&mut self.tables);
+        self.install(|| observe_cpu(variant, form, &self.states, args, out, &mut tables, self.serial));
+        self.tables = tables;
     }
 
     pub(super) fn reset(&mut self, variant: Variant, inputs: &[u32]) {

@@ -162,6 +162,7 @@ impl Env {
                 Backing::Cpu(CpuEnv {
                     states: vec![0; b * words.1],
                     views: vec![0; b * words.2],
+                    tables: Vec::new(),
                     pool,
                     serial: config.threads == Some(1) || b < PARALLEL_MIN,
                 })

@@ -5,7 +5,7 @@ use super::config::EnvError;
 use super::games::{Backing, Env};
 use crate::batch::each;
 use crate::generated::kernel;
-use crate::observe::{observe_cpu, Form};
+use crate::observe::Form;
 
 /// Whose observation to write, per env.
 #[derive(Debug, Clone, Copy)]
@@ -53,10 +53,10 @@ impl Env {
         match &mut self.backing {
             Backing::Cpu(cpu) => match bytemuck::try_cast_slice_mut::<u8, u32>(out) {
                 // A word-aligned buffer (numpy's are) is written in place.
-                Ok(words) => cpu.install(|| observe_cpu(variant, form, &cpu.states, &args, words, cpu.serial)),
+                Ok(words) => cpu.observe(variant, form, &args, words),
                 Err(_) => {
                     let mut words = vec![0u32; self.config.batch * form.words()];
-                    cpu.install(|| observe_cpu(variant, form, &cpu.states, &args, &mut words, cpu.serial));
+                    cpu.observe(variant, form, &args, &mut words);
                     out.copy_from_slice(bytemuck::cast_slice(&words));
                 }
             },
@@ -109,10 +109,7 @@ impl Env {
         let args = vec![kernel::OBSERVE_CURRENT; self.batch()];
         for (i, &form) in self.config.observe.iter().enumerate() {
             match &mut self.backing {
-                Backing::Cpu(cpu) => {
-                    let out = &mut self.observations[i];
-                    cpu.install(|| observe_cpu(variant, form, &cpu.states, &args, out, cpu.serial));
-                }
+                Backing::Cpu(cpu) => cpu.observe(variant, form, &args, &mut self.observations[i]),
                 Backing::Gpu(gpu) => {
                     let words = gpu.observe(form, &args)?;
                     self.observations[i].copy_from_slice(words);

@@ -1,7 +1,8 @@
 //! The observation forms, and writing them on the CPU.
 
 use super::fields::{Field, ANALYSIS_FIELDS, ORACLE_FIELDS, PACKED_FIELDS, PLANES_FIELDS, TOKENS_FIELDS};
-use crate::batch::{each, each_into};
+use super::table_view::TableView;
+use crate::batch::{each, each_followed};
 use crate::generated::kernel as k;
 use crate::names::UnknownName;
 
@@ -96,24 +97,61 @@ impl std::str::FromStr for Form {
 /// [`crate::env::Env::observe`].
 pub fn record(variant: crate::Variant, form: Form, state: &k::GameState, seat: u32) -> Vec<u8> {
     let mut words = vec![0u32; form.words()];
-    observe_cpu(variant, form, bytemuck::bytes_of(state), &[seat], &mut words, true);
+    observe_cpu(
+        variant,
+        form,
+        bytemuck::bytes_of(state),
+        &[seat],
+        &mut words,
+        &mut Vec::new(),
+        true,
+    );
     bytemuck::cast_slice(&words).to_vec()
 }
 
+/// The seat `arg` names (the kernel's `observer`).
+fn observer_of(s: &k::GameState, arg: u32) -> u32 {
+    if arg >= k::OBSERVE_CURRENT {
+        s.current
+    } else {
+        arg
+    }
+}
+
 /// Writes `form` observations of `states` (GameState words) for the seats in `args` into `out`.
+/// `tables` holds a [`TableView`] per state, made here on first use, that the planes follow from
+/// one call to the next.
 pub(crate) fn observe_cpu<S: bytemuck::Pod>(
     variant: crate::Variant,
     form: Form,
     states: &[S],
     args: &[u32],
     out: &mut [u32],
+    tables: &mut Vec<TableView>,
     serial: bool,
 ) {
     let sts: &[k::GameState] = bytemuck::cast_slice(states);
     with_variant!(variant, v => match form {
-        Form::Planes => each_into(out, sts, args, serial, v::planes_into),
-        Form::Tokens => each_into(out, sts, args, serial, v::tokens_into),
-        Form::Packed => each_into(out, sts, args, serial, v::packed_into),
+        Form::Planes => {
+            tables.resize_with(sts.len(), TableView::default);
+            each_followed(out, sts, args, tables, serial, |s, arg, table, o: &mut k::ObsPlanes| {
+                table.write_seats(observer_of(s, arg), o);
+                v::planes_but_seats_into(s, arg, table.tiles(), o);
+            })
+        }
+        Form::Tokens => {
+            tables.resize_with(sts.len(), TableView::default);
+            each_followed(out, sts, args, tables, serial, |s, arg, table, o: &mut k::ObsTokens| {
+                v::tokens_with_table_into(s, arg, table.tiles(), o)
+            })
+        }
+        Form::Packed => {
+            tables.resize_with(sts.len(), TableView::default);
+            each_followed(out, sts, args, tables, serial, |s, arg, table, o: &mut k::ObsPacked| {
+                table.write_packed_seats(observer_of(s, arg), o);
+                v::packed_but_seats_into(s, arg, table.tiles(), o);
+            })
+        }
         Form::Analysis => each(out, sts, args, serial, v::observe_analysis),
         Form::Oracle => each(out, sts, args, serial, v::observe_oracle),
     })

@@ -11,6 +11,7 @@ mod fields;
 mod form;
 mod hidden;
 mod packed;
+mod table_view;
 mod text;
 
 pub use fields::{
@@ -21,4 +22,5 @@ pub(crate) use form::observe_cpu;
 pub use form::{record, Form};
 pub use hidden::{resample_hidden, OwnDraws};
 pub use packed::{packed_row, unpack_planes, PackedRow};
+pub(crate) use table_view::TableView;
 pub use text::{describe, field_values, fields_markdown};

@@ -1,0 +1,476 @@
+//! The planes' seat blocks (each seat's river, melds, and the tiles safe against it) and the tiles
+//! on the table, kept up to date from the round's log. An env keeps one [`TableView`] per game:
+//! each observation reads only the log entries logged since the last one, then the planes and the
+//! packed planes copy the four blocks and all three of planes, packed planes and tokens take the
+//! table's tile counts from it. Without it every observation rescanned the whole round
+//! (`view_seat_planes`, `log_sets` and `table_tiles` of `rules/kernel/view.rs`, which the GPU
+//! still runs, and which the tests below hold this to).
+//!
+//! A view is a function of the log entries it has read and nothing else. Before reading on, it
+//! checks that the state's log still begins with those entries (a new round, a new game, a
+//! loaded snapshot or a forced deal all change them) and starts over where it does not, so no
+//! caller has to tell it when a game changed.
+
+use crate::generated::kernel as k;
+
+// The planes are written as bytes into the kernel's `u32` words: cell `i` is byte `i % 4` of word
+// `i / 4` counting from the least significant, which is its address only on little-endian hosts.
+const _: () = assert!(
+    cfg!(target_endian = "little"),
+    "the planes' byte layout assumes a little-endian host"
+);
+
+const TYPES: usize = 34;
+/// Bytes of one seat block (rows `P_SEAT_*` of one seat).
+const BLOCK: usize = k::P_SEAT_ROWS as usize * TYPES;
+/// Discards a river holds (`GameState.rivers`: 24 per seat); later ones are not in it.
+const RIVER: usize = 24;
+/// Log words (two entries each).
+const LOG_WORDS: usize = 60;
+/// The words of the planes before the first seat block and from the dora indicators on: 34-cell
+/// rows start on word boundaries every two rows, so the blocks fill whole words.
+const SEATS_FROM: usize = k::P_SEAT as usize * TYPES / 4;
+const SEATS_TO: usize = k::P_DORA_INDICATORS as usize * TYPES / 4;
+
+/// A seat block's rows of counts and turn numbers (bytes in the packed form too).
+const COUNT_ROWS: [u32; 6] = [
+    k::P_SEAT_DISCARDED,
+    k::P_SEAT_TEDASHI,
+    k::P_SEAT_FIRST_TURN,
+    k::P_SEAT_LAST_TURN,
+    k::P_SEAT_MELD_TILES,
+    k::P_SEAT_CALLED_AWAY,
+];
+
+const fn row(r: u32) -> usize {
+    r as usize * TYPES
+}
+
+/// Each byte of `b` as a byte 0 or 1: the cells of eight tile types of a yes/no row.
+const SPREAD: [u64; 256] = {
+    let mut t = [0u64; 256];
+    let mut b = 0;
+    while b < 256 {
+        let mut i = 0;
+        while i < 8 {
+            t[b] |= (((b >> i) & 1) as u64) << (8 * i);
+            i += 1;
+        }
+        b += 1;
+    }
+    t
+};
+
+/// Writes a 34-bit set as a yes/no row of 34 cells.
+fn put_set(cells: &mut [u8], set: u64) {
+    for (i, chunk) in cells[..32].chunks_exact_mut(8).enumerate() {
+        chunk.copy_from_slice(&SPREAD[((set >> (8 * i)) & 255) as usize].to_le_bytes());
+    }
+    cells[32] = ((set >> 32) & 1) as u8;
+    cells[33] = ((set >> 33) & 1) as u8;
+}
+
+/// What the table shows, as of the first `read` entries of a round's log.
+#[derive(Clone)]
+pub(crate) struct TableView {
+    /// The log's words as last read: the first `read` entries are what this view is made of.
+    log: [u32; LOG_WORDS],
+    read: u32,
+    /// Each seat's block of planes rows, by absolute seat.
+    blocks: [[u8; BLOCK]; 4],
+    /// Each river as the state holds it (tile values), the entries called away (a bit each), and
+    /// its length.
+    rivers: [[u8; RIVER]; 4],
+    called: [u32; 4],
+    river_lens: [u8; 4],
+    /// The seat of the last discard (a call takes it).
+    last_discarder: u8,
+    /// Tile sets (bit t = type t): each seat's own discards, what was discarded since its last
+    /// discard, and since its riichi declaration (seats in `riichi`).
+    own: [u64; 4],
+    since: [u64; 4],
+    after_riichi: [u64; 4],
+    riichi: u8,
+    /// Each seat's yes/no rows but the safe tiles, as sets (the packed form's bits).
+    riichi_tiles: [u64; 4],
+    called_in: [u64; 4],
+    closed_kans: [u64; 4],
+    /// Counts by type of the river tiles not called away and of the melds' tiles.
+    seen: [u32; TYPES],
+    /// Red fives by suit: in rivers and not called away (a count), and in any meld (a bit).
+    red_in_rivers: [u8; 3],
+    red_in_melds: u32,
+}
+
+impl Default for TableView {
+    fn default() -> TableView {
+        TableView {
+            log: [0; LOG_WORDS],
+            read: 0,
+            blocks: [[0; BLOCK]; 4],
+            rivers: [[0; RIVER]; 4],
+            called: [0; 4],
+            river_lens: [0; 4],
+            last_discarder: 0,
+            own: [0; 4],
+            since: [0; 4],
+            after_riichi: [0; 4],
+            riichi: 0,
+            riichi_tiles: [0; 4],
+            called_in: [0; 4],
+            closed_kans: [0; 4],
+            seen: [0; TYPES],
+            red_in_rivers: [0; 3],
+            red_in_melds: 0,
+        }
+    }
+}
+
+fn entry_of(log: &[u32; LOG_WORDS], i: u32) -> u32 {
+    (log[(i / 2) as usize] >> ((i % 2) * 16)) & 0xffff
+}
+
+impl TableView {
+    /// Brings the view up to `s`'s log: reads the entries logged since the last call, or every
+    /// entry where `s` is not the round this view has read.
+    pub(crate) fn follow(&mut self, s: &k::GameState) {
+        let n = (s.log_len & 255).min(k::LOG_CAPACITY);
+        // The log's words this view holds from here on (a word half read is read again).
+        let mut from = (self.read / 2) as usize;
+        if n < self.read || self.log[..from] != s.log[..from] || !self.continued_by(s, from) {
+            if n < self.read || !self.continued_by(s, 0) {
+                *self = TableView::default();
+            }
+            from = 0;
+        }
+        for i in self.read..n {
+            self.read_entry(entry_of(&s.log, i));
+        }
+        let to = n.div_ceil(2) as usize;
+        self.log[from..to].copy_from_slice(&s.log[from..to]);
+        self.read = n;
+    }
+
+    /// Whether `s`'s log, from word `from` on, continues the entries this view has read. The one
+    /// change the game makes to an entry once logged, marking the last discard as called, is
+    /// allowed: that discard's call is then among the entries still to read.
+    fn continued_by(&self, s: &k::GameState, from: usize) -> bool {
+        let whole = (self.read / 2) as usize;
+        let called = k::LOG_CALLED << 12;
+        for w in from..whole + (self.read % 2) as usize {
+            let mut diff = self.log[w] ^ s.log[w];
+            if w == whole {
+                diff &= 0xffff;
+            }
+            for half in 0..2 {
+                let d = (diff >> (16 * half)) & 0xffff;
+                if d == 0 {
+                    continue;
+                }
+                let e = (self.log[w] >> (16 * half)) & 0xffff;
+                if d != called || k::log_kind(e) != k::EV_DISCARD {
+                    return false;
+                }
+            }
+        }
+        true
+    }
+
+    fn read_entry(&mut self, e: u32) {
+        let a = k::log_actor(e) as usize;
+        let v = k::log_tile(e);
+        let f = k::log_flags(e);
+        let kind = k::log_kind(e);
+        // Only the entries the view reads carry tiles; a game never logs a value past the red
+        // fives, and a state that does (none loads: saved states are checked) is left unread.
+        if v > 36 && kind != k::EV_RIICHI {
+            return;
+        }
+        match kind {
+            k::EV_DISCARD => self.discard(a, v, f),
+            kind @ (k::EV_CHI | k::EV_PON | k::EV_OPEN_KAN) => self.call(a, kind, v, f),
+            k::EV_CLOSED_KAN => {
+                let t = k::value_type(v) as usize;
+                self.meld_tiles(a, t, 4);
+                self.blocks[a][row(k::P_SEAT_CLOSED_KAN) + t] = 1;
+                self.closed_kans[a] |= 1 << t;
+                self.red_meld(t, (f & k::LOG_WITH_RED) != 0);
+            }
+            k::EV_ADDED_KAN => {
+                let t = k::value_type(v) as usize;
+                self.meld_tiles(a, t, 1);
+                self.red_meld(t, v >= 34);
+            }
+            k::EV_RIICHI => {
+                self.riichi |= 1 << a;
+                self.after_riichi[a] = 0;
+            }
+            _ => {}
+        }
+    }
+
+    fn discard(&mut self, a: usize, v: u32, f: u32) {
+        let t = k::value_type(v) as usize;
+        let bit = 1u64 << t;
+        for q in 0..4 {
+            self.since[q] |= bit;
+            if (self.riichi >> q) & 1 != 0 {
+                self.after_riichi[q] |= bit;
+            }
+        }
+        self.since[a] = 0;
+        self.own[a] |= bit;
+        self.last_discarder = a as u8;
+        let b = &mut self.blocks[a];
+        if (f & k::LOG_RIICHI_TILE) != 0 {
+            b[row(k::P_SEAT_RIICHI_TILE) + t] = 1;
+            self.riichi_tiles[a] |= bit;
+        }
+        let i = self.river_lens[a] as usize;
+        if i < RIVER {
+            let turn = i as u8 + 1;
+            b[row(k::P_SEAT_DISCARDED) + t] += 1;
+            b[row(k::P_SEAT_TEDASHI) + t] += u8::from((f & k::LOG_TSUMOGIRI) == 0);
+            if b[row(k::P_SEAT_FIRST_TURN) + t] == 0 {
+                b[row(k::P_SEAT_FIRST_TURN) + t] = turn;
+            }
+            b[row(k::P_SEAT_LAST_TURN) + t] = turn;
+            if i > 0 {
+                let before = k::value_type(u32::from(self.rivers[a][i - 1])) as usize;
+                b[row(k::P_SEAT_LAST_DISCARD) + before] = 0;
+            }
+            b[row(k::P_SEAT_LAST_DISCARD) + t] = 1;
+            self.rivers[a][i] = v as u8;
+            self.river_lens[a] += 1;
+            self.seen[t] += 1;
+            if v >= 34 {
+                self.red_in_rivers[(v - 34) as usize] += 1;
+            }
+        }
+        for q in 0..4 {
+            let safe = self.safe(q);
+            put_set(&mut self.blocks[q][row(k::P_SEAT_SAFE)..row(k::P_SEAT_SAFE + 1)], safe);
+        }
+    }
+
+    fn call(&mut self, a: usize, kind: u32, v: u32, f: u32) {
+        // As the game marks it: the last entry of the discarder's river is called away.
+        let from = self.last_discarder as usize;
+        let len = self.river_lens[from] as usize;
+        if len > 0 && (self.called[from] >> (len - 1)) & 1 == 0 {
+            self.called[from] |= 1 << (len - 1);
+            let w = u32::from(self.rivers[from][len - 1]);
+            let u = k::value_type(w) as usize;
+            let away = &mut self.blocks[from][row(k::P_SEAT_CALLED_AWAY) + u];
+            *away = away.wrapping_add(1);
+            self.seen[u] = self.seen[u].wrapping_sub(1);
+            if w >= 34 {
+                self.red_in_rivers[(w - 34) as usize] -= 1;
+            }
+        }
+        let t = k::value_type(v) as usize;
+        self.blocks[a][row(k::P_SEAT_CALLED_IN) + t] = 1;
+        self.called_in[a] |= 1 << t;
+        match kind {
+            k::EV_CHI => {
+                let low = t.saturating_sub((f & 3) as usize).min(TYPES - 3);
+                for u in low..low + 3 {
+                    self.meld_tiles(a, u, 1);
+                }
+            }
+            k::EV_PON => self.meld_tiles(a, t, 3),
+            _ => self.meld_tiles(a, t, 4),
+        }
+        self.red_meld(t, v >= 34 || (f & k::LOG_WITH_RED) != 0);
+    }
+
+    fn meld_tiles(&mut self, a: usize, t: usize, n: u8) {
+        let cell = &mut self.blocks[a][row(k::P_SEAT_MELD_TILES) + t];
+        *cell = cell.wrapping_add(n);
+        self.seen[t] = self.seen[t].wrapping_add(u32::from(n));
+    }
+
+    fn red_meld(&mut self, t: usize, red: bool) {
+        self.red_in_melds |= u32::from(red) << (t / 9);
+    }
+
+    /// The tiles safe against seat `q` (genbutsu, as the kernel's `log_sets` reads them).
+    fn safe(&self, q: usize) -> u64 {
+        self.own[q] | self.since[q] | self.after_riichi[q]
+    }
+
+    /// The tiles on the table, as the kernel's `table_tiles` counts them.
+    pub(crate) fn tiles(&self) -> k::TableTiles {
+        let mut red_seen = self.red_in_melds;
+        for (suit, &n) in self.red_in_rivers.iter().enumerate() {
+            red_seen |= u32::from(n > 0) << suit;
+        }
+        k::TableTiles {
+            seen: self.seen,
+            red_seen,
+        }
+    }
+
+    /// Writes the four seat blocks of `observer`'s planes (ego seat j is absolute seat
+    /// `observer + j`) and zeroes the planes' other rows.
+    pub(crate) fn write_seats(&self, observer: u32, o: &mut k::ObsPlanes) {
+        o.planes[..SEATS_FROM].fill(0);
+        o.planes[SEATS_TO..].fill(0);
+        let cells: &mut [u8] = bytemuck::cast_slice_mut(&mut o.planes[SEATS_FROM..SEATS_TO]);
+        for (j, block) in cells.chunks_exact_mut(BLOCK).enumerate() {
+            block.copy_from_slice(&self.blocks[(observer as usize + j) % 4]);
+        }
+    }
+
+    /// Writes the seat blocks' rows of `observer`'s packed planes into a record it zeroes first.
+    pub(crate) fn write_packed_seats(&self, observer: u32, o: &mut k::ObsPacked) {
+        o.bits.fill(0);
+        o.counts.fill(0);
+        let counts: &mut [u8] = bytemuck::cast_slice_mut(&mut o.counts);
+        for j in 0..4u32 {
+            let q = (observer + j) as usize % 4;
+            let block = &self.blocks[q];
+            for r in COUNT_ROWS {
+                let at = k::packed_seat_index(j, r) as usize * TYPES;
+                counts[at..at + TYPES].copy_from_slice(&block[row(r)..row(r + 1)]);
+            }
+            let len = self.river_lens[q] as usize;
+            let last = match len {
+                0 => 0,
+                _ => 1u64 << k::value_type(u32::from(self.rivers[q][len - 1])),
+            };
+            let sets = [
+                (k::P_SEAT_RIICHI_TILE, self.riichi_tiles[q]),
+                (k::P_SEAT_SAFE, self.safe(q)),
+                (k::P_SEAT_CALLED_IN, self.called_in[q]),
+                (k::P_SEAT_CLOSED_KAN, self.closed_kans[q]),
+                (k::P_SEAT_LAST_DISCARD, last),
+            ];
+            for (r, set) in sets {
+                let i = k::packed_seat_index(j, r) as usize * 2;
+                o.bits[i] = set as u32;
+                o.bits[i + 1] = (set >> 32) as u32;
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::env::{Config, Env, Observer};
+    use crate::observe::Form;
+    use crate::random::Rng;
+
+    /// The kernel's record of `state` seen by `arg`, rescanning the round: the oracle.
+    fn kernel_record(variant: crate::Variant, form: Form, state: &k::GameState, arg: u32) -> Vec<u8> {
+        let mut s = *state;
+        with_variant!(variant, v => match form {
+            Form::Planes => {
+                let mut o: k::ObsPlanes = bytemuck::Zeroable::zeroed();
+                v::planes_into(&mut s, arg, &mut o);
+                bytemuck::bytes_of(&o).to_vec()
+            }
+            Form::Packed => {
+                let mut o: k::ObsPacked = bytemuck::Zeroable::zeroed();
+                v::packed_into(&mut s, arg, &mut o);
+                bytemuck::bytes_of(&o).to_vec()
+            }
+            _ => {
+                let mut o: k::ObsTokens = bytemuck::Zeroable::zeroed();
+                v::tokens_into(&mut s, arg, &mut o);
+                bytemuck::bytes_of(&o).to_vec()
+            }
+        })
+    }
+
+    fn first_difference(form: Form, a: &[u8], b: &[u8]) -> String {
+        match a.iter().zip(b).position(|(x, y)| x != y) {
+            Some(i) => {
+                let field = form
+                    .fields()
+                    .iter()
+                    .rev()
+                    .find(|f| f.offset <= i)
+                    .map_or("?", |f| f.name);
+                format!("byte {i} (field {field}): {} against {}", a[i], b[i])
+            }
+            None => "none".into(),
+        }
+    }
+
+    /// The forms written from a view.
+    const FORMS: [Form; 3] = [Form::Planes, Form::Packed, Form::Tokens];
+
+    /// Random games of every variant, observed in the planes, the packed planes or the tokens (one
+    /// view serves all three) by random seats after a random share of the steps, so that a view skips steps,
+    /// rounds and whole games between two reads, and once after the states were put back to an
+    /// earlier save: every record equals the kernel's.
+    #[test]
+    fn kept_views_write_the_kernels_records() {
+        const BATCH: usize = 48;
+        for &variant in crate::Variant::ALL {
+            let mut config = Config::new(variant, BATCH);
+            config.auto_reset = true;
+            config.threads = Some(1);
+            let mut env = Env::new(config).expect("env");
+            env.reset().expect("reset");
+            let mut rng = Rng::new(variant as u64 + 11);
+            let mut saved = None;
+            let mut checked = [0; 3];
+            for step in 0..1500 {
+                if step == 700 {
+                    saved = Some(env.save_states().expect("save"));
+                }
+                if step == 1100 {
+                    env.load_states(saved.as_deref().expect("saved")).expect("load");
+                } else {
+                    let actions: Vec<u32> = env.last().legal_action_mask.iter().map(|m| rng.pick_legal(m)).collect();
+                    env.step(&actions).expect("legal random actions");
+                }
+                if step % 9 != 0 && !rng.chance(40) && step != 1100 {
+                    continue;
+                }
+                let form = FORMS[rng.below(3) as usize];
+                let seats: Vec<u32> = (0..BATCH).map(|_| rng.below(5)).collect();
+                let mut out = vec![0u8; BATCH * form.bytes()];
+                env.observe_into(form, Observer::Seats(&seats), &mut out)
+                    .expect("observe");
+                let words = env.states_words().expect("states");
+                let states: &[k::GameState] = bytemuck::cast_slice(&words);
+                for (i, (state, record)) in states.iter().zip(out.chunks(form.bytes())).enumerate() {
+                    let want = kernel_record(variant, form, state, seats[i]);
+                    assert!(
+                        record == want.as_slice(),
+                        "{variant} {form}, step {step}, env {i}, seat {}: {}",
+                        seats[i],
+                        first_difference(form, record, &want)
+                    );
+                    checked[FORMS.iter().position(|&f| f == form).unwrap_or(0)] += 1;
+                }
+            }
+            assert!(checked.iter().all(|&n| n > 5_000), "{variant}: {checked:?} records");
+        }
+    }
+
+    /// A record of one position (no view kept) is the kernel's too.
+    #[test]
+    fn a_fresh_view_writes_the_kernels_records() {
+        let mut env = Env::new(Config::new(crate::Variant::Red, 8)).expect("env");
+        env.reset().expect("reset");
+        let mut rng = Rng::new(5);
+        for _ in 0..300 {
+            let actions: Vec<u32> = env.last().legal_action_mask.iter().map(|m| rng.pick_legal(m)).collect();
+            env.step(&actions).expect("legal random actions");
+            let words = env.states_words().expect("states");
+            let states: &[k::GameState] = bytemuck::cast_slice(&words);
+            for state in states {
+                let seat = rng.below(5);
+                for form in FORMS {
+                    let got = crate::observe::record(crate::Variant::Red, form, state, seat);
+                    assert_eq!(got, kernel_record(crate::Variant::Red, form, state, seat), "{form}");
+                }
+            }
+        }
+    }
+}
