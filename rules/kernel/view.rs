@@ -572,20 +572,6 @@ pub fn tokens_into(s: &mut GameState, arg: u32, o: &mut ObsTokens) {
 fn write_tokens(s: &mut GameState, arg: u32, o: &mut ObsTokens) {
     let seat: u32 = observer(s, arg);
     let v: Seen = gather(s, seat);
-    write_tokens_seen(s, v, o);
-}
-
-// The host's form of the tokens for a game whose table tiles it keeps up to date (as
-// `planes_but_seats_into`): the same record, without counting the table's tiles again.
-pub fn tokens_with_table_into(s: &mut GameState, arg: u32, table: TableTiles, o: &mut ObsTokens) {
-    o.words = [0u32; 254];
-    let seat: u32 = observer(s, arg);
-    let v: Seen = gather_with(s, seat, table);
-    write_tokens_seen(s, v, o);
-}
-
-fn write_tokens_seen(s: &mut GameState, v: Seen, o: &mut ObsTokens) {
-    let seat: u32 = v.seat;
     for t in 0u32..34u32 {
         put_tok(o, T_HAND + t, v.hand[t as usize]);
         put_tok(o, T_SEEN + t, v.seen[t as usize]);

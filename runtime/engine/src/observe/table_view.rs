@@ -1,10 +1,11 @@
 //! The planes' seat blocks (each seat's river, melds, and the tiles safe against it) and the tiles
 //! on the table, kept up to date from the round's log. An env keeps one [`TableView`] per game:
-//! each observation reads only the log entries logged since the last one, then the planes and the
-//! packed planes copy the four blocks and all three of planes, packed planes and tokens take the
-//! table's tile counts from it. Without it every observation rescanned the whole round
+//! each observation in the planes or the packed planes reads only the log entries logged since the
+//! last one, then copies the four blocks and takes the table's tile counts from the view. Without
+//! it every observation rescanned the whole round
 //! (`view_seat_planes`, `log_sets` and `table_tiles` of `rules/kernel/view.rs`, which the GPU
-//! still runs, and which the tests below hold this to).
+//! still runs, and which the tests below hold this to). The tokens still count the table's tiles
+//! themselves: keeping a view up to date for them cost more than the count it saved (measured).
 //!
 //! A view is a function of the log entries it has read and nothing else. Before reading on, it
 //! checks that the state's log still begins with those entries (a new round, a new game, a
@@ -371,14 +372,9 @@ mod tests {
                 v::planes_into(&mut s, arg, &mut o);
                 bytemuck::bytes_of(&o).to_vec()
             }
-            Form::Packed => {
+            _ => {
                 let mut o: k::ObsPacked = bytemuck::Zeroable::zeroed();
                 v::packed_into(&mut s, arg, &mut o);
-                bytemuck::bytes_of(&o).to_vec()
-            }
-            _ => {
-                let mut o: k::ObsTokens = bytemuck::Zeroable::zeroed();
-                v::tokens_into(&mut s, arg, &mut o);
                 bytemuck::bytes_of(&o).to_vec()
             }
         })
@@ -400,10 +396,10 @@ mod tests {
     }
 
     /// The forms written from a view.
-    const FORMS: [Form; 3] = [Form::Planes, Form::Packed, Form::Tokens];
+    const FORMS: [Form; 2] = [Form::Planes, Form::Packed];
 
-    /// Random games of every variant, observed in the planes, the packed planes or the tokens (one
-    /// view serves all three) by random seats after a random share of the steps, so that a view skips steps,
+    /// Random games of every variant, observed in the planes or the packed planes (one view serves
+    /// both) by random seats after a random share of the steps, so that a view skips steps,
     /// rounds and whole games between two reads, and once after the states were put back to an
     /// earlier save: every record equals the kernel's.
     #[test]
@@ -417,7 +413,7 @@ mod tests {
             env.reset().expect("reset");
             let mut rng = Rng::new(variant as u64 + 11);
             let mut saved = None;
-            let mut checked = [0; 3];
+            let mut checked = [0; 2];
             for step in 0..1500 {
                 if step == 700 {
                     saved = Some(env.save_states().expect("save"));
@@ -431,7 +427,7 @@ mod tests {
                 if step % 9 != 0 && !rng.chance(40) && step != 1100 {
                     continue;
                 }
-                let form = FORMS[rng.below(3) as usize];
+                let form = FORMS[rng.below(2) as usize];
                 let seats: Vec<u32> = (0..BATCH).map(|_| rng.below(5)).collect();
                 let mut out = vec![0u8; BATCH * form.bytes()];
                 env.observe_into(form, Observer::Seats(&seats), &mut out)
@@ -449,7 +445,7 @@ mod tests {
                     checked[FORMS.iter().position(|&f| f == form).unwrap_or(0)] += 1;
                 }
             }
-            assert!(checked.iter().all(|&n| n > 5_000), "{variant}: {checked:?} records");
+            assert!(checked.iter().all(|&n| n > 8_000), "{variant}: {checked:?} records");
         }
     }
 
