@@ -572,6 +572,23 @@ pub fn tokens_into(s: &mut GameState, arg: u32, o: &mut ObsTokens) {
 fn write_tokens(s: &mut GameState, arg: u32, o: &mut ObsTokens) {
     let seat: u32 = observer(s, arg);
     let v: Seen = gather(s, seat);
+    write_tokens_but_events(s, v, o);
+    let n: u32 = view_events(s, seat, o);
+    put_tok(o, T_EVENTS_LEN, n);
+}
+
+// The host's form of the tokens for a game whose table and event list it keeps up to date (as
+// `planes_but_seats_into`): every token but the events and their count, which the host writes
+// after this zeroes the record.
+pub fn tokens_but_events_into(s: &mut GameState, arg: u32, table: TableTiles, o: &mut ObsTokens) {
+    o.words = [0u32; 254];
+    let seat: u32 = observer(s, arg);
+    let v: Seen = gather_with(s, seat, table);
+    write_tokens_but_events(s, v, o);
+}
+
+fn write_tokens_but_events(s: &mut GameState, v: Seen, o: &mut ObsTokens) {
+    let seat: u32 = v.seat;
     for t in 0u32..34u32 {
         put_tok(o, T_HAND + t, v.hand[t as usize]);
         put_tok(o, T_SEEN + t, v.seen[t as usize]);
@@ -619,8 +636,6 @@ fn write_tokens(s: &mut GameState, arg: u32, o: &mut ObsTokens) {
     for i in 0u32..24u32 {
         o.words[(T_SCALARS / 4u32 + i) as usize] = sc[i as usize];
     }
-    let n: u32 = view_events(s, seat, o);
-    put_tok(o, T_EVENTS_LEN, n);
 }
 
 // The round's public events as tokens [kind, actor (ego), tile or 255, flags], one word each,

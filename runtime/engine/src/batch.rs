@@ -16,19 +16,6 @@ pub(crate) fn each<T: bytemuck::Pod + Send>(
     rows(out, sts, args, serial, |o: &mut T, s, a| *o = f(*s, a));
 }
 
-/// As [`each`], for a kernel function that writes its record in place: `f(&mut state, arg,
-/// &mut out[i])` on a copy of each state (the kernel takes states as `&mut`), so the record is
-/// not built elsewhere and copied.
-pub(crate) fn each_into<T: bytemuck::Pod + Send>(
-    out: &mut [u32],
-    sts: &[kernel::GameState],
-    args: &[u32],
-    serial: bool,
-    f: fn(&mut kernel::GameState, u32, &mut T),
-) {
-    rows(out, sts, args, serial, |o: &mut T, s, a| f(&mut { *s }, a, o));
-}
-
 /// `f(&mut state, arg, view, &mut out[i])` over the batch, in parallel unless `serial`, for a
 /// writer that fills its record in place and reads each state's [`TableView`], brought up to that
 /// state's log first. The kernel takes states as `&mut`: it gets a copy of each.

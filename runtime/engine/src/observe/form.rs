@@ -2,7 +2,7 @@
 
 use super::fields::{Field, ANALYSIS_FIELDS, ORACLE_FIELDS, PACKED_FIELDS, PLANES_FIELDS, TOKENS_FIELDS};
 use super::table_view::TableView;
-use crate::batch::{each, each_followed, each_into};
+use crate::batch::{each, each_followed};
 use crate::generated::kernel as k;
 use crate::names::UnknownName;
 
@@ -139,7 +139,13 @@ pub(crate) fn observe_cpu<S: bytemuck::Pod>(
                 v::planes_but_seats_into(s, arg, table.tiles(), o);
             })
         }
-        Form::Tokens => each_into(out, sts, args, serial, v::tokens_into),
+        Form::Tokens => {
+            tables.resize_with(sts.len(), TableView::default);
+            each_followed(out, sts, args, tables, serial, |s, arg, table, o: &mut k::ObsTokens| {
+                v::tokens_but_events_into(s, arg, table.tiles(), o);
+                table.write_events(s, observer_of(s, arg), o);
+            })
+        }
         Form::Packed => {
             tables.resize_with(sts.len(), TableView::default);
             each_followed(out, sts, args, tables, serial, |s, arg, table, o: &mut k::ObsPacked| {
