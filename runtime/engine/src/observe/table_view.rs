@@ -24,6 +24,8 @@ const _: () = assert!(
 const TYPES: usize = 34;
 /// Bytes of one seat block (rows `P_SEAT_*` of one seat).
 const BLOCK: usize = k::P_SEAT_ROWS as usize * TYPES;
+/// Bytes of a seat's rows of counts and turn numbers, as the view keeps them.
+const COUNTS: usize = COUNT_ROWS.len() * TYPES;
 /// Discards a river holds (`GameState.rivers`: 24 per seat); later ones are not in it.
 const RIVER: usize = 24;
 /// Log words (two entries each).
@@ -47,6 +49,15 @@ const COUNT_ROWS: [u32; 6] = [
 
 const fn row(r: u32) -> usize {
     r as usize * TYPES
+}
+
+/// Where seat block row `r` (one of [`COUNT_ROWS`]) starts in a seat's counts.
+const fn at(r: u32) -> usize {
+    let mut i = 0;
+    while COUNT_ROWS[i] != r {
+        i += 1;
+    }
+    i * TYPES
 }
 
 /// Each byte of `b` as a byte 0 or 1: the cells of eight tile types of a yes/no row.
@@ -79,11 +90,12 @@ pub(crate) struct TableView {
     /// The log's words as last read: the first `read` entries are what this view is made of.
     log: [u32; LOG_WORDS],
     read: u32,
-    /// Each seat's block of planes rows, by absolute seat.
-    blocks: [[u8; BLOCK]; 4],
-    /// Each river as the state holds it (tile values), the entries called away (a bit each), and
-    /// its length.
-    rivers: [[u8; RIVER]; 4],
+    /// Each seat's rows of counts and turn numbers ([`COUNT_ROWS`], bytes as in the planes), by
+    /// absolute seat; its yes/no rows are the sets below.
+    counts: [[u8; COUNTS]; 4],
+    /// Each river's last entry as the state holds it (a tile value), the entries called away (a
+    /// bit each), and its length.
+    last_values: [u8; 4],
     called: [u32; 4],
     river_lens: [u8; 4],
     /// The seat of the last discard (a call takes it).
@@ -99,7 +111,7 @@ pub(crate) struct TableView {
     called_in: [u64; 4],
     closed_kans: [u64; 4],
     /// Counts by type of the river tiles not called away and of the melds' tiles.
-    seen: [u32; TYPES],
+    seen: [u8; TYPES],
     /// Red fives by suit: in rivers and not called away (a count), and in any meld (a bit).
     red_in_rivers: [u8; 3],
     red_in_melds: u32,
@@ -120,8 +132,8 @@ impl Default for TableView {
         TableView {
             log: [0; LOG_WORDS],
             read: 0,
-            blocks: [[0; BLOCK]; 4],
-            rivers: [[0; RIVER]; 4],
+            counts: [[0; COUNTS]; 4],
+            last_values: [0; 4],
             called: [0; 4],
             river_lens: [0; 4],
             last_discarder: 0,
@@ -212,7 +224,6 @@ impl TableView {
             k::EV_CLOSED_KAN => {
                 let t = k::value_type(v) as usize;
                 self.meld_tiles(a, t, 4);
-                self.blocks[a][row(k::P_SEAT_CLOSED_KAN) + t] = 1;
                 self.closed_kans[a] |= 1 << t;
                 self.red_meld(t, (f & k::LOG_WITH_RED) != 0);
             }
@@ -275,35 +286,25 @@ impl TableView {
         self.since[a] = 0;
         self.own[a] |= bit;
         self.last_discarder = a as u8;
-        let b = &mut self.blocks[a];
         if (f & k::LOG_RIICHI_TILE) != 0 {
-            b[row(k::P_SEAT_RIICHI_TILE) + t] = 1;
             self.riichi_tiles[a] |= bit;
         }
         let i = self.river_lens[a] as usize;
         if i < RIVER {
+            let c = &mut self.counts[a];
             let turn = i as u8 + 1;
-            b[row(k::P_SEAT_DISCARDED) + t] += 1;
-            b[row(k::P_SEAT_TEDASHI) + t] += u8::from((f & k::LOG_TSUMOGIRI) == 0);
-            if b[row(k::P_SEAT_FIRST_TURN) + t] == 0 {
-                b[row(k::P_SEAT_FIRST_TURN) + t] = turn;
+            c[at(k::P_SEAT_DISCARDED) + t] += 1;
+            c[at(k::P_SEAT_TEDASHI) + t] += u8::from((f & k::LOG_TSUMOGIRI) == 0);
+            if c[at(k::P_SEAT_FIRST_TURN) + t] == 0 {
+                c[at(k::P_SEAT_FIRST_TURN) + t] = turn;
             }
-            b[row(k::P_SEAT_LAST_TURN) + t] = turn;
-            if i > 0 {
-                let before = k::value_type(u32::from(self.rivers[a][i - 1])) as usize;
-                b[row(k::P_SEAT_LAST_DISCARD) + before] = 0;
-            }
-            b[row(k::P_SEAT_LAST_DISCARD) + t] = 1;
-            self.rivers[a][i] = v as u8;
+            c[at(k::P_SEAT_LAST_TURN) + t] = turn;
+            self.last_values[a] = v as u8;
             self.river_lens[a] += 1;
-            self.seen[t] += 1;
+            self.seen[t] = self.seen[t].wrapping_add(1);
             if v >= 34 {
                 self.red_in_rivers[(v - 34) as usize] += 1;
             }
-        }
-        for q in 0..4 {
-            let safe = self.safe(q);
-            put_set(&mut self.blocks[q][row(k::P_SEAT_SAFE)..row(k::P_SEAT_SAFE + 1)], safe);
         }
     }
 
@@ -313,9 +314,9 @@ impl TableView {
         let len = self.river_lens[from] as usize;
         if len > 0 && (self.called[from] >> (len - 1)) & 1 == 0 {
             self.called[from] |= 1 << (len - 1);
-            let w = u32::from(self.rivers[from][len - 1]);
+            let w = u32::from(self.last_values[from]);
             let u = k::value_type(w) as usize;
-            let away = &mut self.blocks[from][row(k::P_SEAT_CALLED_AWAY) + u];
+            let away = &mut self.counts[from][at(k::P_SEAT_CALLED_AWAY) + u];
             *away = away.wrapping_add(1);
             self.seen[u] = self.seen[u].wrapping_sub(1);
             if w >= 34 {
@@ -323,7 +324,6 @@ impl TableView {
             }
         }
         let t = k::value_type(v) as usize;
-        self.blocks[a][row(k::P_SEAT_CALLED_IN) + t] = 1;
         self.called_in[a] |= 1 << t;
         match kind {
             k::EV_CHI => {
@@ -339,9 +339,9 @@ impl TableView {
     }
 
     fn meld_tiles(&mut self, a: usize, t: usize, n: u8) {
-        let cell = &mut self.blocks[a][row(k::P_SEAT_MELD_TILES) + t];
+        let cell = &mut self.counts[a][at(k::P_SEAT_MELD_TILES) + t];
         *cell = cell.wrapping_add(n);
-        self.seen[t] = self.seen[t].wrapping_add(u32::from(n));
+        self.seen[t] = self.seen[t].wrapping_add(n);
     }
 
     fn red_meld(&mut self, t: usize, red: bool) {
@@ -360,9 +360,25 @@ impl TableView {
             red_seen |= u32::from(n > 0) << suit;
         }
         k::TableTiles {
-            seen: self.seen,
+            seen: self.seen.map(u32::from),
             red_seen,
         }
+    }
+
+    /// Seat `q`'s yes/no rows, as sets, with their seat block rows.
+    fn seat_sets(&self, q: usize) -> [(u32, u64); 5] {
+        let len = self.river_lens[q];
+        let last = match len {
+            0 => 0,
+            _ => 1u64 << k::value_type(u32::from(self.last_values[q])),
+        };
+        [
+            (k::P_SEAT_RIICHI_TILE, self.riichi_tiles[q]),
+            (k::P_SEAT_SAFE, self.safe(q)),
+            (k::P_SEAT_CALLED_IN, self.called_in[q]),
+            (k::P_SEAT_CLOSED_KAN, self.closed_kans[q]),
+            (k::P_SEAT_LAST_DISCARD, last),
+        ]
     }
 
     /// Writes the four seat blocks of `observer`'s planes (ego seat j is absolute seat
@@ -372,7 +388,13 @@ impl TableView {
         o.planes[SEATS_TO..].fill(0);
         let cells: &mut [u8] = bytemuck::cast_slice_mut(&mut o.planes[SEATS_FROM..SEATS_TO]);
         for (j, block) in cells.chunks_exact_mut(BLOCK).enumerate() {
-            block.copy_from_slice(&self.blocks[(observer as usize + j) % 4]);
+            let q = (observer as usize + j) % 4;
+            for r in COUNT_ROWS {
+                block[row(r)..row(r + 1)].copy_from_slice(&self.counts[q][at(r)..at(r) + TYPES]);
+            }
+            for (r, set) in self.seat_sets(q) {
+                put_set(&mut block[row(r)..row(r + 1)], set);
+            }
         }
     }
 
@@ -418,24 +440,11 @@ impl TableView {
         let counts: &mut [u8] = bytemuck::cast_slice_mut(&mut o.counts);
         for j in 0..4u32 {
             let q = (observer + j) as usize % 4;
-            let block = &self.blocks[q];
             for r in COUNT_ROWS {
-                let at = k::packed_seat_index(j, r) as usize * TYPES;
-                counts[at..at + TYPES].copy_from_slice(&block[row(r)..row(r + 1)]);
+                let to = k::packed_seat_index(j, r) as usize * TYPES;
+                counts[to..to + TYPES].copy_from_slice(&self.counts[q][at(r)..at(r) + TYPES]);
             }
-            let len = self.river_lens[q] as usize;
-            let last = match len {
-                0 => 0,
-                _ => 1u64 << k::value_type(u32::from(self.rivers[q][len - 1])),
-            };
-            let sets = [
-                (k::P_SEAT_RIICHI_TILE, self.riichi_tiles[q]),
-                (k::P_SEAT_SAFE, self.safe(q)),
-                (k::P_SEAT_CALLED_IN, self.called_in[q]),
-                (k::P_SEAT_CLOSED_KAN, self.closed_kans[q]),
-                (k::P_SEAT_LAST_DISCARD, last),
-            ];
-            for (r, set) in sets {
+            for (r, set) in self.seat_sets(q) {
                 let i = k::packed_seat_index(j, r) as usize * 2;
                 o.bits[i] = set as u32;
                 o.bits[i + 1] = (set >> 32) as u32;
