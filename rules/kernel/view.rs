@@ -369,9 +369,8 @@ fn planes_of(s: &mut GameState, arg: u32) -> ObsPlanes {
     o
 }
 
-// The host's form of `observe_planes`: written in place into the caller's record (any contents),
-// not built in a local and copied out (the 2.2 KB copy was a tenth of the planes' profile; zeroing
-// the record in place, its first touch, costs part of that back).
+// `observe_planes` written in place into a record (any contents), rescanning the round as the GPU
+// does: the host's tests hold its `TableView` writer (`planes_but_seats_into` below) to this.
 pub fn planes_into(s: &mut GameState, arg: u32, o: &mut ObsPlanes) {
     o.planes = [0u32; 544];
     write_planes(s, arg, o);
@@ -562,7 +561,7 @@ fn tokens_of(s: &mut GameState, arg: u32) -> ObsTokens {
     o
 }
 
-// The host's form of `observe_tokens`, written in place as `planes_into` is.
+// `observe_tokens` written in place, as `planes_into` is (the host's tests' oracle).
 pub fn tokens_into(s: &mut GameState, arg: u32, o: &mut ObsTokens) {
     o.words = [0u32; 254];
     write_tokens(s, arg, o);

@@ -42,7 +42,7 @@ pub fn observe_packed(state: GameState, arg: u32) -> ObsPacked {
     o
 }
 
-// The host's form, written in place as `planes_into` is.
+// `observe_packed` written in place, as `planes_into` is (the host's tests' oracle).
 pub fn packed_into(s: &mut GameState, arg: u32, o: &mut ObsPacked) {
     o.bits = [0u32; 72];
     o.counts = [0u32; 238];

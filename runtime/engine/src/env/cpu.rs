@@ -10,7 +10,8 @@ use crate::Variant;
 pub(super) struct CpuEnv {
     pub(super) states: Vec<u32>,
     pub(super) views: Vec<u32>,
-    /// What each game's table shows, for the planes (made on their first use).
+    /// What each game's table shows, for the planes, packed planes and tokens (made on their
+    /// first use).
     pub(super) tables: Vec<TableView>,
     pub(super) pool: Option<rayon::ThreadPool>,
     pub(super) serial: bool,

@@ -119,8 +119,8 @@ fn observer_of(s: &k::GameState, arg: u32) -> u32 {
 }
 
 /// Writes `form` observations of `states` (GameState words) for the seats in `args` into `out`.
-/// `tables` holds a [`TableView`] per state, made here on first use, that the planes follow from
-/// one call to the next.
+/// `tables` holds a [`TableView`] per state, made here on first use, that the planes, packed planes
+/// and tokens follow from one call to the next.
 pub(crate) fn observe_cpu<S: bytemuck::Pod>(
     variant: crate::Variant,
     form: Form,
@@ -131,23 +131,23 @@ pub(crate) fn observe_cpu<S: bytemuck::Pod>(
     serial: bool,
 ) {
     let sts: &[k::GameState] = bytemuck::cast_slice(states);
+    if matches!(form, Form::Planes | Form::Packed | Form::Tokens) {
+        tables.resize_with(sts.len(), TableView::default);
+    }
     with_variant!(variant, v => match form {
         Form::Planes => {
-            tables.resize_with(sts.len(), TableView::default);
             each_followed(out, sts, args, tables, serial, |s, arg, table, o: &mut k::ObsPlanes| {
                 table.write_seats(observer_of(s, arg), o);
                 v::planes_but_seats_into(s, arg, table.tiles(), o);
             })
         }
         Form::Tokens => {
-            tables.resize_with(sts.len(), TableView::default);
             each_followed(out, sts, args, tables, serial, |s, arg, table, o: &mut k::ObsTokens| {
                 v::tokens_but_events_into(s, arg, table.tiles(), o);
                 table.write_events(s, observer_of(s, arg), o);
             })
         }
         Form::Packed => {
-            tables.resize_with(sts.len(), TableView::default);
             each_followed(out, sts, args, tables, serial, |s, arg, table, o: &mut k::ObsPacked| {
                 table.write_packed_seats(observer_of(s, arg), o);
                 v::packed_but_seats_into(s, arg, table.tiles(), o);

@@ -1,11 +1,11 @@
-//! The planes' seat blocks (each seat's river, melds, and the tiles safe against it) and the tiles
-//! on the table, kept up to date from the round's log. An env keeps one [`TableView`] per game:
-//! each observation in the planes or the packed planes reads only the log entries logged since the
-//! last one, then copies the four blocks and takes the table's tile counts from the view. Without
-//! it every observation rescanned the whole round
-//! (`view_seat_planes`, `log_sets` and `table_tiles` of `rules/kernel/view.rs`, which the GPU
-//! still runs, and which the tests below hold this to). The tokens still count the table's tiles
-//! themselves: keeping a view up to date for them cost more than the count it saved (measured).
+//! What the table shows, kept up to date from the round's log: each seat's rows of the planes
+//! (river, melds, the tiles safe against it), the counts of the tiles on the table, and the
+//! tokens' event list. An env keeps one [`TableView`] per game; each observation in the planes,
+//! the packed planes or the tokens reads only the log entries logged since the last one, then
+//! copies the four seats' rows and rotates the event list to the observer's seats. Without it every
+//! observation rescanned the whole round (`view_seat_planes`, `log_sets`, `table_tiles` and
+//! `view_events` of `rules/kernel/view.rs`, which the GPU still runs, and which the tests below
+//! hold this to).
 //!
 //! A view is a function of the log entries it has read and nothing else. Before reading on, it
 //! checks that the state's log still begins with those entries (a new round, a new game, a
@@ -409,8 +409,10 @@ impl TableView {
             let a = (token >> 8) & 3;
             let mut t = (token & !0xff00) | (((a + 4 - observer) % 4) << 8);
             if (token & 255) == k::EV_DRAW {
-                let tile = if a == observer {
-                    k::wall_tile(s, (token >> 16) & 255)
+                let at = (token >> 16) & 255;
+                // A game draws from at most the last wall position; past it only a forged state.
+                let tile = if a == observer && at < 136 {
+                    k::wall_tile(s, at)
                 } else {
                     k::NO_TILE_BYTE
                 };
