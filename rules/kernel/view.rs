@@ -26,7 +26,7 @@ fn rel(seat: u32, q: u32) -> u32 {
     (q + 4u32 - seat) % 4u32
 }
 
-fn observer(s: &mut GameState, arg: u32) -> u32 {
+pub fn observer(s: &mut GameState, arg: u32) -> u32 {
     if arg >= 4u32 {
         return s.current;
     }

@@ -13,7 +13,15 @@ pub(crate) fn each<T: bytemuck::Pod + Send>(
     serial: bool,
     f: fn(kernel::GameState, u32) -> T,
 ) {
-    rows(out, sts, args, serial, |o: &mut T, s, a| *o = f(*s, a));
+    // A zero-sized item per env: the vector allocates nothing.
+    rows(
+        out,
+        sts,
+        args,
+        &mut vec![(); sts.len()],
+        serial,
+        |o: &mut T, s, a, _| *o = f(*s, a),
+    );
 }
 
 /// `f(&mut state, arg, view, &mut out[i])` over the batch, in parallel unless `serial`, for a
@@ -27,39 +35,30 @@ pub(crate) fn each_followed<T: bytemuck::Pod + Send>(
     serial: bool,
     f: impl Fn(&mut kernel::GameState, u32, &TableView, &mut T) + Sync + Send,
 ) {
-    let outs: &mut [T] = bytemuck::cast_slice_mut(out);
-    let one = |(((o, s), a), t): (((&mut T, &kernel::GameState), &u32), &mut TableView)| {
+    rows(out, sts, args, tables, serial, |o: &mut T, s, a, t: &mut TableView| {
         t.follow(s);
-        f(&mut { *s }, *a, t, o);
-    };
-    if serial {
-        outs.iter_mut().zip(sts).zip(args).zip(tables.iter_mut()).for_each(one);
-    } else {
-        outs.par_iter_mut()
-            .zip(sts.par_iter())
-            .zip(args.par_iter())
-            .zip(tables.par_iter_mut())
-            .with_min_len(8)
-            .for_each(one);
-    }
+        f(&mut { *s }, a, t, o);
+    });
 }
 
-/// `one(record i, state i, arg i)` over the batch, in parallel unless `serial`.
-fn rows<T: bytemuck::Pod + Send>(
+/// `one(record i, state i, arg i, item i)` over the batch, in parallel unless `serial`.
+fn rows<T: bytemuck::Pod + Send, X: Send>(
     out: &mut [u32],
     sts: &[kernel::GameState],
     args: &[u32],
+    items: &mut [X],
     serial: bool,
-    one: impl Fn(&mut T, &kernel::GameState, u32) + Sync + Send,
+    one: impl Fn(&mut T, &kernel::GameState, u32, &mut X) + Sync + Send,
 ) {
     let outs: &mut [T] = bytemuck::cast_slice_mut(out);
-    let one = |((o, s), a): ((&mut T, &kernel::GameState), &u32)| one(o, s, *a);
+    let one = |(((o, s), a), x): (((&mut T, &kernel::GameState), &u32), &mut X)| one(o, s, *a, x);
     if serial {
-        outs.iter_mut().zip(sts).zip(args).for_each(one);
+        outs.iter_mut().zip(sts).zip(args).zip(items.iter_mut()).for_each(one);
     } else {
         outs.par_iter_mut()
             .zip(sts.par_iter())
             .zip(args.par_iter())
+            .zip(items.par_iter_mut())
             .with_min_len(8)
             .for_each(one);
     }

@@ -109,15 +109,6 @@ pub fn record(variant: crate::Variant, form: Form, state: &k::GameState, seat: u
     bytemuck::cast_slice(&words).to_vec()
 }
 
-/// The seat `arg` names (the kernel's `observer`).
-fn observer_of(s: &k::GameState, arg: u32) -> u32 {
-    if arg >= k::OBSERVE_CURRENT {
-        s.current
-    } else {
-        arg
-    }
-}
-
 /// Writes `form` observations of `states` (GameState words) for the seats in `args` into `out`.
 /// `tables` holds a [`TableView`] per state, made here on first use, that the planes, packed planes
 /// and tokens follow from one call to the next.
@@ -137,19 +128,20 @@ pub(crate) fn observe_cpu<S: bytemuck::Pod>(
     with_variant!(variant, v => match form {
         Form::Planes => {
             each_followed(out, sts, args, tables, serial, |s, arg, table, o: &mut k::ObsPlanes| {
-                table.write_seats(observer_of(s, arg), o);
+                table.write_seats(v::observer(s, arg), o);
                 v::planes_but_seats_into(s, arg, table.tiles(), o);
             })
         }
         Form::Tokens => {
             each_followed(out, sts, args, tables, serial, |s, arg, table, o: &mut k::ObsTokens| {
                 v::tokens_but_events_into(s, arg, table.tiles(), o);
-                table.write_events(s, observer_of(s, arg), o);
+                let observer = v::observer(s, arg);
+                table.write_events(s, observer, o);
             })
         }
         Form::Packed => {
             each_followed(out, sts, args, tables, serial, |s, arg, table, o: &mut k::ObsPacked| {
-                table.write_packed_seats(observer_of(s, arg), o);
+                table.write_packed_seats(v::observer(s, arg), o);
                 v::packed_but_seats_into(s, arg, table.tiles(), o);
             })
         }

@@ -553,6 +553,19 @@ mod tests {
         }
     }
 
+    /// The view's split of a seat block into rows of counts (bytes) and yes/no rows (sets) is the
+    /// kernel's (`plane_row_binary`), row for row.
+    #[test]
+    fn count_rows_are_the_kernels_rows_of_counts() {
+        let view = TableView::default();
+        let sets: Vec<u32> = view.seat_sets(0).iter().map(|&(r, _)| r).collect();
+        for r in 0..k::P_SEAT_ROWS {
+            let binary = k::plane_row_binary(k::P_SEAT + r);
+            assert_eq!(COUNT_ROWS.contains(&r), !binary, "seat row {r}");
+            assert_eq!(sets.contains(&r), binary, "seat row {r}");
+        }
+    }
+
     /// A record of one position (no view kept) is the kernel's too.
     #[test]
     fn a_fresh_view_writes_the_kernels_records() {
