@@ -10,7 +10,7 @@
 
 pub const LOG_CAPACITY: u32 = 120;
 // GameState.log_len: the entry count in the low byte; a draw not yet followed by an event.
-const LOG_LEN_MASK: u32 = 255;
+pub const LOG_LEN_MASK: u32 = 255;
 pub const LOG_PENDING_DRAW: u32 = 256;
 
 // Event kinds (also the token form's `kind` byte; 0 = padding, 10 = a draw, token form only).

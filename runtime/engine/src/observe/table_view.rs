@@ -165,7 +165,7 @@ impl TableView {
     /// Brings the view up to `s`'s log: reads the entries logged since the last call, or every
     /// entry where `s` is not the round this view has read.
     pub(crate) fn follow(&mut self, s: &k::GameState) {
-        let n = (s.log_len & 255).min(k::LOG_CAPACITY);
+        let n = (s.log_len & k::LOG_LEN_MASK).min(k::LOG_CAPACITY);
         // The log's words this view holds from here on (a word half read is read again).
         let mut from = (self.read / 2) as usize;
         if n < self.read || self.log[..from] != s.log[..from] || !self.continued_by(s, from) {
