@@ -164,6 +164,54 @@ fn put_set(o: &mut ObsPlanes, row: u32, set: [u32; 2]) {
     }
 }
 
+// The cells of a row (each below 256) four to a word: word j holds types 4j..4j+3, the last word
+// types 32 and 33. Writing a row a word at a time instead of a byte at a time.
+fn pack_cells(v: [u32; 34]) -> [u32; 9] {
+    let mut p: [u32; 9] = [0u32; 9];
+    for j in 0u32..8u32 {
+        let i: u32 = j * 4u32;
+        p[j as usize] = v[i as usize]
+            | (v[(i + 1u32) as usize] << 8u32)
+            | (v[(i + 2u32) as usize] << 16u32)
+            | (v[(i + 3u32) as usize] << 24u32);
+    }
+    p[8] = v[32] | (v[33] << 8u32);
+    p
+}
+
+// Packed cells (`pack_cells`) as the nine words row `row` spans from its first word: 34 = 8 * 4 + 2,
+// so even rows start on a word boundary and odd rows half-way into one.
+fn at_row(p: [u32; 9], row: u32) -> [u32; 9] {
+    if (row & 1u32) == 0u32 {
+        return p;
+    }
+    let mut q: [u32; 9] = [0u32; 9];
+    q[0] = p[0] << 16u32;
+    for j in 1u32..9u32 {
+        q[j as usize] = (p[(j - 1u32) as usize] >> 16u32) | (p[j as usize] << 16u32);
+    }
+    q
+}
+
+// Packed cells of at most 4 each, as 1 where the cell is above `k` and 0 elsewhere: adding 127 - k
+// to a byte sets its top bit exactly then, and no byte carries into the next.
+fn cells_above(p: [u32; 9], k: u32) -> [u32; 9] {
+    let mut q: [u32; 9] = [0u32; 9];
+    for j in 0u32..9u32 {
+        q[j as usize] = ((p[j as usize] + (127u32 - k) * 0x01010101u32) >> 7u32) & 0x01010101u32;
+    }
+    q
+}
+
+// Writes packed cells into row `row` of zeroed planes.
+fn put_row(o: &mut ObsPlanes, row: u32, p: [u32; 9]) {
+    let w: u32 = row * 34u32 / 4u32;
+    let q: [u32; 9] = at_row(p, row);
+    for j in 0u32..9u32 {
+        o.planes[(w + j) as usize] |= q[j as usize];
+    }
+}
+
 fn put_scalar(sc: &mut [u32; 24], i: u32, v: i32) {
     sc[(i / 2u32) as usize] |= ((v as u32) & 65535u32) << ((i % 2u32) * 16u32);
 }
@@ -452,14 +500,12 @@ pub fn planes_but_seats_into(s: &mut GameState, arg: u32, table: TableTiles, o: 
 // Every planes row but the seat blocks, into zeroed rows.
 fn write_own_planes(s: &mut GameState, v: Seen, o: &mut ObsPlanes) {
     let seat: u32 = v.seat;
-    let held: [u32; 8] = held_sets(v.hand);
+    let hand: [u32; 9] = pack_cells(v.hand);
     for k in 0u32..4u32 {
-        put_set(o, P_HAND + k, [held[(k * 2u32) as usize], held[(k * 2u32 + 1u32) as usize]]);
+        put_row(o, P_HAND + k, cells_above(hand, k));
     }
-    for t in 0u32..34u32 {
-        put_plane(o, P_SEEN, t, v.seen[t as usize]);
-        put_plane(o, P_DORA, t, v.dora[t as usize]);
-    }
+    put_row(o, P_SEEN, pack_cells(v.seen));
+    put_row(o, P_DORA, pack_cells(v.dora));
     for suit in 0u32..3u32 {
         put_plane(o, P_RED, suit * 9u32 + 4u32, holds_red(s, seat, suit) as u32);
         put_plane(o, P_RED_SEEN, suit * 9u32 + 4u32, (v.red_seen >> suit) & 1u32);
@@ -588,9 +634,12 @@ pub fn tokens_but_events_into(s: &mut GameState, arg: u32, table: TableTiles, o:
 
 fn write_tokens_but_events(s: &mut GameState, v: Seen, o: &mut ObsTokens) {
     let seat: u32 = v.seat;
-    for t in 0u32..34u32 {
-        put_tok(o, T_HAND + t, v.hand[t as usize]);
-        put_tok(o, T_SEEN + t, v.seen[t as usize]);
+    // Both fields start on a word boundary (view_layout.rs).
+    let hand: [u32; 9] = pack_cells(v.hand);
+    let seen: [u32; 9] = pack_cells(v.seen);
+    for j in 0u32..9u32 {
+        o.words[(T_HAND / 4u32 + j) as usize] |= hand[j as usize];
+        o.words[(T_SEEN / 4u32 + j) as usize] |= seen[j as usize];
     }
     for suit in 0u32..3u32 {
         put_tok(o, T_HAND_RED + suit, holds_red(s, seat, suit) as u32);

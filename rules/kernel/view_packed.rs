@@ -22,6 +22,15 @@ fn add_count(o: &mut ObsPacked, i: u32, t: u32, v: u32) {
     o.counts[(at / 4u32) as usize] += v << ((at % 4u32) * 8u32);
 }
 
+// Writes packed cells (`pack_cells`) into zeroed byte row i.
+fn put_count_row(o: &mut ObsPacked, i: u32, p: [u32; 9]) {
+    let w: u32 = i * 34u32 / 4u32;
+    let q: [u32; 9] = at_row(p, i);
+    for j in 0u32..9u32 {
+        o.counts[(w + j) as usize] |= q[j as usize];
+    }
+}
+
 fn set_count(o: &mut ObsPacked, i: u32, t: u32, v: u32) {
     let at: u32 = i * 34u32 + t;
     o.counts[(at / 4u32) as usize] = with_byte(o.counts[(at / 4u32) as usize], at % 4u32, v);
@@ -77,10 +86,8 @@ fn write_own_packed(s: &mut GameState, v: Seen, o: &mut ObsPacked) {
     }
     let seen: u32 = packed_index(P_SEEN);
     let dora: u32 = packed_index(P_DORA);
-    for t in 0u32..34u32 {
-        add_count(o, seen, t, v.seen[t as usize]);
-        add_count(o, dora, t, v.dora[t as usize]);
-    }
+    put_count_row(o, seen, pack_cells(v.seen));
+    put_count_row(o, dora, pack_cells(v.dora));
     // Red fives are at their type's column: 4, 13, 22 (all in the low word).
     let mut red: u32 = 0u32;
     let mut red_seen: u32 = 0u32;

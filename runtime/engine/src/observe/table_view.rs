@@ -24,8 +24,6 @@ const _: () = assert!(
 const TYPES: usize = 34;
 /// Bytes of one seat block (rows `P_SEAT_*` of one seat).
 const BLOCK: usize = k::P_SEAT_ROWS as usize * TYPES;
-/// Bytes of a seat's rows of counts and turn numbers, as the view keeps them.
-const COUNTS: usize = COUNT_ROWS.len() * TYPES;
 /// Discards a river holds (`GameState.rivers`: 24 per seat); later ones are not in it.
 const RIVER: usize = 24;
 /// Log words (two entries each).
@@ -51,14 +49,11 @@ const fn row(r: u32) -> usize {
     r as usize * TYPES
 }
 
-/// Where seat block row `r` (one of [`COUNT_ROWS`]) starts in a seat's counts.
-const fn at(r: u32) -> usize {
-    let mut i = 0;
-    while COUNT_ROWS[i] != r {
-        i += 1;
-    }
-    i * TYPES
-}
+/// The kernel's `packed_seat_index` of every ego seat and seat block row, computed once: the
+/// kernel counts the rows before it at each call.
+static PACKED_SEAT_INDEX: std::sync::LazyLock<[[usize; k::P_SEAT_ROWS as usize]; 4]> = std::sync::LazyLock::new(|| {
+    std::array::from_fn(|j| std::array::from_fn(|r| k::packed_seat_index(j as u32, r as u32) as usize))
+});
 
 /// Each byte of `b` as a byte 0 or 1: the cells of eight tile types of a yes/no row.
 const SPREAD: [u64; 256] = {
@@ -90,9 +85,10 @@ pub(crate) struct TableView {
     /// The log's words as last read: the first `read` entries are what this view is made of.
     log: [u32; LOG_WORDS],
     read: u32,
-    /// Each seat's rows of counts and turn numbers ([`COUNT_ROWS`], bytes as in the planes), by
-    /// absolute seat; its yes/no rows are the sets below.
-    counts: [[u8; COUNTS]; 4],
+    /// Each seat's block of the planes (rows `P_SEAT_*`, bytes), by absolute seat: its rows of
+    /// counts and turn numbers ([`COUNT_ROWS`]), and its yes/no rows, kept equal to the sets below
+    /// (`seat_sets`) as they change. An observation copies four blocks.
+    blocks: [[u8; BLOCK]; 4],
     /// Each river's last entry as the state holds it (a tile value), the entries called away (a
     /// bit each), and its length.
     last_values: [u8; 4],
@@ -115,12 +111,15 @@ pub(crate) struct TableView {
     /// Red fives by suit: in rivers and not called away (a count), and in any meld (a bit).
     red_in_rivers: [u8; 3],
     red_in_melds: u32,
-    /// The tokens' event list with absolute seats, `events_len` of them: a draw's tile byte holds
-    /// the wall position it came from (its tile is shown to the drawer only, so it is read from the
-    /// wall when written); the draws' wall positions are counted as the kernel's `view_events`
-    /// counts them, as is the token of the last discard, which a call marks.
+    /// The tokens' event list with absolute seats, `events_len` of them, each draw's tile hidden
+    /// (`NO_TILE_BYTE`). A draw's tile is shown to its drawer only, so it is read from the wall
+    /// when written: `draw_at` holds the wall position of each draw token, and `draws_of` which
+    /// tokens are each seat's draws (a bit per token). The wall positions are counted as the
+    /// kernel's `view_events` counts them, as is the token of the last discard, which a call marks.
     events: [u32; EVENTS],
     events_len: u32,
+    draw_at: [u8; EVENTS],
+    draws_of: [[u64; EVENTS.div_ceil(64)]; 4],
     live_draws: u32,
     replacement_draws: u32,
     after_kan: bool,
@@ -132,7 +131,7 @@ impl Default for TableView {
         TableView {
             log: [0; LOG_WORDS],
             read: 0,
-            counts: [[0; COUNTS]; 4],
+            blocks: [[0; BLOCK]; 4],
             last_values: [0; 4],
             called: [0; 4],
             river_lens: [0; 4],
@@ -149,6 +148,8 @@ impl Default for TableView {
             red_in_melds: 0,
             events: [0; EVENTS],
             events_len: 0,
+            draw_at: [0; EVENTS],
+            draws_of: [[0; EVENTS.div_ceil(64)]; 4],
             live_draws: 0,
             replacement_draws: 0,
             after_kan: false,
@@ -225,6 +226,7 @@ impl TableView {
                 let t = k::value_type(v) as usize;
                 self.meld_tiles(a, t, 4);
                 self.closed_kans[a] |= 1 << t;
+                self.blocks[a][row(k::P_SEAT_CLOSED_KAN) + t] = 1;
                 self.red_meld(t, (f & k::LOG_WITH_RED) != 0);
             }
             k::EV_ADDED_KAN => {
@@ -235,6 +237,7 @@ impl TableView {
             k::EV_RIICHI => {
                 self.riichi |= 1 << a;
                 self.after_riichi[a] = 0;
+                self.put_row(a, k::P_SEAT_SAFE, self.safe(a));
             }
             _ => {}
         }
@@ -250,7 +253,12 @@ impl TableView {
                 self.live_draws += 1;
                 k::WALL_LIVE_START + self.live_draws - 1
             };
-            self.add_event(k::EV_DRAW | (a << 8) | ((at & 255) << 16));
+            let i = self.events_len as usize;
+            if i < EVENTS {
+                self.draw_at[i] = (at & 255) as u8;
+                self.draws_of[a as usize][i / 64] |= 1 << (i % 64);
+            }
+            self.add_event(k::EV_DRAW | (a << 8) | (k::NO_TILE_BYTE << 16));
         }
         if matches!(kind, k::EV_CHI | k::EV_PON | k::EV_OPEN_KAN) {
             if let Some(i) = self.last_discard_event {
@@ -286,21 +294,29 @@ impl TableView {
         self.since[a] = 0;
         self.own[a] |= bit;
         self.last_discarder = a as u8;
+        for q in 0..4 {
+            if q != a {
+                self.blocks[q][row(k::P_SEAT_SAFE) + t] = 1;
+            }
+        }
+        self.put_row(a, k::P_SEAT_SAFE, self.safe(a));
         if (f & k::LOG_RIICHI_TILE) != 0 {
             self.riichi_tiles[a] |= bit;
+            self.blocks[a][row(k::P_SEAT_RIICHI_TILE) + t] = 1;
         }
         let i = self.river_lens[a] as usize;
         if i < RIVER {
-            let c = &mut self.counts[a];
+            let c = &mut self.blocks[a];
             let turn = i as u8 + 1;
-            c[at(k::P_SEAT_DISCARDED) + t] += 1;
-            c[at(k::P_SEAT_TEDASHI) + t] += u8::from((f & k::LOG_TSUMOGIRI) == 0);
-            if c[at(k::P_SEAT_FIRST_TURN) + t] == 0 {
-                c[at(k::P_SEAT_FIRST_TURN) + t] = turn;
+            c[row(k::P_SEAT_DISCARDED) + t] += 1;
+            c[row(k::P_SEAT_TEDASHI) + t] += u8::from((f & k::LOG_TSUMOGIRI) == 0);
+            if c[row(k::P_SEAT_FIRST_TURN) + t] == 0 {
+                c[row(k::P_SEAT_FIRST_TURN) + t] = turn;
             }
-            c[at(k::P_SEAT_LAST_TURN) + t] = turn;
+            c[row(k::P_SEAT_LAST_TURN) + t] = turn;
             self.last_values[a] = v as u8;
             self.river_lens[a] += 1;
+            self.put_row(a, k::P_SEAT_LAST_DISCARD, bit);
             self.seen[t] = self.seen[t].wrapping_add(1);
             if v >= 34 {
                 self.red_in_rivers[(v - 34) as usize] += 1;
@@ -316,7 +332,7 @@ impl TableView {
             self.called[from] |= 1 << (len - 1);
             let w = u32::from(self.last_values[from]);
             let u = k::value_type(w) as usize;
-            let away = &mut self.counts[from][at(k::P_SEAT_CALLED_AWAY) + u];
+            let away = &mut self.blocks[from][row(k::P_SEAT_CALLED_AWAY) + u];
             *away = away.wrapping_add(1);
             self.seen[u] = self.seen[u].wrapping_sub(1);
             if w >= 34 {
@@ -325,6 +341,7 @@ impl TableView {
         }
         let t = k::value_type(v) as usize;
         self.called_in[a] |= 1 << t;
+        self.blocks[a][row(k::P_SEAT_CALLED_IN) + t] = 1;
         match kind {
             k::EV_CHI => {
                 let low = t.saturating_sub((f & 3) as usize).min(TYPES - 3);
@@ -338,8 +355,13 @@ impl TableView {
         self.red_meld(t, v >= 34 || (f & k::LOG_WITH_RED) != 0);
     }
 
+    /// Writes yes/no row `r` of seat `q`'s block from its set.
+    fn put_row(&mut self, q: usize, r: u32, set: u64) {
+        put_set(&mut self.blocks[q][row(r)..row(r + 1)], set);
+    }
+
     fn meld_tiles(&mut self, a: usize, t: usize, n: u8) {
-        let cell = &mut self.counts[a][at(k::P_SEAT_MELD_TILES) + t];
+        let cell = &mut self.blocks[a][row(k::P_SEAT_MELD_TILES) + t];
         *cell = cell.wrapping_add(n);
         self.seen[t] = self.seen[t].wrapping_add(n);
     }
@@ -388,13 +410,7 @@ impl TableView {
         o.planes[SEATS_TO..].fill(0);
         let cells: &mut [u8] = bytemuck::cast_slice_mut(&mut o.planes[SEATS_FROM..SEATS_TO]);
         for (j, block) in cells.chunks_exact_mut(BLOCK).enumerate() {
-            let q = (observer as usize + j) % 4;
-            for r in COUNT_ROWS {
-                block[row(r)..row(r + 1)].copy_from_slice(&self.counts[q][at(r)..at(r) + TYPES]);
-            }
-            for (r, set) in self.seat_sets(q) {
-                put_set(&mut block[row(r)..row(r + 1)], set);
-            }
+            block.copy_from_slice(&self.blocks[(observer as usize + j) % 4]);
         }
     }
 
@@ -405,20 +421,23 @@ impl TableView {
         let base = (k::T_EVENTS / 4) as usize;
         let out = &mut o.words[base..base + EVENTS];
         let n = self.events_len as usize;
+        // Seats are bits 8 and 9 of a token, with bits 10 to 15 clear: adding the rotation there
+        // and clearing bit 10 turns seat a into (a - observer) mod 4, with no carry further.
+        let turn = ((4 - observer) % 4) << 8;
         for (slot, &token) in out.iter_mut().zip(&self.events[..n]) {
-            let a = (token >> 8) & 3;
-            let mut t = (token & !0xff00) | (((a + 4 - observer) % 4) << 8);
-            if (token & 255) == k::EV_DRAW {
-                let at = (token >> 16) & 255;
+            *slot = (token + turn) & !0x400;
+        }
+        for (w, &bits) in self.draws_of[(observer % 4) as usize].iter().enumerate() {
+            let mut bits = bits;
+            while bits != 0 {
+                let i = w * 64 + bits.trailing_zeros() as usize;
+                bits &= bits - 1;
+                let at = u32::from(self.draw_at[i]);
                 // A game draws from at most the last wall position; past it only a forged state.
-                let tile = if a == observer && at < 136 {
-                    k::wall_tile(s, at)
-                } else {
-                    k::NO_TILE_BYTE
-                };
-                t = (t & !0xff_0000) | (tile << 16);
+                if at < 136 {
+                    out[i] = (out[i] & !0xff_0000) | (k::wall_tile(s, at) << 16);
+                }
             }
-            *slot = t;
         }
         let mut n = n;
         let pending = (s.log_len & k::LOG_PENDING_DRAW) != 0 && s.phase != k::PHASE_OVER;
@@ -440,14 +459,15 @@ impl TableView {
         o.bits.fill(0);
         o.counts.fill(0);
         let counts: &mut [u8] = bytemuck::cast_slice_mut(&mut o.counts);
+        let index = &*PACKED_SEAT_INDEX;
         for j in 0..4u32 {
             let q = (observer + j) as usize % 4;
             for r in COUNT_ROWS {
-                let to = k::packed_seat_index(j, r) as usize * TYPES;
-                counts[to..to + TYPES].copy_from_slice(&self.counts[q][at(r)..at(r) + TYPES]);
+                let to = index[j as usize][r as usize] * TYPES;
+                counts[to..to + TYPES].copy_from_slice(&self.blocks[q][row(r)..row(r + 1)]);
             }
             for (r, set) in self.seat_sets(q) {
-                let i = k::packed_seat_index(j, r) as usize * 2;
+                let i = index[j as usize][r as usize] * 2;
                 o.bits[i] = set as u32;
                 o.bits[i + 1] = (set >> 32) as u32;
             }
