@@ -423,11 +423,12 @@ impl TableView {
         let n = self.events_len as usize;
         // Seats are bits 8 and 9 of a token, with bits 10 to 15 clear: adding the rotation there
         // and clearing bit 10 turns seat a into (a - observer) mod 4, with no carry further.
+        let observer = observer % 4;
         let turn = ((4 - observer) % 4) << 8;
         for (slot, &token) in out.iter_mut().zip(&self.events[..n]) {
             *slot = (token + turn) & !0x400;
         }
-        for (w, &bits) in self.draws_of[(observer % 4) as usize].iter().enumerate() {
+        for (w, &bits) in self.draws_of[observer as usize].iter().enumerate() {
             let mut bits = bits;
             while bits != 0 {
                 let i = w * 64 + bits.trailing_zeros() as usize;
