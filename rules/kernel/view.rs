@@ -147,23 +147,6 @@ fn spread4(n: u32) -> u32 {
     ((n & 15u32) * 0x204081u32) & 0x01010101u32
 }
 
-// Sets the cells of a row whose types are in `set` (34 bits) to 1, a word (four cells) at a time.
-// A row starts at a word boundary (even rows) or half-way into one (odd rows: 34 = 8 * 4 + 2).
-fn put_set(o: &mut ObsPlanes, row: u32, set: [u32; 2]) {
-    let w: u32 = row * 34u32 / 4u32;
-    if (row & 1u32) == 0u32 {
-        for j in 0u32..8u32 {
-            o.planes[(w + j) as usize] |= spread4(set[0] >> (j * 4u32));
-        }
-        o.planes[(w + 8u32) as usize] |= spread4(set[1] & 3u32);
-    } else {
-        o.planes[w as usize] |= spread4(set[0] & 3u32) << 16u32;
-        for j in 0u32..8u32 {
-            o.planes[(w + 1u32 + j) as usize] |= spread4((set[0] >> (2u32 + j * 4u32)) | (set[1] << (30u32 - j * 4u32)));
-        }
-    }
-}
-
 // The cells of a row (each below 256) four to a word: word j holds types 4j..4j+3, the last word
 // types 32 and 33. Writing a row a word at a time instead of a byte at a time.
 fn pack_cells(v: [u32; 34]) -> [u32; 9] {
@@ -210,6 +193,16 @@ fn put_row(o: &mut ObsPlanes, row: u32, p: [u32; 9]) {
     for j in 0u32..9u32 {
         o.planes[(w + j) as usize] |= q[j as usize];
     }
+}
+
+// Sets the cells of row `row` whose types are in `set` (34 bits) to 1, four cells a word.
+fn put_set(o: &mut ObsPlanes, row: u32, set: [u32; 2]) {
+    let mut p: [u32; 9] = [0u32; 9];
+    for j in 0u32..8u32 {
+        p[j as usize] = spread4(set[0] >> (j * 4u32));
+    }
+    p[8] = spread4(set[1] & 3u32);
+    put_row(o, row, p);
 }
 
 fn put_scalar(sc: &mut [u32; 24], i: u32, v: i32) {
