@@ -142,69 +142,6 @@ fn set_plane(o: &mut ObsPlanes, row: u32, t: u32, v: u32) {
     o.planes[(i / 4u32) as usize] = with_byte(o.planes[(i / 4u32) as usize], i % 4u32, v);
 }
 
-// Four bits to the low bit of four bytes (the shifted copies of `n` do not overlap, so no carry).
-fn spread4(n: u32) -> u32 {
-    ((n & 15u32) * 0x204081u32) & 0x01010101u32
-}
-
-// The cells of a row (each below 256) four to a word: word j holds types 4j..4j+3, the last word
-// types 32 and 33. Writing a row a word at a time instead of a byte at a time.
-fn pack_cells(v: [u32; 34]) -> [u32; 9] {
-    let mut p: [u32; 9] = [0u32; 9];
-    for j in 0u32..8u32 {
-        let i: u32 = j * 4u32;
-        p[j as usize] = v[i as usize]
-            | (v[(i + 1u32) as usize] << 8u32)
-            | (v[(i + 2u32) as usize] << 16u32)
-            | (v[(i + 3u32) as usize] << 24u32);
-    }
-    p[8] = v[32] | (v[33] << 8u32);
-    p
-}
-
-// Packed cells (`pack_cells`) as the nine words row `row` spans from its first word: 34 = 8 * 4 + 2,
-// so even rows start on a word boundary and odd rows half-way into one.
-fn at_row(p: [u32; 9], row: u32) -> [u32; 9] {
-    if (row & 1u32) == 0u32 {
-        return p;
-    }
-    let mut q: [u32; 9] = [0u32; 9];
-    q[0] = p[0] << 16u32;
-    for j in 1u32..9u32 {
-        q[j as usize] = (p[(j - 1u32) as usize] >> 16u32) | (p[j as usize] << 16u32);
-    }
-    q
-}
-
-// Packed cells of at most 4 each, as 1 where the cell is above `k` and 0 elsewhere: adding 127 - k
-// to a byte sets its top bit exactly then, and no byte carries into the next.
-fn cells_above(p: [u32; 9], k: u32) -> [u32; 9] {
-    let mut q: [u32; 9] = [0u32; 9];
-    for j in 0u32..9u32 {
-        q[j as usize] = ((p[j as usize] + (127u32 - k) * 0x01010101u32) >> 7u32) & 0x01010101u32;
-    }
-    q
-}
-
-// Writes packed cells into row `row` of zeroed planes.
-fn put_row(o: &mut ObsPlanes, row: u32, p: [u32; 9]) {
-    let w: u32 = row * 34u32 / 4u32;
-    let q: [u32; 9] = at_row(p, row);
-    for j in 0u32..9u32 {
-        o.planes[(w + j) as usize] |= q[j as usize];
-    }
-}
-
-// Sets the cells of row `row` whose types are in `set` (34 bits) to 1, four cells a word.
-fn put_set(o: &mut ObsPlanes, row: u32, set: [u32; 2]) {
-    let mut p: [u32; 9] = [0u32; 9];
-    for j in 0u32..8u32 {
-        p[j as usize] = spread4(set[0] >> (j * 4u32));
-    }
-    p[8] = spread4(set[1] & 3u32);
-    put_row(o, row, p);
-}
-
 fn put_scalar(sc: &mut [u32; 24], i: u32, v: i32) {
     sc[(i / 2u32) as usize] |= ((v as u32) & 65535u32) << ((i % 2u32) * 16u32);
 }
@@ -705,7 +642,7 @@ fn view_events(s: &mut GameState, seat: u32, o: &mut ObsTokens) -> u32 {
                 tile = wall_tile(s, pos);
             }
             if n < TOKEN_EVENTS {
-                o.words[(base + n) as usize] = EV_DRAW | (rel(seat, a) << 8u32) | (tile << 16u32);
+                o.words[(base + n) as usize] = event_token(EV_DRAW, rel(seat, a), tile, 0u32);
                 n += 1u32;
             }
         }
@@ -714,7 +651,7 @@ fn view_events(s: &mut GameState, seat: u32, o: &mut ObsTokens) -> u32 {
             tile = NO_TILE_BYTE;
         }
         if n < TOKEN_EVENTS {
-            o.words[(base + n) as usize] = k | (rel(seat, a) << 8u32) | (tile << 16u32) | ((f & !LOG_DREW) << 24u32);
+            o.words[(base + n) as usize] = event_token(k, rel(seat, a), tile, f & !LOG_DREW);
             n += 1u32;
         }
         if k != EV_DORA {
@@ -726,7 +663,7 @@ fn view_events(s: &mut GameState, seat: u32, o: &mut ObsTokens) -> u32 {
         if s.current == seat {
             tile = s.drawn;
         }
-        o.words[(base + n) as usize] = EV_DRAW | (rel(seat, s.current) << 8u32) | (tile << 16u32);
+        o.words[(base + n) as usize] = event_token(EV_DRAW, rel(seat, s.current), tile, 0u32);
         n += 1u32;
     }
     n

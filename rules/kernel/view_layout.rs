@@ -176,6 +176,16 @@ pub const T_SCALARS: u32 = 152;
 pub const T_EVENTS: u32 = 248;
 // Events of the token form: draws are tokens of their own, so a round needs at most 118 + 70.
 pub const TOKEN_EVENTS: u32 = 192;
+// An event token is a word of four bytes: its kind (EV_*), the actor's ego seat, the tile (a value,
+// NO_TILE_BYTE for none or hidden) and the log's flags. The seat's byte holds 0..3 only, so a
+// rotation of seats can be added to a token without a carry past the byte.
+pub const TOKEN_SEAT_SHIFT: u32 = 8;
+pub const TOKEN_TILE_SHIFT: u32 = 16;
+pub const TOKEN_FLAGS_SHIFT: u32 = 24;
+
+pub fn event_token(kind: u32, seat: u32, tile: u32, flags: u32) -> u32 {
+    kind | (seat << TOKEN_SEAT_SHIFT) | (tile << TOKEN_TILE_SHIFT) | (flags << TOKEN_FLAGS_SHIFT)
+}
 
 #[derive(Clone, Copy)]
 #[repr(C)]

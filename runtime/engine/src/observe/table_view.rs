@@ -55,28 +55,13 @@ static PACKED_SEAT_INDEX: std::sync::LazyLock<[[usize; k::P_SEAT_ROWS as usize];
     std::array::from_fn(|j| std::array::from_fn(|r| k::packed_seat_index(j as u32, r as u32) as usize))
 });
 
-/// Each byte of `b` as a byte 0 or 1: the cells of eight tile types of a yes/no row.
-const SPREAD: [u64; 256] = {
-    let mut t = [0u64; 256];
-    let mut b = 0;
-    while b < 256 {
-        let mut i = 0;
-        while i < 8 {
-            t[b] |= (((b >> i) & 1) as u64) << (8 * i);
-            i += 1;
-        }
-        b += 1;
-    }
-    t
-};
-
-/// Writes a 34-bit set as a yes/no row of 34 cells.
+/// Writes a 34-bit set as a yes/no row of 34 cells (the kernel's cells of the set, four to a
+/// word, low byte first).
 fn put_set(cells: &mut [u8], set: u64) {
-    for (i, chunk) in cells[..32].chunks_exact_mut(8).enumerate() {
-        chunk.copy_from_slice(&SPREAD[((set >> (8 * i)) & 255) as usize].to_le_bytes());
+    let words = k::set_cells([set as u32, (set >> 32) as u32]);
+    for (four, word) in cells[..TYPES].chunks_mut(4).zip(words) {
+        four.copy_from_slice(&word.to_le_bytes()[..four.len()]);
     }
-    cells[32] = ((set >> 32) & 1) as u8;
-    cells[33] = ((set >> 33) & 1) as u8;
 }
 
 /// What the table shows, as of the first `read` entries of a round's log.
@@ -258,18 +243,18 @@ impl TableView {
                 self.draw_at[i] = (at & 255) as u8;
                 self.draws_of[a as usize][i / 64] |= 1 << (i % 64);
             }
-            self.add_event(k::EV_DRAW | (a << 8) | (k::NO_TILE_BYTE << 16));
+            self.add_event(k::event_token(k::EV_DRAW, a, k::NO_TILE_BYTE, 0));
         }
         if matches!(kind, k::EV_CHI | k::EV_PON | k::EV_OPEN_KAN) {
             if let Some(i) = self.last_discard_event {
-                self.events[i as usize] |= k::LOG_CALLED << 24;
+                self.events[i as usize] |= k::LOG_CALLED << k::TOKEN_FLAGS_SHIFT;
             }
         }
         if kind == k::EV_DISCARD {
             self.last_discard_event = (self.events_len < EVENTS as u32).then_some(self.events_len);
         }
         let tile = if v == k::LOG_NO_TILE { k::NO_TILE_BYTE } else { v };
-        self.add_event(kind | (a << 8) | (tile << 16) | ((f & !k::LOG_DREW) << 24));
+        self.add_event(k::event_token(kind, a, tile, f & !k::LOG_DREW));
         if kind != k::EV_DORA {
             self.after_kan = matches!(kind, k::EV_OPEN_KAN | k::EV_CLOSED_KAN | k::EV_ADDED_KAN);
         }
@@ -421,12 +406,12 @@ impl TableView {
         let base = (k::T_EVENTS / 4) as usize;
         let out = &mut o.words[base..base + EVENTS];
         let n = self.events_len as usize;
-        // Seats are bits 8 and 9 of a token, with bits 10 to 15 clear: adding the rotation there
-        // and clearing bit 10 turns seat a into (a - observer) mod 4, with no carry further.
+        // A token's seat byte holds 0..3: adding the rotation there and clearing the byte's bit 2
+        // turns seat a into (a - observer) mod 4, with no carry further.
         let observer = observer % 4;
-        let turn = ((4 - observer) % 4) << 8;
+        let turn = ((4 - observer) % 4) << k::TOKEN_SEAT_SHIFT;
         for (slot, &token) in out.iter_mut().zip(&self.events[..n]) {
-            *slot = (token + turn) & !0x400;
+            *slot = (token + turn) & !(4 << k::TOKEN_SEAT_SHIFT);
         }
         for (w, &bits) in self.draws_of[observer as usize].iter().enumerate() {
             let mut bits = bits;
@@ -436,7 +421,7 @@ impl TableView {
                 let at = u32::from(self.draw_at[i]);
                 // A game draws from at most the last wall position; past it only a forged state.
                 if at < 136 {
-                    out[i] = (out[i] & !0xff_0000) | (k::wall_tile(s, at) << 16);
+                    out[i] = (out[i] & !(0xff << k::TOKEN_TILE_SHIFT)) | (k::wall_tile(s, at) << k::TOKEN_TILE_SHIFT);
                 }
             }
         }
@@ -448,7 +433,7 @@ impl TableView {
             } else {
                 k::NO_TILE_BYTE
             };
-            out[n] = k::EV_DRAW | (((s.current + 4 - observer) % 4) << 8) | ((tile & 255) << 16);
+            out[n] = k::event_token(k::EV_DRAW, (s.current + 4 - observer) % 4, tile & 255, 0);
             n += 1;
         }
         let at = k::T_EVENTS_LEN as usize;
