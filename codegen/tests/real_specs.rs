@@ -57,9 +57,9 @@ const ALL_YAKU: [&str; 45] = [
 fn every_variant_loads() {
     assert_eq!(
         rinshan_codegen::variant_names(&rules_dir()),
-        ["mjsoul", "mleague", "no_red", "red"]
+        ["mjsoul", "mleague", "no_red", "red", "wrc"]
     );
-    for v in ["red", "no_red", "mjsoul", "mleague"] {
+    for v in ["red", "no_red", "mjsoul", "mleague", "wrc"] {
         let spec = load_real(v);
         assert_eq!(spec.variant.name, v);
     }
@@ -71,7 +71,7 @@ fn unknown_variant_lists_the_known_ones() {
         panic!("loaded")
     };
     assert!(
-        e[0].message.contains("no variant `blue`") && e[0].message.contains("mjsoul, mleague, no_red, red"),
+        e[0].message.contains("no variant `blue`") && e[0].message.contains("mjsoul, mleague, no_red, red, wrc"),
         "{}",
         e[0]
     );

@@ -26,7 +26,7 @@ def play(env, steps, seed=0):
 
 
 @pytest.mark.parametrize(
-    "variant,actions", [("red", 87), ("mjsoul", 87), ("mleague", 86), ("no-red", 79)]
+    "variant,actions", [("red", 87), ("mjsoul", 87), ("mleague", 86), ("no-red", 79), ("wrc", 79)]
 )
 def test_shapes_and_dtypes(variant, actions):
     env = rinshan.make(

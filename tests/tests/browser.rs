@@ -285,7 +285,7 @@ async fn spectate_and_replay(c: &Client, base: &str) {
     .await;
     let built: Vec<String> = rinshan_engine::Variant::ALL.iter().map(|v| v.to_string()).collect();
     assert_eq!(rules, json!(built));
-    for name in ["red", "no-red", "mjsoul", "mleague"] {
+    for name in ["red", "no-red", "mjsoul", "mleague", "wrc"] {
         assert!(built.iter().any(|b| b == name), "{name}: {built:?}");
     }
     js(&c, "document.querySelector('[name=delay]').value = '50'; document.querySelector('[name=seed]').value = '3'; return true;").await;

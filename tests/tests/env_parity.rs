@@ -147,6 +147,11 @@ fn mleague_half_games_are_identical_on_cpu_and_gpu() {
     parity(Variant::Mleague);
 }
 
+#[test]
+fn wrc_half_games_are_identical_on_cpu_and_gpu() {
+    parity(Variant::Wrc);
+}
+
 /// Hero mode on both backends: the caller plays one seat at random, the three agents the others.
 #[test]
 fn hero_mode_is_identical_on_cpu_and_gpu() {

@@ -37,7 +37,7 @@ macro_rules! invariant_suite {
                 let mut reward_sum = [0f64; 4];
                 let mut steps = 0u32;
                 loop {
-                    check_state(&s, g);
+                    check_state(&s, g, variant::STARTING_POINTS as i32);
                     let view = variant::game_view(s);
                     if view.terminated != 0 {
                         break;
@@ -83,7 +83,7 @@ macro_rules! invariant_suite {
                 total_steps += u64::from(steps);
                 per_game.push_str(&format!("{g} {steps} {:016x}\n", game_print.0));
                 for p in 0..4 {
-                    let change = f64::from(s.scores[p] - 25_000) / 100.0;
+                    let change = f64::from(s.scores[p] - variant::STARTING_POINTS as i32) / 100.0;
                     assert_eq!(
                         reward_sum[p], change,
                         "game {g}: rewards of seat {p} add up to its final score change"
@@ -132,8 +132,8 @@ impl Fingerprint {
 }
 
 /// The engine's invariants of every state (tiles and points conserved, one seat to act).
-fn check_state(s: &GameState, g: u32) {
-    if let Err(e) = rinshan_engine::invariants::check(s, 25_000) {
+fn check_state(s: &GameState, g: u32, start: i32) {
+    if let Err(e) = rinshan_engine::invariants::check(s, start) {
         panic!("game {g}: {e}");
     }
 }
@@ -184,6 +184,15 @@ invariant_suite!(
     10_000,
     7_277_204,
     "04e3928f26741bf2"
+);
+// The World Riichi Championship's rules: pinned when the variant was added; it brought no option,
+// so the other four kept their pins.
+invariant_suite!(
+    wrc_random_games_keep_the_invariants,
+    wrc,
+    10_000,
+    7_275_428,
+    "53b700289fb36552"
 );
 
 #[test]

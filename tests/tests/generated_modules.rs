@@ -47,6 +47,11 @@ fn mleague_wgsl_snapshot() {
     insta::assert_snapshot!("mleague_wgsl", body(wgsl(Variant::Mleague)));
 }
 
+#[test]
+fn wrc_wgsl_snapshot() {
+    insta::assert_snapshot!("wrc_wgsl", body(wgsl(Variant::Wrc)));
+}
+
 /// Size and member offsets of struct `name` in a WGSL module, as naga lays it out.
 fn wgsl_layout(module: &naga::Module, name: &str) -> (u32, Vec<(String, u32)>) {
     let mut layouter = naga::proc::Layouter::default();

@@ -300,6 +300,7 @@ runner!(run_red, red);
 runner!(run_no_red, no_red);
 runner!(run_mjsoul, mjsoul);
 runner!(run_mleague, mleague);
+runner!(run_wrc, wrc);
 
 fn run(sc: &Scenario) -> Result<(), String> {
     match sc.variant.as_str() {
@@ -307,7 +308,8 @@ fn run(sc: &Scenario) -> Result<(), String> {
         "no_red" => run_no_red(sc),
         "mjsoul" => run_mjsoul(sc),
         "mleague" => run_mleague(sc),
-        v => Err(format!("unknown variant `{v}` (red, no_red, mjsoul, mleague)")),
+        "wrc" => run_wrc(sc),
+        v => Err(format!("unknown variant `{v}` (red, no_red, mjsoul, mleague, wrc)")),
     }
 }
 
