@@ -39,7 +39,7 @@ fn same_seeds_give_the_same_games_on_one_and_two_threads() {
         let (all, s3) = play(config(v, 64, None), 1500);
         for (k, ((a, b), c)) in one.iter().zip(&two).zip(&all).enumerate() {
             assert_eq!(a, b, "{v}: step {k} differs between 1 and 2 threads");
-            assert_eq!(a, c, "{v}: step {k} differs between 1 thread and the global pool");
+            assert_eq!(a, c, "{v}: step {k} differs between 1 thread and all threads");
         }
         assert_eq!(s1, s2);
         assert_eq!(s1, s3);

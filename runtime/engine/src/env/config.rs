@@ -110,7 +110,9 @@ pub struct Config {
     pub penalty: Option<f32>,
     /// A finished game is replaced by a new one in the same step (its view still reports the end).
     pub auto_reset: bool,
-    /// CPU threads: `None` = rayon's global pool (all cores), `Some(n)` = a pool of n threads.
+    /// CPU threads, the calling thread included: `None` = as many as rayon's pool has (all cores
+    /// by default), `Some(n)` = n. The thread that makes the env works in its pool (see the CPU
+    /// backend's `pool_for`).
     pub threads: Option<usize>,
     /// Observation forms written for each env's current player by every reset and step
     /// ([`Env::observation`]); empty (the default) costs nothing.

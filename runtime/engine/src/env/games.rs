@@ -150,21 +150,18 @@ impl Env {
         let backing = match gpu {
             Some(gpu) => Backing::Gpu(Box::new(GpuEnv::new(gpu, variant, b, words, DEAL_WORDS)?)),
             None => {
-                let pool = match config.threads {
-                    Some(n) if n > 1 => Some(
-                        rayon::ThreadPoolBuilder::new()
-                            .num_threads(n)
-                            .build()
-                            .map_err(|e| EnvError::BadThreads(e.to_string()))?,
-                    ),
-                    _ => None,
+                let serial = config.threads == Some(1) || b < PARALLEL_MIN;
+                let pool = if serial {
+                    None
+                } else {
+                    super::cpu::pool_for(config.threads).map_err(EnvError::BadThreads)?
                 };
                 Backing::Cpu(CpuEnv {
                     states: vec![0; b * words.1],
                     views: vec![0; b * words.2],
                     tables: Vec::new(),
                     pool,
-                    serial: config.threads == Some(1) || b < PARALLEL_MIN,
+                    serial,
                 })
             }
         };
@@ -228,9 +225,9 @@ impl Env {
         &self.step
     }
 
-    /// Runs `job` on every part with the threads the step uses (the env's pool, rayon's global
-    /// pool, or only the calling thread when the env steps serially or on the GPU): for callers
-    /// that copy a step's rows into arrays of their own, split by rows as the envs are.
+    /// Runs `job` on every part with the threads the step uses (the env's pool, or only the
+    /// calling thread when the env steps serially or on the GPU): for callers that copy a step's
+    /// rows into arrays of their own, split by rows as the envs are.
     pub fn for_each_part<T: Send>(&self, parts: Vec<T>, job: impl Fn(T) + Send + Sync) {
         match &self.backing {
             Backing::Cpu(cpu) if !cpu.serial => cpu.install(|| parts.into_par_iter().for_each(job)),
