@@ -112,7 +112,7 @@ pub struct Config {
     pub auto_reset: bool,
     /// CPU threads, the calling thread included: `None` = as many as rayon's pool has (all cores
     /// by default), `Some(n)` = n. The thread that makes the env works in its pool (see the CPU
-    /// backend's `pool_for`).
+    /// backend's `pool_for`); stepped from another thread, the pool's other threads do the work.
     pub threads: Option<usize>,
     /// Observation forms written for each env's current player by every reset and step
     /// ([`Env::observation`]); empty (the default) costs nothing.
