@@ -6,7 +6,7 @@
 use rinshan_engine::hand::{Yaku, YakuHan};
 
 use super::write::YAKUMAN_HAN;
-use crate::tenhou::log::{our_yaku, LoggedWin};
+use crate::tenhou::log::{check_yaku, our_yaku, LoggedWin, MOST_YAKU_HAN};
 use crate::tenhou::write::{base_points, limit_of, payment, points_text};
 
 /// The original mjai server's yaku names (also written by the Tenhou-to-MJAI converters) and
@@ -87,6 +87,9 @@ pub(super) fn hora_yaku(
             continue;
         }
         let name = yaku_name(&name).ok_or_else(|| format!("unknown yaku {name:?}"))?;
+        if han > MOST_YAKU_HAN {
+            return Err(format!("yaku {name} is worth {han} han, more than a hand holds"));
+        }
         let han = if han >= YAKUMAN_HAN && !["dora", "aka", "ura"].contains(&name) {
             YakuHan::Yakuman(han / YAKUMAN_HAN)
         } else {
@@ -94,6 +97,7 @@ pub(super) fn hora_yaku(
         };
         yaku.push(Yaku { name, han });
     }
+    check_yaku(&yaku)?;
     let han_sum: u32 = yaku
         .iter()
         .map(|y| if let YakuHan::Han(h) = y.han { h } else { 0 })

@@ -41,7 +41,9 @@ mod tests;
 mod value;
 
 pub use moves::{Discard, Draw, Rel};
-pub(crate) use result::{our_yaku, points_total, tenhou_yaku, yaku_name as tenhou_yaku_name};
+pub(crate) use result::{
+    check_yaku, our_yaku, points_total, tenhou_yaku, yaku_name as tenhou_yaku_name, MOST_YAKU_HAN,
+};
 pub use result::{Limit, LoggedDraw, LoggedWin, Outcome};
 
 use moves::{parse_discard, parse_draw, tile};

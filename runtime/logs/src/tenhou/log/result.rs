@@ -297,6 +297,7 @@ fn parse_win(deltas: &Value, info: &Value) -> Result<LoggedWin, String> {
         .skip(4)
         .map(parse_yaku)
         .collect::<Result<Vec<Yaku>, String>>()?;
+    check_yaku(&yaku)?;
     if let Some(han) = han {
         let sum: u32 = yaku
             .iter()
@@ -353,6 +354,28 @@ struct Points {
     fu: Option<u32>,
     han: Option<u32>,
     limit: Option<Limit>,
+}
+
+/// The most han one logged yaku may be worth. No hand comes near it (ten dora indicators can
+/// find at most 40 dora, and a yakuman is 13 han in MJAI's count), and with each yaku named once
+/// a win's han and yakuman add up without overflow, whatever a log claims.
+pub(crate) const MOST_YAKU_HAN: u32 = 99;
+
+/// A win's yaku as the log lists them: each named once and worth at most [`MOST_YAKU_HAN`].
+pub(crate) fn check_yaku(yaku: &[Yaku]) -> Result<(), String> {
+    for (i, y) in yaku.iter().enumerate() {
+        if y.han.number() > MOST_YAKU_HAN {
+            return Err(format!(
+                "yaku {} is worth {}, more than a hand holds",
+                y.name,
+                y.han.number()
+            ));
+        }
+        if yaku[..i].iter().any(|x| x.name == y.name) {
+            return Err(format!("yaku {} is listed twice", y.name));
+        }
+    }
+    Ok(())
 }
 
 fn number(digits: &str) -> Result<u32, String> {

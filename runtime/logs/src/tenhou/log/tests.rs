@@ -420,6 +420,19 @@ fn malformed_rounds_name_file_line_and_field() {
         "unknown yaku name \"謎役\"",
     );
     check(
+        &broken(|r| round_of(r)[16][2][4] = json!("混一色(4000000000飜)")),
+        "result",
+        "is worth 4000000000, more than a hand holds",
+    );
+    check(
+        &broken(|r| {
+            let first = round_of(r)[16][2][4].clone();
+            round_of(r)[16][2][5] = first;
+        }),
+        "result",
+        "is listed twice",
+    );
+    check(
         &broken(|r| round_of(r)[16][1] = json!([0, 8700, -7700])),
         "result",
         "win 0: deltas",
