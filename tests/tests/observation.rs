@@ -11,7 +11,6 @@
 use rinshan_engine::generated::kernel::{
     self, GameState, ObsAnalysis, ObsPacked, ObsPlanes, ObsTokens, ResetInput, MODE_HALF, OBSERVE_CURRENT,
 };
-use rinshan_engine::generated::{no_red, red};
 use rinshan_engine::observe::{resample_hidden, unpack_planes, OwnDraws};
 use rinshan_engine::random::Rng;
 use rinshan_engine::Variant;
@@ -28,26 +27,18 @@ struct Kernels {
     analysis: fn(GameState, u32) -> ObsAnalysis,
 }
 
-const KERNELS: [Kernels; 2] = [
-    Kernels {
-        variant: Variant::Red,
-        new: red::game_new,
-        step: red::game_step,
-        planes: red::observe_planes,
-        tokens: red::observe_tokens,
-        packed: red::observe_packed,
-        analysis: red::observe_analysis,
-    },
-    Kernels {
-        variant: Variant::NoRed,
-        new: no_red::game_new,
-        step: no_red::game_step,
-        planes: no_red::observe_planes,
-        tokens: no_red::observe_tokens,
-        packed: no_red::observe_packed,
-        analysis: no_red::observe_analysis,
-    },
-];
+/// The kernels of `variant`.
+fn kernels(variant: Variant) -> Kernels {
+    rinshan_engine::with_variant!(variant, m => Kernels {
+        variant,
+        new: m::game_new,
+        step: m::game_step,
+        planes: m::observe_planes,
+        tokens: m::observe_tokens,
+        packed: m::observe_packed,
+        analysis: m::observe_analysis,
+    })
+}
 
 fn reset_input(seed: u64, dealer: u32, wall: Option<[u32; 136]>) -> ResetInput {
     ResetInput {
@@ -138,14 +129,30 @@ fn hidden_resampling(k: Kernels) {
     eprintln!("{variant}: {states} states of {game} half games, hidden tiles resampled, observations unchanged");
 }
 
+// One test per rule set, so that they run side by side.
 #[test]
 fn red_observations_do_not_depend_on_hidden_tiles() {
-    hidden_resampling(KERNELS[0]);
+    hidden_resampling(kernels(Variant::Red));
 }
 
 #[test]
 fn no_red_observations_do_not_depend_on_hidden_tiles() {
-    hidden_resampling(KERNELS[1]);
+    hidden_resampling(kernels(Variant::NoRed));
+}
+
+#[test]
+fn mjsoul_observations_do_not_depend_on_hidden_tiles() {
+    hidden_resampling(kernels(Variant::Mjsoul));
+}
+
+#[test]
+fn mleague_observations_do_not_depend_on_hidden_tiles() {
+    hidden_resampling(kernels(Variant::Mleague));
+}
+
+#[test]
+fn wrc_observations_do_not_depend_on_hidden_tiles() {
+    hidden_resampling(kernels(Variant::Wrc));
 }
 
 /// The same walls dealt with the seats relabelled by `shift`: seat q of the first game is seat
@@ -187,12 +194,27 @@ fn seat_rotation(k: Kernels) {
 
 #[test]
 fn red_observations_are_the_same_from_relabelled_seats() {
-    seat_rotation(KERNELS[0]);
+    seat_rotation(kernels(Variant::Red));
 }
 
 #[test]
 fn no_red_observations_are_the_same_from_relabelled_seats() {
-    seat_rotation(KERNELS[1]);
+    seat_rotation(kernels(Variant::NoRed));
+}
+
+#[test]
+fn mjsoul_observations_are_the_same_from_relabelled_seats() {
+    seat_rotation(kernels(Variant::Mjsoul));
+}
+
+#[test]
+fn mleague_observations_are_the_same_from_relabelled_seats() {
+    seat_rotation(kernels(Variant::Mleague));
+}
+
+#[test]
+fn wrc_observations_are_the_same_from_relabelled_seats() {
+    seat_rotation(kernels(Variant::Wrc));
 }
 
 fn token_byte(t: &ObsTokens, at: u32) -> u8 {
@@ -204,7 +226,7 @@ fn token_byte(t: &ObsTokens, at: u32) -> u8 {
 /// nobody else's draw shows a tile.
 #[test]
 fn event_tokens_replay_the_rivers_and_own_draws() {
-    let k = KERNELS[0];
+    let k = kernels(Variant::Red);
     let mut positions = 0;
     for game in 0..20u64 {
         let mut s = (k.new)(reset_input(40 + game, 4, None));
@@ -280,7 +302,7 @@ fn analysis_is_shanten_and_ukeire_counted_draw_by_draw() {
     use kernel::{
         shanten, ShantenInput, A_DISCARD_SHANTEN, A_DISCARD_UKEIRE, A_IMPROVING, A_WAITS, P_HAND, P_SEEN, P_WAITS,
     };
-    let k = KERNELS[0];
+    let k = kernels(Variant::Red);
     let sh = |h: &[u32; 34]| shanten(ShantenInput { hand: *h }).shanten;
     // The unseen copies of each draw that lowers the shanten of `h`.
     let improving = |h: &[u32; 34], unseen: &[u32; 34]| -> [u32; 34] {
