@@ -918,6 +918,29 @@ fn brute_force_agrees_on_20000_random_no_red_wins() {
     assert!(!stats.seen_yaku.contains_key("aka"), "{stats:?}");
 }
 
+// The other rule sets score the same hands by their `[scoring]` options (double and several
+// yakuman, kazoe yakuman, kiriage mangan), which the oracle reads from their specs too.
+#[test]
+fn brute_force_agrees_on_20000_random_mjsoul_wins() {
+    let stats = check_random_wins("mjsoul", 2 << 40..(2 << 40) + 20_000);
+    assert!(stats.multi_reading_wins > 200 && stats.yakuman > 20, "{stats:?}");
+    assert!(stats.seen_yaku.contains_key("aka"), "{stats:?}");
+}
+
+#[test]
+fn brute_force_agrees_on_20000_random_mleague_wins() {
+    let stats = check_random_wins("mleague", 3 << 40..(3 << 40) + 20_000);
+    assert!(stats.multi_reading_wins > 200 && stats.yakuman > 20, "{stats:?}");
+    assert!(stats.seen_yaku.contains_key("aka"), "{stats:?}");
+}
+
+#[test]
+fn brute_force_agrees_on_20000_random_wrc_wins() {
+    let stats = check_random_wins("wrc", 4 << 40..(4 << 40) + 20_000);
+    assert!(stats.multi_reading_wins > 200 && stats.yakuman > 20, "{stats:?}");
+    assert!(!stats.seen_yaku.contains_key("aka"), "{stats:?}");
+}
+
 /// A hand picked by hand: (concealed tiles with the winning one, winning tile, melds, tsumo, riichi,
 /// round wind, seat wind), and what the rules make of it: Ok((han, fu, yakuman)) or the error.
 type Picked = (
