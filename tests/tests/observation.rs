@@ -129,32 +129,6 @@ fn hidden_resampling(k: Kernels) {
     eprintln!("{variant}: {states} states of {game} half games, hidden tiles resampled, observations unchanged");
 }
 
-// One test per rule set, so that they run side by side.
-#[test]
-fn red_observations_do_not_depend_on_hidden_tiles() {
-    hidden_resampling(kernels(Variant::Red));
-}
-
-#[test]
-fn no_red_observations_do_not_depend_on_hidden_tiles() {
-    hidden_resampling(kernels(Variant::NoRed));
-}
-
-#[test]
-fn mjsoul_observations_do_not_depend_on_hidden_tiles() {
-    hidden_resampling(kernels(Variant::Mjsoul));
-}
-
-#[test]
-fn mleague_observations_do_not_depend_on_hidden_tiles() {
-    hidden_resampling(kernels(Variant::Mleague));
-}
-
-#[test]
-fn wrc_observations_do_not_depend_on_hidden_tiles() {
-    hidden_resampling(kernels(Variant::Wrc));
-}
-
 /// The same walls dealt with the seats relabelled by `shift`: seat q of the first game is seat
 /// q + shift of the second, and must see exactly what it saw.
 fn seat_rotation(k: Kernels) {
@@ -192,29 +166,27 @@ fn seat_rotation(k: Kernels) {
     eprintln!("{variant}: {checked} positions x 4 seats equal under seat relabelling");
 }
 
-#[test]
-fn red_observations_are_the_same_from_relabelled_seats() {
-    seat_rotation(kernels(Variant::Red));
+/// Both checks for each rule set, one test each, so that they run side by side.
+macro_rules! each_rule_set {
+    ($($variant:ident: $hidden:ident, $relabelled:ident;)*) => {$(
+        #[test]
+        fn $hidden() {
+            hidden_resampling(kernels(Variant::$variant));
+        }
+
+        #[test]
+        fn $relabelled() {
+            seat_rotation(kernels(Variant::$variant));
+        }
+    )*};
 }
 
-#[test]
-fn no_red_observations_are_the_same_from_relabelled_seats() {
-    seat_rotation(kernels(Variant::NoRed));
-}
-
-#[test]
-fn mjsoul_observations_are_the_same_from_relabelled_seats() {
-    seat_rotation(kernels(Variant::Mjsoul));
-}
-
-#[test]
-fn mleague_observations_are_the_same_from_relabelled_seats() {
-    seat_rotation(kernels(Variant::Mleague));
-}
-
-#[test]
-fn wrc_observations_are_the_same_from_relabelled_seats() {
-    seat_rotation(kernels(Variant::Wrc));
+each_rule_set! {
+    Red: red_observations_do_not_depend_on_hidden_tiles, red_observations_are_the_same_from_relabelled_seats;
+    NoRed: no_red_observations_do_not_depend_on_hidden_tiles, no_red_observations_are_the_same_from_relabelled_seats;
+    Mjsoul: mjsoul_observations_do_not_depend_on_hidden_tiles, mjsoul_observations_are_the_same_from_relabelled_seats;
+    Mleague: mleague_observations_do_not_depend_on_hidden_tiles, mleague_observations_are_the_same_from_relabelled_seats;
+    Wrc: wrc_observations_do_not_depend_on_hidden_tiles, wrc_observations_are_the_same_from_relabelled_seats;
 }
 
 fn token_byte(t: &ObsTokens, at: u32) -> u8 {
