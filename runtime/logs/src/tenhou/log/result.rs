@@ -364,9 +364,14 @@ pub(crate) const MOST_YAKU_HAN: u32 = 99;
 /// A win's yaku as the log lists them: each named once and worth at most [`MOST_YAKU_HAN`].
 pub(crate) fn check_yaku(yaku: &[Yaku]) -> Result<(), String> {
     for (i, y) in yaku.iter().enumerate() {
+        let unit = if matches!(y.han, YakuHan::Han(_)) {
+            "han"
+        } else {
+            "yakuman"
+        };
         if y.han.number() > MOST_YAKU_HAN {
             return Err(format!(
-                "yaku {} is worth {}, more than a hand holds",
+                "yaku {} is worth {} {unit}, more than a hand holds",
                 y.name,
                 y.han.number()
             ));

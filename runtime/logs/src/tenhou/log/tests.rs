@@ -422,7 +422,7 @@ fn malformed_rounds_name_file_line_and_field() {
     check(
         &broken(|r| round_of(r)[16][2][4] = json!("混一色(4000000000飜)")),
         "result",
-        "is worth 4000000000, more than a hand holds",
+        "yaku honitsu is worth 4000000000 han, more than a hand holds",
     );
     check(
         &broken(|r| {
