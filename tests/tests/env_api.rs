@@ -1,7 +1,7 @@
 //! The batched environment's public API on the CPU backend: determinism whatever the thread
 //! count, dealing a given wall, typed errors for bad input, and illegal actions as outcomes.
 
-use rinshan_engine::env::{Config, Env, EnvError, Mode, Step};
+use rinshan_engine::env::{Config, Deal, Env, EnvError, Mode, Step};
 use rinshan_engine::random::Rng;
 use rinshan_engine::{Tile, TileType, Variant};
 
@@ -195,6 +195,51 @@ fn bad_input_is_a_typed_error() {
     let e = no_red.reset_with_walls(&[good], &[0]).expect_err("red fives in no-red");
     assert!(e.to_string().contains("has none"), "{e}");
     assert!(no_red.reset_with_walls(&[sorted_wall(false)], &[0]).is_ok());
+
+    // A forced deal from a table whose payments would overflow the kernel's points is refused.
+    let deal = Deal {
+        round: 0,
+        dealer: 0,
+        honba: 0,
+        sticks: 0,
+        scores: [25_000; 4],
+        wall: good,
+    };
+    for (bad, needle) in [
+        (
+            Deal {
+                round: 16,
+                ..deal.clone()
+            },
+            "round 16 is not 0-15",
+        ),
+        (
+            Deal {
+                honba: 10_001,
+                ..deal.clone()
+            },
+            "10001 honba and 0 riichi sticks: at most 10000",
+        ),
+        (
+            Deal {
+                sticks: u32::MAX,
+                ..deal.clone()
+            },
+            "riichi sticks: at most 10000",
+        ),
+        (
+            Deal {
+                scores: [i32::MIN, 0, 0, 0],
+                ..deal.clone()
+            },
+            "at most 100000000 either way",
+        ),
+    ] {
+        let e = env.deal(&[None, Some(bad), None, None]).expect_err("bad table");
+        assert!(matches!(e, EnvError::BadDeal { env: 1, .. }), "{e:?}");
+        assert!(e.to_string().contains(needle), "{needle}: {e}");
+    }
+    assert!(env.deal(&[None, Some(deal), None, None]).is_ok());
 }
 
 #[test]

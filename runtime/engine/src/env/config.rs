@@ -192,6 +192,13 @@ pub enum EnvError {
         /// The seat given.
         dealer: u32,
     },
+    /// A forced deal's table cannot be dealt ([`check_table`](super::check_table)).
+    BadDeal {
+        /// The env it was for.
+        env: usize,
+        /// What is wrong with it.
+        reason: String,
+    },
     /// A saved state given to [`Env::load_states`] failed its check.
     BadState {
         /// The env it was for.
@@ -225,6 +232,7 @@ impl std::fmt::Display for EnvError {
                     "observer seat {seat} of env {env}: seats are 0..3 (4 = the current player)"
                 )
             }
+            EnvError::BadDeal { env, reason } => write!(f, "deal of env {env}: {reason}"),
             EnvError::BadState { env, reason } => write!(f, "saved state of env {env}: {reason}"),
             EnvError::Gpu(e) => write!(f, "{e}"),
         }

@@ -28,4 +28,4 @@ pub use observe::Observer;
 pub use seed::env_seed;
 pub use snapshot::CHECK_WORDS;
 pub use step::{action_names, events, yaku_names, Step};
-pub use table::{Deal, DrawKind, DrawRecord, Table, WinRecord};
+pub use table::{check_table, Deal, DrawKind, DrawRecord, Table, WinRecord, MAX_SCORE};

@@ -148,6 +148,29 @@ pub struct Deal {
     pub wall: [Tile; 136],
 }
 
+/// The most points (or debt) a seat may hold when a round is dealt: the kernel adds payments to
+/// scores in `i32`, and no table comes near it.
+pub const MAX_SCORE: i32 = 100_000_000;
+
+/// Whether a round can be dealt from this table: a round of East 1 to North 4 (0-15), at most
+/// [`MAX_STICKS`](crate::hand::MAX_STICKS) honba and as many riichi sticks, and scores within
+/// [`MAX_SCORE`] either way, so that no payment of the round can overflow.
+pub fn check_table(round: u32, honba: u32, sticks: u32, scores: &[i32; 4]) -> Result<(), String> {
+    let most = crate::hand::MAX_STICKS;
+    if round >= 16 {
+        return Err(format!("round {round} is not 0-15 (East 1 to North 4)"));
+    }
+    if honba > most || sticks > most {
+        return Err(format!(
+            "{honba} honba and {sticks} riichi sticks: at most {most} of each"
+        ));
+    }
+    if let Some(s) = scores.iter().find(|s| s.unsigned_abs() > MAX_SCORE.unsigned_abs()) {
+        return Err(format!("a score of {s}: at most {MAX_SCORE} either way"));
+    }
+    Ok(())
+}
+
 impl CpuEnv {
     fn deal(&mut self, variant: Variant, inputs: &[u32]) {
         with_variant!(variant, v => {
@@ -177,6 +200,7 @@ impl Env {
             if d.dealer > 3 {
                 return Err(EnvError::BadDealer { env, dealer: d.dealer });
             }
+            check_table(d.round, d.honba, d.sticks, &d.scores).map_err(|reason| EnvError::BadDeal { env, reason })?;
         }
         let mut words = vec![0u32; deals.len() * DEAL_WORDS];
         {

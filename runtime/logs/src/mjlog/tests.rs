@@ -72,7 +72,7 @@ fn the_mjlog_games_replay_exactly() {
 fn what_rinshan_does_not_play_or_cannot_read_is_refused_by_name() {
     let xml = std::fs::read_to_string(format!("{DATA}/2019021004gm-00a9-0000-e2f6516d.xml")).expect("reads");
     let refusal = |text: &str| parse_game("t.xml", text).expect_err("refused").to_string();
-    let cases: [(String, &str); 9] = [
+    let cases: [(String, &str); 10] = [
         (
             xml.replacen("<DORA ", "<DORAX ", 1),
             "<DORAX>: not a tag of Tenhou's mjlog format",
@@ -94,6 +94,11 @@ fn what_rinshan_does_not_play_or_cannot_read_is_refused_by_name() {
             "is worth 233333331 han, more than a hand holds",
         ),
         (xml.replacen("yaku=\"28,2,", "yaku=\"28,2,28,2,", 1), "is listed twice"),
+        // Sticks whose payment overflowed the replay (a fuzz find).
+        (
+            xml.replacen("<INIT seed=\"0,0,0,", "<INIT seed=\"0,0,8888888,", 1),
+            "0 honba and 8888888 riichi sticks: at most 10000 of each",
+        ),
         (
             xml.replacen("who=\"2\" fromWho=\"2\"", "who=\"7\" fromWho=\"2\"", 1),
             "`who` \"7\" is not a seat 0-3",

@@ -47,6 +47,7 @@ pub(crate) use result::{
 pub use result::{Limit, LoggedDraw, LoggedWin, Outcome};
 
 use moves::{parse_discard, parse_draw, tile};
+use rinshan_engine::env::check_table;
 use rinshan_engine::tile::Tile;
 use value::{numbers, show};
 
@@ -414,6 +415,8 @@ fn parse_round(ctx: &mut Ctx, index: Option<usize>, v: &Value) -> Result<Round, 
     }
     let item = |i: usize| items.get(i).unwrap_or(&Value::Null);
     let scores = numbers::<4>(item(1)).map_err(|m| ctx.err("scores", m))?;
+    // What the replay deals from: a table no round could be dealt from is refused here, by name.
+    check_table(kyoku, honba, sticks, &scores).map_err(|m| ctx.err("[kyoku, honba, sticks] and scores", m))?;
     let dora = tiles(item(2), 1..=5).map_err(|m| ctx.err("dora", m))?;
     let ura = tiles(item(3), 0..=5).map_err(|m| ctx.err("ura", m))?;
     let mut hands: [Vec<Tile>; 4] = Default::default();

@@ -373,6 +373,17 @@ fn malformed_rounds_name_file_line_and_field() {
         "hand of seat 1",
         "has 12 tiles",
     );
+    // Tables no round can be dealt from (the replay's payments would overflow; fuzz finds).
+    check(
+        &broken(|r| round_of(r)[0] = json!([0, 0, 8888888])),
+        "[kyoku, honba, sticks] and scores",
+        "0 honba and 8888888 riichi sticks: at most 10000 of each",
+    );
+    check(
+        &broken(|r| round_of(r)[1] = json!([2000000000, 250, 250, 250])),
+        "[kyoku, honba, sticks] and scores",
+        "a score of 2000000000: at most 100000000 either way",
+    );
     check(
         &broken(|r| round_of(r)[4][0] = json!(10)),
         "hand of seat 0",
