@@ -190,7 +190,9 @@ impl CpuEnv {
 impl Env {
     /// Starts the next round of the envs given a `Some` from that table and wall instead of the
     /// one each game reached by itself (log replay deals every logged round from its own wall).
-    /// A finished game is left as it is. Returns the views after the deal.
+    /// A finished game is left as it is. Returns the views after the deal. A wall that is not
+    /// this variant's tiles, a dealer outside 0..3 or a table that fails [`check_table`] is an
+    /// error, and nothing is dealt.
     pub fn deal(&mut self, deals: &[Option<Deal>]) -> Result<&Step, EnvError> {
         self.check_len("deals", deals.len())?;
         let variant = self.variant();
