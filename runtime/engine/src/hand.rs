@@ -245,6 +245,17 @@ pub struct Score {
     pub gain: u32,
 }
 
+/// At most [`MAX_STICKS`] honba and as many riichi sticks: the kernel pays in u32 points, and far
+/// more sticks than any table holds would wrap around.
+pub(crate) fn check_sticks(honba: u32, sticks: u32) -> Result<(), String> {
+    if honba > MAX_STICKS || sticks > MAX_STICKS {
+        return Err(format!(
+            "{honba} honba and {sticks} riichi sticks: at most {MAX_STICKS} of each"
+        ));
+    }
+    Ok(())
+}
+
 fn bad(message: impl Into<String>) -> ScoreError {
     ScoreError::BadInput(message.into())
 }
@@ -275,13 +286,7 @@ pub fn score_input(win: &Win) -> Result<[u32; SCORE_IN_WORDS], ScoreError> {
     if c.dealer != (c.seat_wind == 0) {
         return Err(bad("the dealer's seat wind is East, and only the dealer's"));
     }
-    // The kernel pays in u32 points: far more sticks than any table holds would wrap around.
-    if c.honba > MAX_STICKS || c.sticks > MAX_STICKS {
-        return Err(bad(format!(
-            "{} honba and {} riichi sticks: at most {MAX_STICKS} of each",
-            c.honba, c.sticks
-        )));
-    }
+    check_sticks(c.honba, c.sticks).map_err(bad)?;
     if win.hand[win.win.index()] == 0 {
         return Err(bad("the winning tile must be among the concealed tiles"));
     }

@@ -156,15 +156,10 @@ pub const MAX_SCORE: i32 = 100_000_000;
 /// [`MAX_STICKS`](crate::hand::MAX_STICKS) honba and as many riichi sticks, and scores within
 /// [`MAX_SCORE`] either way, so that no payment of the round can overflow.
 pub fn check_table(round: u32, honba: u32, sticks: u32, scores: &[i32; 4]) -> Result<(), String> {
-    let most = crate::hand::MAX_STICKS;
     if round >= 16 {
         return Err(format!("round {round} is not 0-15 (East 1 to North 4)"));
     }
-    if honba > most || sticks > most {
-        return Err(format!(
-            "{honba} honba and {sticks} riichi sticks: at most {most} of each"
-        ));
-    }
+    crate::hand::check_sticks(honba, sticks)?;
     if let Some(s) = scores.iter().find(|s| s.unsigned_abs() > MAX_SCORE.unsigned_abs()) {
         return Err(format!("a score of {s}: at most {MAX_SCORE} either way"));
     }
