@@ -92,7 +92,7 @@ fn tenhou_read<'py>(py: Python<'py>, path: &str, forms: Vec<String>) -> PyResult
             "a log record holds what the deciding seat sees: the oracle is not one of its forms",
         ));
     }
-    let variant = Variant::Red;
+    let variant = game.variant;
     let na = rinshan_engine::env::action_names(variant).len();
     let rounds = PyList::empty(py);
     for (r, round) in game.rounds.iter().enumerate() {

@@ -2,10 +2,12 @@
 //! declares riichi and kans, calls often, and otherwise discards towards tenpai (a quarter of
 //! the time at random), so that riichi, tenpai draws, double rons and kans come up often.
 
+use rinshan_engine::env::ActionMap;
 use rinshan_engine::generated::kernel::{self as kernel, GameState};
 use rinshan_engine::generated::red as k;
 use rinshan_engine::hand::shanten;
 use rinshan_engine::random::Rng;
+use rinshan_engine::Variant;
 
 /// Whether action `a` is set in a legal-action mask.
 pub fn legal(mask: &[u32; 3], a: u32) -> bool {
@@ -68,5 +70,35 @@ impl Policy {
         let best = discards.iter().map(|&a| after(a)).min();
         let best: Vec<u32> = discards.iter().copied().filter(|&a| Some(after(a)) == best).collect();
         self.pick(&best).unwrap_or(k::ACTION_PASS)
+    }
+}
+
+/// [`Policy`] for a game of any variant: the same choices, read and made in red's layout (every
+/// variant's actions are red's kinds, [`ActionMap`]).
+pub struct VariantPolicy {
+    policy: Policy,
+    to_red: ActionMap,
+    from_red: ActionMap,
+}
+
+impl VariantPolicy {
+    pub fn new(variant: Variant, rng: Rng) -> VariantPolicy {
+        VariantPolicy {
+            policy: Policy(rng),
+            to_red: ActionMap::new(variant, Variant::Red),
+            from_red: ActionMap::new(Variant::Red, variant),
+        }
+    }
+
+    pub fn act(&mut self, s: &GameState, mask: &[u32; 3]) -> u32 {
+        let mut red = [0u32; 3];
+        for a in (0..96).filter(|&a| legal(mask, a)) {
+            if let Some(r) = self.to_red.get(a) {
+                red[(r / 32) as usize] |= 1 << (r % 32);
+            }
+        }
+        let chosen = self.policy.act(s, &red);
+        // The policy picks among the legal actions, which all have an id here.
+        self.from_red.get(chosen).unwrap_or(0)
     }
 }

@@ -64,7 +64,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
         Some(s) => s,
         None => pos.seat,
     };
-    let record = rinshan_engine::observe::record(rinshan_engine::Variant::Red, args.form, &pos.state, seat);
+    let record = rinshan_engine::observe::record(game.variant, args.form, &pos.state, seat);
     let round = &game.rounds[args.round];
     if args.json {
         let fields: serde_json::Map<String, serde_json::Value> = args

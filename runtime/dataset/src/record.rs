@@ -5,7 +5,7 @@
 
 use std::collections::HashMap;
 
-use rinshan_engine::env::{action_names, Step, Table};
+use rinshan_engine::env::{action_names, Table};
 use rinshan_engine::observe::Form;
 use rinshan_engine::Variant;
 use rinshan_logs::file::parse_log;
@@ -131,12 +131,13 @@ struct Recorder<'a> {
 
 impl Visitor for Recorder<'_> {
     fn decision(&mut self, d: &Decision) {
-        let (i, step) = (d.game, d.step);
+        let (i, step) = (d.slot, d.step);
+        let game = d.game;
         let seat = step.current_player[i] as usize;
         let mask = step.legal_action_mask[i];
         let legal = |a: u32| mask[(a / 32) as usize] >> (a % 32) & 1 == 1;
         let count: u32 = mask.iter().map(|w| w.count_ones()).sum();
-        if (count == 1 && !self.options.forced) || !self.options.seats.keeps(self.games[i], seat) {
+        if (count == 1 && !self.options.forced) || !self.options.seats.keeps(self.games[game], seat) {
             return;
         }
         if !legal(d.action) {
@@ -144,12 +145,12 @@ impl Visitor for Recorder<'_> {
             self.bug.get_or_insert_with(|| {
                 format!(
                     "{}: round {}: action {} is not legal under its own mask {mask:?}",
-                    self.games[i].path, d.round, d.action
+                    self.games[game].path, d.round, d.action
                 )
             });
             return;
         }
-        let rows = &mut self.rows[i];
+        let rows = &mut self.rows[game];
         for (f, &form) in self.options.forms.iter().enumerate() {
             let bytes = form.bytes();
             // The replay's env observes every form of the options each step.
@@ -164,10 +165,10 @@ impl Visitor for Recorder<'_> {
         rows.round.push(d.round.min(255) as u8);
     }
 
-    fn game_over(&mut self, game: usize, step: &Step, table: &Table) {
+    fn game_over(&mut self, game: usize, ranks: [u8; 4], table: &Table) {
         self.over[game] = true;
         self.rows[game].scores = table.scores;
-        self.rows[game].ranks = step.ranks[game];
+        self.rows[game].ranks = ranks;
     }
 }
 
@@ -216,13 +217,27 @@ fn record_group(games: &[&Game], options: &Options) -> Result<Vec<Outcome>, Stri
 pub fn record(games: &[Game], options: &Options) -> Result<Vec<Outcome>, String> {
     let mut out: Vec<Option<Outcome>> = vec![None; games.len()];
     let modes: Vec<_> = games.iter().map(|g| mode_of(std::slice::from_ref(g))).collect();
+    // A dataset's rows share one action layout: games of other rule sets are left out.
+    for (o, g) in out.iter_mut().zip(games) {
+        if g.variant != VARIANT {
+            *o = Some(Outcome::Skipped(format!(
+                "{}: played under {}, and datasets hold games of {VARIANT}",
+                g.path, g.variant
+            )));
+        }
+    }
     let mut seen = Vec::new();
     for &mode in &modes {
         if seen.contains(&mode) {
             continue;
         }
         seen.push(mode);
-        let index: Vec<usize> = (0..games.len()).filter(|&i| modes[i] == mode).collect();
+        let index: Vec<usize> = (0..games.len())
+            .filter(|&i| modes[i] == mode && out[i].is_none())
+            .collect();
+        if index.is_empty() {
+            continue;
+        }
         let group: Vec<&Game> = index.iter().map(|&i| &games[i]).collect();
         for (i, outcome) in index.into_iter().zip(record_group(&group, options)?) {
             out[i] = Some(outcome);

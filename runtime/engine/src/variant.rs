@@ -49,6 +49,11 @@ impl Variant {
         })
     }
 
+    /// Whether one copy of each five is red (`[tiles] red_fives`).
+    pub fn red_fives(self) -> bool {
+        with_variant!(self, v => v::RED_FIVES)
+    }
+
     /// Each player's points at the start of a game (`[game] starting_points` of the spec).
     pub fn starting_points(self) -> u32 {
         with_variant!(self, v => v::STARTING_POINTS)

@@ -331,7 +331,7 @@ impl Board {
             step: &end.step,
             env: 0,
             table: &end.table,
-            variant: Variant::Red,
+            variant: end.variant,
             uma: end.uma,
         };
         Board::round_end(&last.state, &input)

@@ -146,8 +146,8 @@ impl Session {
             )),
             false => None,
         };
-        // Tenhou logs exist for red-rule east and half games only.
-        let logged = setup.variant == Variant::Red && setup.mode != Mode::Single;
+        // Tenhou logs hold east and half games (of any rule set, which the log names).
+        let logged = setup.mode != Mode::Single;
         let recorder = logged.then(|| Recorder::new(&env)).transpose().map_err(err)?;
         let names: [String; 4] = std::array::from_fn(|p| {
             setup.seats[p]
@@ -284,10 +284,10 @@ impl Session {
         &self.names
     }
 
-    /// The game's Tenhou log, once it is over (red rules only).
+    /// The game's Tenhou log, once it is over (east and half games).
     pub fn log(&self) -> Result<&str, String> {
         if self.recorder.is_none() {
-            return Err("Tenhou logs are written for red-rule east and half games only".into());
+            return Err("Tenhou logs are written for east and half games only".into());
         }
         match (&self.log, self.phase()) {
             (Some(log), _) => Ok(log),

@@ -16,6 +16,7 @@ mod config;
 mod cpu;
 mod games;
 mod gpu;
+mod layout;
 mod observe;
 mod seed;
 mod snapshot;
@@ -24,6 +25,7 @@ mod table;
 
 pub use config::{Backend, Config, EnvError, Mode};
 pub use games::Env;
+pub use layout::ActionMap;
 pub use observe::Observer;
 pub use seed::env_seed;
 pub use snapshot::CHECK_WORDS;

@@ -69,6 +69,7 @@ impl GameBuilder {
                     path: path.to_string(),
                     rule: String::new(),
                     red_fives: true,
+                    variant: rinshan_engine::Variant::Red,
                     names: Default::default(),
                     rounds: Vec::new(),
                 },

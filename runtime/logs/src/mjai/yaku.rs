@@ -7,7 +7,7 @@ use rinshan_engine::hand::{Yaku, YakuHan};
 
 use super::write::YAKUMAN_HAN;
 use crate::tenhou::log::{check_yaku, our_yaku, LoggedWin, MOST_YAKU_HAN};
-use crate::tenhou::write::{base_points, limit_of, payment, points_text};
+use crate::tenhou::write::{limit_of, points_text, Scoring};
 
 /// The original mjai server's yaku names (also written by the Tenhou-to-MJAI converters) and
 /// ours. Its `sangenpai` sums the dragon triplets; the reader tells them apart from the hand.
@@ -131,14 +131,16 @@ pub(super) fn win(
         .map(|y| if let YakuHan::Han(h) = y.han { h } else { 0 })
         .sum();
     let han = fan.unwrap_or(han_sum);
+    // MJAI logs play Tenhou's rules.
+    let red = Scoring::of(rinshan_engine::Variant::Red);
     let base = match (yakuman, fu) {
-        (0, Some(fu)) => base_points(han, fu, 0),
-        (0, None) => base_points(han.max(5), 30, 0),
-        (n, _) => base_points(0, 0, n),
+        (0, Some(fu)) => red.base_points(han, fu, 0),
+        (0, None) => red.base_points(han.max(5), 30, 0),
+        (n, _) => red.base_points(0, 0, n),
     };
     let limit = limit_of(base);
     let tsumo = winner == from;
-    let points = points_text(fu.unwrap_or(0), han, limit, payment(base, dealer, tsumo));
+    let points = points_text(fu.unwrap_or(0), han, limit, red.payment(base, dealer, tsumo));
     LoggedWin {
         deltas,
         winner,

@@ -2,7 +2,11 @@
 //!
 //! A file holds one record per line (blank lines are skipped), or one record written over many
 //! lines: `{"title":..,"name":[..],"rule":{"disp":"鳳南喰赤","aka":1},"log":[ROUND]}`. `log` usually holds one round;
-//! when it holds several, each becomes a [`Round`] with the same line. A round is a 17-element array:
+//! when it holds several, each becomes a [`Round`] with the same line. Tenhou's logs play Tenhou's
+//! rules (rinshan's `red`); a game rinshan played under another rule set names it in the rule,
+//! `"rule":{"disp":"鳳南喰","aka":0,"variant":"mleague"}` ([`Game::variant`]).
+//!
+//! A round is a 17-element array:
 //!
 //! * `[0]` `[kyoku, honba, sticks]` (kyoku 0 = East 1, 4 = South 1, 8 = West 1), `[1]` the scores
 //!   at the start, `[2]` dora indicators, `[3]` ura indicators;
@@ -49,6 +53,7 @@ pub use result::{Limit, LoggedDraw, LoggedWin, Outcome};
 use moves::{parse_discard, parse_draw, tile};
 use rinshan_engine::env::check_table;
 use rinshan_engine::tile::Tile;
+use rinshan_engine::Variant;
 use value::{numbers, show};
 
 /// One round (kyoku) of a log.
@@ -108,6 +113,9 @@ pub struct Game {
     pub rule: String,
     /// Whether the rule plays with red fives (`aka`).
     pub red_fives: bool,
+    /// The rules the game was played under: red (Tenhou's) unless the rule names another of
+    /// rinshan's rule sets (`"variant":"mleague"`, which rinshan writes for games of those).
+    pub variant: Variant,
     /// The players' names by seat, empty when the log has none.
     pub names: [String; 4],
     /// Every round, in file order.
@@ -260,6 +268,7 @@ pub fn parse_game(path: &str, text: &str) -> Result<Game, LogError> {
         path: path.to_string(),
         rule: String::new(),
         red_fives: false,
+        variant: Variant::Red,
         names: Default::default(),
         rounds: Vec::new(),
     };
@@ -273,18 +282,19 @@ pub fn parse_game(path: &str, text: &str) -> Result<Game, LogError> {
         if !record.is_object() {
             return Err(ctx.err("record", format!("{} is not an object with a \"log\"", show(record))));
         }
-        let (rule, red_fives) = parse_rule(record).map_err(|m| ctx.err("rule", m))?;
+        let (rule, red_fives, variant) = parse_rule(record).map_err(|m| ctx.err("rule", m))?;
         match first_line {
             None => {
                 first_line = Some(*line);
                 game.rule = rule;
                 game.red_fives = red_fives;
+                game.variant = variant;
                 game.names = parse_names(record);
             }
-            Some(first) if (&rule, red_fives) != (&game.rule, game.red_fives) => {
+            Some(first) if (&rule, red_fives, variant) != (&game.rule, game.red_fives, game.variant) => {
                 let message = format!(
-                    "{rule:?} (red fives {red_fives}) differs from line {first}'s {:?} (red fives {}): one file is one game",
-                    game.rule, game.red_fives
+                    "{rule:?} (red fives {red_fives}, variant {variant}) differs from line {first}'s {:?} (red fives {}, variant {}): one file is one game",
+                    game.rule, game.red_fives, game.variant
                 );
                 return Err(ctx.err("rule", message));
             }
@@ -343,7 +353,7 @@ impl Ctx<'_> {
     }
 }
 
-fn parse_rule(record: &Value) -> Result<(String, bool), String> {
+fn parse_rule(record: &Value) -> Result<(String, bool, Variant), String> {
     let rule = record.get("rule").ok_or("missing")?;
     let disp = rule.get("disp").and_then(Value::as_str);
     let disp = disp.ok_or_else(|| format!("{} has no \"disp\" string", show(rule)))?;
@@ -356,7 +366,19 @@ fn parse_rule(record: &Value) -> Result<(String, bool), String> {
         // Tenhou writes 赤 in the rule's name when red fives are on.
         None => disp.contains('赤'),
     };
-    Ok((disp.to_string(), red))
+    let variant = match rule.get("variant") {
+        None => Variant::Red,
+        Some(v) => {
+            let name = v
+                .as_str()
+                .ok_or_else(|| format!("\"variant\" {} is not a name", show(v)))?;
+            name.parse::<Variant>().map_err(|e| format!("\"variant\": {e}"))?
+        }
+    };
+    if red && !variant.red_fives() {
+        return Err(format!("\"aka\" says red fives, but {variant} plays without them"));
+    }
+    Ok((disp.to_string(), red, variant))
 }
 
 /// Names are only for display, so a missing or odd `name` is no error.

@@ -16,6 +16,7 @@
 use super::log::{Discard, Draw, LoggedDraw, Outcome, Round};
 use rinshan_engine::generated::red as k;
 use rinshan_engine::tile::Tile;
+use rinshan_engine::Variant;
 
 pub(crate) mod wall;
 
@@ -70,15 +71,22 @@ pub struct Plan {
 }
 
 impl Plan {
-    /// The deal that starts `round` (logged as this plan's round) from the plan's wall.
-    pub fn deal(&self, round: &Round) -> rinshan_engine::env::Deal {
+    /// The deal that starts `round` (logged as this plan's round) from the plan's wall, for a
+    /// game of `variant`: without red fives, the unseen tiles that fill the wall are black too
+    /// (the logged ones are, [`crate::tenhou::log`] checks).
+    pub fn deal(&self, round: &Round, variant: Variant) -> rinshan_engine::env::Deal {
+        let wall = if variant.red_fives() {
+            self.wall
+        } else {
+            self.wall.map(|t| Tile::plain(t.kind()))
+        };
         rinshan_engine::env::Deal {
             round: round.kyoku,
             dealer: round.dealer() as u32,
             honba: round.honba,
             sticks: round.sticks,
             scores: round.scores,
-            wall: self.wall,
+            wall,
         }
     }
 }

@@ -1,13 +1,13 @@
 //! The positions of a logged round: every decision the engine asks for while the round is
 //! replayed (the log's own moves, and the claim prompts it passes), each with the game state
-//! before it. `rinshan observe` and the observation snapshots look at a log through these.
+//! before it. `rinshan observe` and the observation snapshots look at a log through these. The
+//! round is played under the game's own rules ([`Game::variant`]), and actions are its ids.
 
 use super::log::{round_name, Game};
 use super::plan::plan;
-use rinshan_engine::env::{Config, Env};
+use rinshan_engine::env::{ActionMap, Config, Env};
 use rinshan_engine::generated::kernel::GameState;
-use rinshan_engine::generated::red as k;
-use rinshan_engine::Variant;
+use rinshan_engine::{with_variant, Variant};
 
 /// One decision of a replayed round.
 #[derive(Clone)]
@@ -33,6 +33,8 @@ pub struct RoundEnd {
     pub table: rinshan_engine::env::Table,
     /// The uma the replaying env pays (none: replays compare the logged payments).
     pub uma: [i32; 4],
+    /// The rules the round was played under.
+    pub variant: Variant,
 }
 
 /// The decisions of round `round` (0-based index into the game's rounds) in order of play.
@@ -56,24 +58,34 @@ pub fn round_replay(game: &Game, round: usize) -> Result<(Vec<Position>, Option<
         mode: super::replay::mode_of(std::slice::from_ref(game)),
         uma: Some([0; 4]),
         threads: Some(1),
-        ..Config::new(Variant::Red, 1)
+        ..Config::new(game.variant, 1)
     })
     .map_err(|e| e.to_string())?;
+    let from_red = ActionMap::new(Variant::Red, game.variant);
+    let pass = with_variant!(game.variant, v => v::ACTION_PASS);
     env.reset().map_err(|e| e.to_string())?;
-    env.deal(&[Some(p.deal(r))]).map_err(|e| e.to_string())?;
+    env.deal(&[Some(p.deal(r, game.variant))]).map_err(|e| e.to_string())?;
     let mut out = Vec::new();
     let mut next = 0;
     loop {
         let step = env.last().clone();
         let state: GameState = env.game_states().map_err(|e| e.to_string())?.remove(0);
         let seat = step.current_player[0];
-        let claim = step.legal_actions(0).any(|a| a == k::ACTION_PASS);
+        let claim = step.legal_actions(0).any(|a| a == pass);
         let (action, what) = match p.moves.get(next) {
             Some(m) if m.seat == seat as usize && m.claim == claim => {
                 next += 1;
-                (m.action, m.what.clone())
+                let action = from_red.get(m.action).ok_or_else(|| {
+                    format!(
+                        "{where_}: step {}: {} has no action for {}",
+                        out.len(),
+                        game.variant,
+                        m.what
+                    )
+                })?;
+                (action, m.what.clone())
             }
-            _ if claim => (k::ACTION_PASS, "pass".to_string()),
+            _ if claim => (pass, "pass".to_string()),
             Some(m) => {
                 return Err(format!(
                     "{where_}: step {}: the log has seat {} {}, the engine asks seat {seat}",
@@ -102,6 +114,7 @@ pub fn round_replay(game: &Game, round: usize) -> Result<(Vec<Position>, Option<
                     step: after,
                     table,
                     uma,
+                    variant: game.variant,
                 }),
             ));
         }

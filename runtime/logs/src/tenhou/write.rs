@@ -1,4 +1,4 @@
-//! Writes games played in rinshan (red variant) as tenhou.net/6 logs, the format
+//! Writes games played in rinshan (any rule set) as tenhou.net/6 logs, the format
 //! [`super::log`] reads and `rinshan replay` replays.
 //!
 //! A [`Recorder`] follows every game of an [`Env`]: after each [`Env::step`], hand it the actions
@@ -25,6 +25,9 @@
 //! Seats are rotated so that seat 0 is East 1's dealer, as in Tenhou's logs. A game that an
 //! illegal action ended is left out (counted in [`Recorder::dropped`]). [`GameRecorder`] does the
 //! same for one game stepped on the kernel directly (`generated::red::game_step`).
+//!
+//! A game of a rule set other than Tenhou's names it in the rule (`"variant":"mleague"`), so the
+//! replay plays it under those rules; the moves are Tenhou's either way.
 
 mod game;
 mod json;
@@ -37,45 +40,17 @@ use std::fmt;
 
 use rinshan_engine::env::{Env, EnvError};
 use rinshan_engine::generated::kernel::GameState;
-use rinshan_engine::Variant;
 
 use super::log::Game;
 
 pub use game::{GameRecorder, InPlay};
 pub use json::game_text;
 pub(crate) use json::round_value;
-pub(crate) use outcome::{base_points, limit_of, payment, points_text, win_yaku};
-
-/// The options in which a recorded variant may differ from red: the writer reads these per
-/// variant (a yakuman's worth, three winners on one discard, a ron on a closed kan, pao's share).
-pub const PER_VARIANT: [&str; 4] = [
-    "double_yakuman",
-    "triple_ron_abort",
-    "kokushi_robs_closed_kan",
-    "pao_share_only",
-];
-
-/// Whether games of `variant` can be written: it has red's action ids and plays red's rules but for
-/// the [`PER_VARIANT`] options (red and mjsoul; not no-red, whose action ids differ, nor mleague,
-/// whose kan dora, limits and payments differ).
-pub fn recordable(variant: Variant) -> bool {
-    let red = Variant::Red;
-    let same = |a: &[(&str, &str, &str)], b: &[(&str, &str, &str)]| {
-        a.len() == b.len()
-            && a.iter()
-                .zip(b)
-                .all(|(x, y)| x.1 == y.1 && (x.2 == y.2 || PER_VARIANT.contains(&x.1)))
-    };
-    rinshan_engine::env::action_names(variant) == rinshan_engine::env::action_names(red)
-        && same(variant.options(), red.options())
-}
+pub(crate) use outcome::{limit_of, points_text, win_yaku, Scoring};
 
 /// Why a game could not be recorded.
 #[derive(Debug, Clone, PartialEq)]
 pub enum WriteError {
-    /// Logs are written for red and the variants that play red's game but for the options the
-    /// writer reads per variant ([`recordable`]).
-    Variant(Variant),
     /// Reading the env's states failed (the GPU backend).
     Env(EnvError),
     /// `observe` got a different number of actions than the env has games.
@@ -98,11 +73,6 @@ pub enum WriteError {
 impl fmt::Display for WriteError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            WriteError::Variant(v) => write!(
-                f,
-                "logs are written for variants with red's actions and red's rules but for {}; {v} differs elsewhere",
-                PER_VARIANT.join(", ")
-            ),
             WriteError::Env(e) => write!(f, "{e}"),
             WriteError::WrongLength { expected, got } => {
                 write!(
@@ -132,7 +102,7 @@ pub struct Finished {
     pub game: Game,
 }
 
-/// Records every game of a red-variant [`Env`] (either backend; on the GPU each `observe` reads
+/// Records every game of an [`Env`] (either backend; on the GPU each `observe` reads
 /// every game's state back from the device).
 pub struct Recorder {
     games: Vec<GameRecorder>,
@@ -151,9 +121,6 @@ impl Recorder {
     /// any later reset.
     pub fn new(env: &Env) -> Result<Recorder, WriteError> {
         let variant = env.variant();
-        if !recordable(variant) {
-            return Err(WriteError::Variant(variant));
-        }
         let states = states(env)?;
         let games = states
             .iter()

@@ -62,6 +62,11 @@ pub(super) fn build_wall(round: &Round, live: &[Tile], rinshan: &[Tile]) -> Resu
     let mut left = tile_set();
     for t in slots.iter().flatten() {
         let v = usize::from(t.value());
+        // A game without red fives plays four black ones: the fourth takes the red copy's place.
+        let v = match Tile::red(t.kind()) {
+            Some(red) if left[v] == 0 && !t.is_red() => usize::from(red.value()),
+            _ => v,
+        };
         left[v] = left[v].checked_sub(1).ok_or_else(|| {
             format!(
                 "tile {} appears more often than the set holds (hands, draws and indicators together)",

@@ -8,10 +8,11 @@ use super::run::Run;
 use crate::tenhou::write::win_yaku;
 use rinshan_engine::env::{events, DrawKind, Step, Table, WinRecord};
 use rinshan_engine::hand::YakuHan;
+use rinshan_engine::{with_variant, Variant};
 
 /// The yaku of an engine win as (name, han) in the log's terms, sorted; dora kinds with 0 han left out.
-fn engine_yaku(w: &WinRecord) -> Vec<(String, YakuHan)> {
-    let mut out: Vec<(String, YakuHan)> = win_yaku(rinshan_engine::Variant::Red, w)
+fn engine_yaku(variant: Variant, w: &WinRecord) -> Vec<(String, YakuHan)> {
+    let mut out: Vec<(String, YakuHan)> = win_yaku(variant, w)
         .into_iter()
         .map(|y| (y.name.to_string(), y.han))
         .collect();
@@ -40,13 +41,18 @@ fn yaku_text(list: &[(String, YakuHan)]) -> String {
         .join(", ")
 }
 
-/// Compares one logged win with the engine's record of it; `None` when they agree.
-fn compare_win(w: &LoggedWin, r: &WinRecord) -> Option<(String, String)> {
-    let (ly, ey) = (log_yaku(w), engine_yaku(r));
-    let log_yakuman: u32 = ly
+/// Compares one logged win with the engine's record of it under `variant`'s rules; `None` when
+/// they agree.
+fn compare_win(variant: Variant, w: &LoggedWin, r: &WinRecord) -> Option<(String, String)> {
+    let (ly, ey) = (log_yaku(w), engine_yaku(variant, r));
+    let mut log_yakuman: u32 = ly
         .iter()
         .map(|(_, h)| if let YakuHan::Yakuman(x) = h { *x } else { 0 })
         .sum();
+    if !with_variant!(variant, v => v::MULTIPLE_YAKUMAN) {
+        // Several yakuman in the hand score one (WRC); the log lists each.
+        log_yakuman = log_yakuman.min(1);
+    }
     let log_han: u32 = w.han.unwrap_or_else(|| {
         ly.iter()
             .map(|(_, h)| if let YakuHan::Han(x) = h { *x } else { 0 })
@@ -109,7 +115,8 @@ fn engine_outcome(step: &Step, i: usize, table: &Table) -> String {
 /// The score change of a round by the log: the changes its result lists less the riichi sticks
 /// paid; after the last round of a game, sticks left on the table go to the top seat (ties: the
 /// seat nearer East 1's dealer).
-fn log_change(r: &Round, plan: &Plan, last: bool) -> [i64; 4] {
+fn log_change(r: &Round, plan: &Plan, last: bool, stick: u32) -> [i64; 4] {
+    let stick = i64::from(stick);
     let mut change = [0i64; 4];
     let mut add = |d: &[i32; 4]| (0..4).for_each(|p| change[p] += i64::from(d[p]));
     let won = match &r.outcome {
@@ -123,13 +130,13 @@ fn log_change(r: &Round, plan: &Plan, last: bool) -> [i64; 4] {
         }
     };
     for (c, &paid) in change.iter_mut().zip(&plan.riichi_paid) {
-        *c -= 1000 * i64::from(paid);
+        *c -= stick * i64::from(paid);
     }
     if last && !won {
         let sticks = i64::from(r.sticks) + plan.riichi_paid.iter().map(|&x| i64::from(x)).sum::<i64>();
         let scores: [i64; 4] = std::array::from_fn(|p| i64::from(r.scores[p]) + change[p]);
         let top = (0..4).fold(0, |best, p| if scores[p] > scores[best] { p } else { best });
-        change[top] += 1000 * sticks;
+        change[top] += stick * sticks;
     }
     change
 }
@@ -164,7 +171,7 @@ pub(super) fn finish_round(run: &mut Run, step: &Step, i: usize, table: &Table, 
                     report.mismatches.push(m);
                     continue;
                 }
-                match compare_win(w, &table.wins[w.winner]) {
+                match compare_win(run.variant, w, &table.wins[w.winner]) {
                     None => report.wins_matching += 1,
                     Some((log, ours)) => {
                         let m = run.mismatch("han, fu and yaku", log, ours);
@@ -185,10 +192,11 @@ pub(super) fn finish_round(run: &mut Run, step: &Step, i: usize, table: &Table, 
         }
     }
     let next = run.game.rounds.get(run.round + 1);
+    let stick = with_variant!(run.variant, v => v::RIICHI_STICK_POINTS);
     let expected = run
         .plan
         .as_ref()
-        .map_or([0; 4], |plan| log_change(r, plan, next.is_none()));
+        .map_or([0; 4], |plan| log_change(r, plan, next.is_none(), stick));
     if let Some(n) = next {
         let by_scores: [i64; 4] = std::array::from_fn(|p| i64::from(n.scores[p]) - i64::from(r.scores[p]));
         if by_scores != expected {

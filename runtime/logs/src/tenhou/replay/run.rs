@@ -3,8 +3,8 @@
 use super::report::{outcome_name, Mismatch, Report};
 use crate::tenhou::log::{round_name, Game, Round};
 use crate::tenhou::plan::{plan, Plan};
-use rinshan_engine::env::{Deal, Step};
-use rinshan_engine::generated::red as k;
+use rinshan_engine::env::{ActionMap, Deal, Step};
+use rinshan_engine::{with_variant, Variant};
 
 /// Where one game's replay stands.
 pub(super) struct Run<'g> {
@@ -17,10 +17,16 @@ pub(super) struct Run<'g> {
     /// Engine score change of this round so far, in points.
     pub(super) change: [i64; 4],
     pub(super) finished: bool,
+    /// The rules the game is replayed under.
+    pub(super) variant: Variant,
+    /// The plan's moves (red's action ids) in the variant's ids.
+    from_red: ActionMap,
+    /// The variant's pass.
+    pass: u32,
 }
 
 impl<'g> Run<'g> {
-    pub(super) fn new(game: &'g Game) -> Run<'g> {
+    pub(super) fn new(game: &'g Game, variant: Variant) -> Run<'g> {
         Run {
             game,
             round: 0,
@@ -29,6 +35,9 @@ impl<'g> Run<'g> {
             steps: 0,
             change: [0; 4],
             finished: false,
+            variant,
+            from_red: ActionMap::new(Variant::Red, variant),
+            pass: with_variant!(variant, v => v::ACTION_PASS),
         }
     }
 
@@ -61,7 +70,7 @@ impl<'g> Run<'g> {
             match plan(r) {
                 Ok(p) => {
                     report.actions += p.moves.len();
-                    let deal = p.deal(r);
+                    let deal = p.deal(r, self.variant);
                     self.plan = Some(p);
                     return Some(deal);
                 }
@@ -81,11 +90,11 @@ impl<'g> Run<'g> {
         let seat = step.current_player[i] as usize;
         let mask = step.legal_action_mask[i];
         let legal = |a: u32| mask[(a / 32) as usize] >> (a % 32) & 1 == 1;
-        let claim = legal(k::ACTION_PASS);
+        let claim = legal(self.pass);
         let moves = self.plan.as_ref().map_or(&[][..], |p| p.moves.as_slice());
         let Some(m) = moves.get(self.next) else {
             if claim {
-                return Ok(k::ACTION_PASS);
+                return Ok(self.pass);
             }
             return Err(Box::new(self.mismatch(
                 "round end",
@@ -94,7 +103,7 @@ impl<'g> Run<'g> {
             )));
         };
         if claim && !(m.claim && m.seat == seat) {
-            return Ok(k::ACTION_PASS);
+            return Ok(self.pass);
         }
         if m.seat != seat || m.claim != claim {
             let asked = if claim { "a claim" } else { "its turn" };
@@ -104,7 +113,14 @@ impl<'g> Run<'g> {
                 format!("seat {seat} is asked for {asked}"),
             )));
         }
-        if !legal(m.action) {
+        let Some(action) = self.from_red.get(m.action) else {
+            return Err(Box::new(self.mismatch(
+                "illegal logged action",
+                format!("seat {}: {}", m.seat, m.what),
+                format!("{} has no such action", self.variant),
+            )));
+        };
+        if !legal(action) {
             return Err(Box::new(self.mismatch(
                 "illegal logged action",
                 format!("seat {}: {}", m.seat, m.what),
@@ -114,7 +130,7 @@ impl<'g> Run<'g> {
                 ),
             )));
         }
-        Ok(m.action)
+        Ok(action)
     }
 
     /// Moves past the logged decision `action` of `seat` just played; `false` for a pass the log
@@ -123,7 +139,7 @@ impl<'g> Run<'g> {
         let moves = self.plan.as_ref().map_or(&[][..], |p| p.moves.as_slice());
         let taken = moves
             .get(self.next)
-            .is_some_and(|m| m.seat == seat && m.action == action);
+            .is_some_and(|m| m.seat == seat && self.from_red.get(m.action) == Some(action));
         if taken {
             self.next += 1;
         }

@@ -8,14 +8,14 @@
 use crate::tenhou::log::{round_name, Discard, Game, LoggedDraw, LoggedWin, Outcome, Round};
 use crate::tenhou::plan::wall::{DORA, RINSHAN, URA};
 use crate::tenhou::plan::Played;
-use rinshan_engine::env::{events, DrawRecord, WinRecord};
+use rinshan_engine::env::{events, ActionMap, DrawRecord, WinRecord};
 use rinshan_engine::generated::kernel::{self, GameState};
+// Red's ids: the recorder reads every variant's moves in red's layout (`to_red`), and every
+// variant has the same yaku ids.
 use rinshan_engine::generated::red as k;
 use rinshan_engine::Variant;
 
-use super::outcome::{
-    base_points, draw_outcome, limit_of, outcome_deltas, pao_share, payment, points_text, win_deltas, yaku_list,
-};
+use super::outcome::{draw_outcome, limit_of, outcome_deltas, pao_share, points_text, yaku_list, Scoring};
 use super::round::{meld_count, Current};
 
 use events::ROUND_OVER;
@@ -38,13 +38,16 @@ pub struct InPlay<'a> {
 pub struct GameRecorder {
     /// Player names written in every record.
     pub names: [String; 4],
-    /// Tenhou's name of the rule: `鳳南喰赤` for half games, `鳳東喰赤` for east games.
+    /// Tenhou's name of the rule: `鳳南喰赤` for half games, `鳳東喰赤` for east games (without
+    /// `赤` when the variant has no red fives).
     rule: &'static str,
     rounds: Vec<Round>,
     current: Option<Current>,
     dropped: usize,
-    /// The rules the game is played under (red, or one of [`super::recordable`]).
-    variant: Variant,
+    /// The rules the game is played under.
+    scoring: Scoring,
+    /// The variant's action ids in red's layout, in which the log's moves are read.
+    to_red: ActionMap,
 }
 
 impl GameRecorder {
@@ -54,17 +57,13 @@ impl GameRecorder {
         GameRecorder::for_variant(state, Variant::Red)
     }
 
-    /// As [`GameRecorder::new`], for a game of `variant`, which must be [`super::recordable`].
+    /// As [`GameRecorder::new`], for a game of `variant`.
     pub fn for_variant(state: &GameState, variant: Variant) -> Result<GameRecorder, String> {
-        if !super::recordable(variant) {
-            return Err(format!(
-                "games of {variant} cannot be written: {}",
-                super::WriteError::Variant(variant)
-            ));
-        }
-        let rule = match state.mode {
-            kernel::MODE_HALF => "鳳南喰赤",
-            kernel::MODE_EAST => "鳳東喰赤",
+        let rule = match (state.mode, variant.red_fives()) {
+            (kernel::MODE_HALF, true) => "鳳南喰赤",
+            (kernel::MODE_HALF, false) => "鳳南喰",
+            (kernel::MODE_EAST, true) => "鳳東喰赤",
+            (kernel::MODE_EAST, false) => "鳳東喰",
             _ => return Err("Tenhou logs are east or half games: a one-hand game has no Tenhou rule".into()),
         };
         Ok(GameRecorder {
@@ -73,7 +72,8 @@ impl GameRecorder {
             rounds: Vec::new(),
             current: Some(Current::start(state)?),
             dropped: 0,
-            variant,
+            scoring: Scoring::of(variant),
+            to_red: ActionMap::new(variant, Variant::Red),
         })
     }
 
@@ -85,6 +85,11 @@ impl GameRecorder {
     /// Tenhou's name of the game's rule (`鳳南喰赤`).
     pub fn rule(&self) -> &str {
         self.rule
+    }
+
+    /// The rules the game is played under.
+    pub fn variant(&self) -> Variant {
+        self.scoring.variant
     }
 
     /// The round being played, as far as it has gone; `None` once the game is over.
@@ -144,6 +149,12 @@ impl GameRecorder {
                 a.steps, b.steps
             ));
         }
+        let in_red = |a: u32| {
+            self.to_red
+                .get(a)
+                .ok_or_else(|| format!("action {a} is not an action of {}", self.scoring.variant))
+        };
+        let action = in_red(action)?;
         let p = b.current;
         let seat = cur.at(p);
         let discards = k::ACTION_DISCARD..k::ACTION_DISCARD + k::ACTION_DISCARD_COUNT;
@@ -160,7 +171,11 @@ impl GameRecorder {
         if a.events & ROUND_OVER == 0 {
             if (k::ACTION_RON..=k::ACTION_PASS).contains(&action) {
                 for q in (0..4).filter(|&q| meld_count(a, q) > meld_count(b, q)) {
-                    let choice = if q == p { action } else { b.claim_choices[q as usize] };
+                    let choice = if q == p {
+                        action
+                    } else {
+                        in_red(b.claim_choices[q as usize])?
+                    };
                     cur.call(b, q, choice)?;
                 }
             }
@@ -184,7 +199,8 @@ impl GameRecorder {
             let game = Game {
                 path: String::new(),
                 rule: self.rule.to_string(),
-                red_fives: true,
+                red_fives: self.scoring.variant.red_fives(),
+                variant: self.scoring.variant,
                 names: self.names.clone(),
                 rounds: std::mem::take(&mut self.rounds),
             };
@@ -217,36 +233,26 @@ impl GameRecorder {
             let mut wins = Vec::new();
             for (n, &w) in winners.iter().enumerate() {
                 let rec = WinRecord::decode(&a.win_yaku, &a.win_score, w as usize);
-                // The low nibble: big dragons / big winds (four kans is not a recordable rule).
-                let liable = (kernel::byte_of(b.pao, w) & 15)
-                    .checked_sub(1)
-                    .filter(|_| k::PAO && rec.yaku_ids().any(|y| y == k::YAKU_DAISANGEN || y == k::YAKU_DAISUUSHI));
-                let share = liable.map_or([1, 1], |_| pao_share(self.variant, &rec));
-                let base = base_points(rec.han, rec.fu, rec.yakuman);
+                let scoring = &self.scoring;
+                let liable = liability(scoring, kernel::byte_of(b.pao, w), &rec);
+                let base = scoring.base_points(rec.han, rec.fu, rec.yakuman);
                 let limit = limit_of(base);
-                let pay = payment(base, w as usize == dealer, tsumo);
-                let (honba, sticks) = if n == 0 { (b.honba, b.sticks) } else { (0, 0) };
-                let d = win_deltas(
-                    w as usize,
-                    Some(from as usize),
-                    dealer,
-                    pay,
-                    honba,
-                    sticks,
-                    liable.map(|l| (l as usize, share)),
-                );
+                let pay = scoring.payment(base, w as usize == dealer, tsumo);
+                let table = if n == 0 { (b.honba, b.sticks) } else { (0, 0) };
+                let pao = liable.map(|(seat, yaku)| (seat as usize, pao_share(scoring.variant, &rec, yaku)));
+                let d = scoring.win_deltas(w as usize, Some(from as usize), dealer, pay, table, pao);
                 let seat_wind = (w as usize + 4 - dealer) % 4;
                 wins.push(LoggedWin {
                     deltas: std::array::from_fn(|i| d[(i + cur.first as usize) % 4]),
                     winner: cur.at(w),
                     from: cur.at(from),
-                    pao: cur.at(liable.unwrap_or(w)),
+                    pao: cur.at(liable.map_or(w, |(seat, _)| seat)),
                     tsumo,
                     fu: limit.is_none().then_some(rec.fu),
                     han: limit.is_none().then_some(rec.han),
                     limit,
                     points: points_text(rec.fu, rec.han, limit, pay),
-                    yaku: yaku_list(self.variant, &rec, seat_wind, round_wind),
+                    yaku: yaku_list(scoring.variant, &rec, seat_wind, round_wind),
                 });
             }
             if !tsumo {
@@ -289,7 +295,7 @@ impl GameRecorder {
         let paid: [bool; 4] = std::array::from_fn(|s| cur.riichi_made[s] && ronned_riichi != Some(s));
         let deltas = outcome_deltas(&last.outcome);
         let scores: [i32; 4] =
-            std::array::from_fn(|s| last.scores[s] + deltas[s] - k::RIICHI_STICK_POINTS as i32 * i32::from(paid[s]));
+            std::array::from_fn(|s| last.scores[s] + deltas[s] - self.scoring.stick as i32 * i32::from(paid[s]));
         let won = matches!(last.outcome, Outcome::Wins(_));
         let sticks = if won {
             0
@@ -304,4 +310,25 @@ impl GameRecorder {
         }
         Ok(())
     }
+}
+
+/// The seat liable for a win and the yakuman it is liable for (the scoring kernel's `pao_yaku`):
+/// big dragons or big winds fed by a call (the low nibble of the winner's `pao` byte, seat + 1),
+/// else, with `pao_suukantsu`, four kans whose fourth was an open kan (the high nibble).
+fn liability(scoring: &Scoring, pao: u32, rec: &WinRecord) -> Option<(u32, u32)> {
+    if !scoring.pao {
+        return None;
+    }
+    let has = |yaku: u32| rec.yaku_ids().any(|y| y == yaku);
+    let fed = (pao & 15).checked_sub(1);
+    if let Some(seat) = fed {
+        for yaku in [k::YAKU_DAISANGEN, k::YAKU_DAISUUSHI] {
+            if has(yaku) {
+                return Some((seat, yaku));
+            }
+        }
+    }
+    let kans = (pao >> 4).checked_sub(1);
+    kans.filter(|_| scoring.pao_suukantsu && has(k::YAKU_SUUKANTSU))
+        .map(|seat| (seat, k::YAKU_SUUKANTSU))
 }

@@ -6,6 +6,7 @@ use serde_json::{json, Value};
 use crate::tenhou::log::{tenhou_yaku, Discard, Draw, Game, LoggedWin, Outcome, Rel, Round};
 use rinshan_engine::hand::{Yaku, YakuHan};
 use rinshan_engine::tile::Tile;
+use rinshan_engine::Variant;
 
 /// The game as a tenhou.net/6 file: one record per round, one line each.
 pub fn game_text(game: &Game) -> String {
@@ -23,8 +24,13 @@ pub(super) fn round_line(game: &Game, round: &Round) -> String {
     // rule, log (and disp before aka).
     let names = Value::from(game.names.to_vec());
     let disp = Value::from(game.rule.as_str());
+    // Tenhou's own rules are named by `disp` alone, so their logs stay as Tenhou writes them.
+    let variant = match game.variant {
+        Variant::Red => String::new(),
+        v => format!(",\"variant\":{}", Value::from(v.to_string())),
+    };
     format!(
-        "{{\"title\":[\"\",\"\"],\"name\":{names},\"rule\":{{\"disp\":{disp},\"aka\":{}}},\"log\":[{}]}}",
+        "{{\"title\":[\"\",\"\"],\"name\":{names},\"rule\":{{\"disp\":{disp},\"aka\":{}{variant}}},\"log\":[{}]}}",
         u8::from(game.red_fives),
         round_value(round)
     )

@@ -1,21 +1,131 @@
 //! The result of a round as Tenhou writes it: the points text of a win, each win's score changes
 //! (honba, riichi sticks and pao included), the draw names and their tenpai or nagashi payments.
 //!
-//! Payments are worked out from han, fu and yakuman by the scoring kernel's own functions
-//! (`base_points`, `hand_payments`) rather than read off the engine's rewards: a double ron pays
+//! Payments are worked out from han, fu and yakuman by the variant's scoring kernel functions
+//! ([`Scoring`]) rather than read off the engine's rewards: a double ron pays
 //! two hands in one step, a pao tsumo hides the shares, and a game's last step adds uma. The recorder checks the sum against the scores the
 //! engine carries into the next round.
 
 use crate::tenhou::log::{tenhou_yaku, Limit, LoggedDraw, Outcome};
 use rinshan_engine::env::{DrawKind, DrawRecord, WinRecord};
-use rinshan_engine::generated::red as k;
 use rinshan_engine::hand::{yaku_worth, Payment, Yaku, YakuHan};
 use rinshan_engine::Variant;
 
-/// Base points of a hand: fu x 2^(han+2) up to the limits (the scoring kernel's own rule, with
-/// this variant's `kiriage_mangan` and `kazoe_yakuman`).
-pub(crate) fn base_points(han: u32, fu: u32, yakuman: u32) -> u32 {
-    k::base_points(han, fu, yakuman)
+/// What the writer reads of one variant's scoring: the scoring kernel's own functions
+/// (`base_points` with the variant's `kiriage_mangan` and `kazoe_yakuman`, `hand_payments`) and
+/// the variant's sticks and pao options.
+#[derive(Clone, Copy)]
+pub(crate) struct Scoring {
+    pub(crate) variant: Variant,
+    base: fn(u32, u32, u32) -> u32,
+    payments: fn(u32, bool) -> [u32; 3],
+    honba_ron: u32,
+    honba_tsumo: u32,
+    /// Points of one riichi stick.
+    pub(crate) stick: u32,
+    /// `[liability] pao`, `pao_pays_honba`, `pao_suukantsu`.
+    pub(crate) pao: bool,
+    pao_pays_honba: bool,
+    pub(crate) pao_suukantsu: bool,
+}
+
+impl std::fmt::Debug for Scoring {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "Scoring({})", self.variant)
+    }
+}
+
+impl Scoring {
+    pub(crate) fn of(variant: Variant) -> Scoring {
+        rinshan_engine::with_variant!(variant, v => Scoring {
+            variant,
+            base: v::base_points,
+            payments: v::hand_payments,
+            honba_ron: v::HONBA_RON_POINTS,
+            honba_tsumo: v::HONBA_TSUMO_POINTS,
+            stick: v::RIICHI_STICK_POINTS,
+            pao: v::PAO,
+            pao_pays_honba: v::PAO_PAYS_HONBA,
+            pao_suukantsu: v::PAO_SUUKANTSU,
+        })
+    }
+
+    /// Base points of a hand: fu x 2^(han+2) up to the limits.
+    pub(crate) fn base_points(&self, han: u32, fu: u32, yakuman: u32) -> u32 {
+        (self.base)(han, fu, yakuman)
+    }
+
+    /// What a hand of `base` points costs before honba.
+    pub(crate) fn payment(&self, base: u32, dealer: bool, tsumo: bool) -> Payment {
+        let [ron, dealer_share, others] = (self.payments)(base, dealer);
+        match (tsumo, dealer) {
+            (false, _) => Payment::Ron { discarder: ron },
+            (true, false) => Payment::Tsumo {
+                dealer: Some(dealer_share),
+                others,
+            },
+            (true, true) => Payment::Tsumo { dealer: None, others },
+        }
+    }
+
+    /// Who pays what for one win: `from` is `None` for a tsumo; `table` is (honba, riichi
+    /// deposits collected), counted only for the winner nearest the discarder, so give (0, 0) for
+    /// the other ones of a double or triple ron. A liable seat (`pao`, with the share of the hand
+    /// it covers, [`pao_share`]) pays half of that share of a ron's value (the discarder the rest
+    /// and the honba), and that share of each payment of a tsumo (the payer the rest and its
+    /// honba; all of it, honba included, when it covers the whole hand). With `pao_pays_honba`
+    /// the liable seat pays the honba the discarder or payer would.
+    pub(crate) fn win_deltas(
+        &self,
+        winner: usize,
+        from: Option<usize>,
+        dealer: usize,
+        pay: Payment,
+        (honba, sticks): (u32, u32),
+        pao: Option<(usize, [u32; 2])>,
+    ) -> [i32; 4] {
+        let mut d = [0i64; 4];
+        let mut move_points = |payer: usize, points: u32| {
+            d[payer] -= i64::from(points);
+            d[winner] += i64::from(points);
+        };
+        let liable_honba = |honba: u32| if self.pao_pays_honba { honba } else { 0 };
+        match (pay, from) {
+            (Payment::Ron { discarder: value }, Some(from)) => {
+                let honba = honba * self.honba_ron;
+                match pao {
+                    Some((liable, [num, den])) if liable != from => {
+                        let covered = value / den * num;
+                        move_points(liable, covered / 2 + liable_honba(honba));
+                        move_points(from, value - covered / 2 + honba - liable_honba(honba));
+                    }
+                    _ => move_points(from, value + honba),
+                }
+            }
+            (Payment::Tsumo { dealer: share, others }, _) => {
+                for p in (0..4).filter(|&p| p != winner) {
+                    let value = match share {
+                        Some(d) if p == dealer => d,
+                        _ => others,
+                    };
+                    let honba = honba * self.honba_tsumo;
+                    match pao {
+                        Some((liable, [num, den])) if num < den => {
+                            let covered = value / den * num + liable_honba(honba);
+                            move_points(liable, covered);
+                            move_points(p, value + honba - covered);
+                        }
+                        Some((liable, _)) => move_points(liable, value + honba),
+                        None => move_points(p, value + honba),
+                    }
+                }
+            }
+            // A ron with no discarder cannot be recorded; the caller always names one.
+            (Payment::Ron { .. }, None) => {}
+        }
+        d[winner] += i64::from(sticks * self.stick);
+        d.map(|x| x as i32)
+    }
 }
 
 /// The limit a base reaches, named in the points text instead of fu and han.
@@ -27,19 +137,6 @@ pub(crate) fn limit_of(base: u32) -> Option<Limit> {
         3000.. => Some(Limit::Haneman),
         2000.. => Some(Limit::Mangan),
         _ => None,
-    }
-}
-
-/// What a hand of `base` points costs before honba (the scoring kernel's `hand_payments`).
-pub(crate) fn payment(base: u32, dealer: bool, tsumo: bool) -> Payment {
-    let [ron, dealer_share, others] = k::hand_payments(base, dealer);
-    match (tsumo, dealer) {
-        (false, _) => Payment::Ron { discarder: ron },
-        (true, false) => Payment::Tsumo {
-            dealer: Some(dealer_share),
-            others,
-        },
-        (true, true) => Payment::Tsumo { dealer: None, others },
     }
 }
 
@@ -61,72 +158,10 @@ pub(crate) fn points_text(fu: u32, han: u32, limit: Option<Limit>, pay: Payment)
 }
 
 /// The part of a pao win the liable seat covers, as [numerator, denominator] of its value (the
-/// scoring kernel's own rule): its big dragons or big winds over the hand's yakuman where the
-/// variant's `pao_share_only` is set, else the whole hand.
-pub(super) fn pao_share(variant: Variant, rec: &WinRecord) -> [u32; 2] {
-    let pao = if rec.yaku_ids().any(|y| y == k::YAKU_DAISANGEN) {
-        k::YAKU_DAISANGEN
-    } else {
-        k::YAKU_DAISUUSHI
-    };
+/// scoring kernel's own rule): the pao yakuman (`pao`, a yaku id) over the hand's yakuman where
+/// the variant's `pao_share_only` is set, else the whole hand.
+pub(super) fn pao_share(variant: Variant, rec: &WinRecord, pao: u32) -> [u32; 2] {
     rinshan_engine::hand::pao_share(variant, rec.yakuman, pao)
-}
-
-/// Who pays what for one win: `from` is `None` for a tsumo; `honba` and `sticks` (riichi
-/// deposits collected) are counted only for the winner nearest the discarder, so give 0 for the
-/// other ones of a double or triple ron. A liable seat (`pao`, with the share of the hand it
-/// covers, [`pao_share`]) pays half of that share of a ron's value (the discarder the rest and
-/// the honba), and that share of each payment of a tsumo (the payer the rest and its honba; all
-/// of it, honba included, when it covers the whole hand).
-pub(super) fn win_deltas(
-    winner: usize,
-    from: Option<usize>,
-    dealer: usize,
-    pay: Payment,
-    honba: u32,
-    sticks: u32,
-    pao: Option<(usize, [u32; 2])>,
-) -> [i32; 4] {
-    let mut d = [0i64; 4];
-    let mut move_points = |payer: usize, points: u32| {
-        d[payer] -= i64::from(points);
-        d[winner] += i64::from(points);
-    };
-    match (pay, from) {
-        (Payment::Ron { discarder: value }, Some(from)) => {
-            let honba = honba * k::HONBA_RON_POINTS;
-            match pao {
-                Some((liable, [num, den])) if liable != from => {
-                    let covered = value / den * num;
-                    move_points(liable, covered / 2);
-                    move_points(from, value - covered / 2 + honba);
-                }
-                _ => move_points(from, value + honba),
-            }
-        }
-        (Payment::Tsumo { dealer: share, others }, _) => {
-            for p in (0..4).filter(|&p| p != winner) {
-                let value = match share {
-                    Some(d) if p == dealer => d,
-                    _ => others,
-                };
-                let amount = value + honba * k::HONBA_TSUMO_POINTS;
-                match pao {
-                    Some((liable, [num, den])) if num < den => {
-                        let covered = value / den * num;
-                        move_points(liable, covered);
-                        move_points(p, amount - covered);
-                    }
-                    Some((liable, _)) => move_points(liable, amount),
-                    None => move_points(p, amount),
-                }
-            }
-        }
-        // A ron with no discarder cannot be recorded; the caller always names one.
-        (Payment::Ron { .. }, None) => {}
-    }
-    d[winner] += i64::from(sticks * k::RIICHI_STICK_POINTS);
-    d.map(|x| x as i32)
 }
 
 /// A win's yaku with what each is worth under `variant`'s spec, then dora, red fives and ura
@@ -137,7 +172,7 @@ pub(crate) fn win_yaku(variant: Variant, rec: &WinRecord) -> Vec<Yaku> {
         .map(|id| {
             let i = id as usize;
             Yaku {
-                name: k::host::YAKU_NAMES[i],
+                name: rinshan_engine::env::yaku_names(variant)[i],
                 han: yaku_worth(variant, i, rec.concealed),
             }
         })

@@ -6,11 +6,12 @@ use std::path::PathBuf;
 use serde_json::Value;
 
 use super::json::{discard_value, draw_value, round_line, yaku_text};
-use super::outcome::{base_points, limit_of, payment, points_text, win_deltas};
+use super::outcome::{limit_of, points_text, Scoring};
 use super::*;
 use crate::tenhou::log::{collect_files, parse_game, tenhou_yaku, Discard, Draw, Limit, Outcome, Rel, Round};
 use rinshan_engine::hand::{Yaku, YakuHan};
 use rinshan_engine::tile::Tile;
+use rinshan_engine::Variant;
 
 /// Every real log file's text and its parse (shared with the MJAI tests).
 pub(crate) fn real_logs() -> Vec<(String, Game)> {
@@ -136,6 +137,7 @@ fn sticks_collected(r: &Round) -> u32 {
 
 #[test]
 fn every_real_win_has_the_points_text_and_score_changes_of_its_fu_and_han() {
+    let red = Scoring::of(Variant::Red);
     let mut wins = 0;
     for (_, game) in real_logs() {
         for r in &game.rounds {
@@ -153,14 +155,14 @@ fn every_real_win_has_the_points_text_and_score_changes_of_its_fu_and_han() {
                     .sum();
                 // A limit hand's text has no fu: any fu that reaches its limit reads the same.
                 let fu = w.fu.unwrap_or(70);
-                let base = base_points(han, fu, yakuman);
+                let base = red.base_points(han, fu, yakuman);
                 assert_eq!(limit_of(base), w.limit, "{} {r}: {}", game.path, w.points);
-                let pay = payment(base, w.winner == r.dealer(), w.tsumo);
+                let pay = red.payment(base, w.winner == r.dealer(), w.tsumo);
                 assert_eq!(points_text(fu, han, w.limit, pay), w.points, "{} {r}", game.path);
                 let (honba, sticks) = if n == 0 { (r.honba, sticks_collected(r)) } else { (0, 0) };
                 let from = (!w.tsumo).then_some(w.from);
                 let pao = (w.pao != w.winner).then_some((w.pao, [1, 1]));
-                let deltas = win_deltas(w.winner, from, r.dealer(), pay, honba, sticks, pao);
+                let deltas = red.win_deltas(w.winner, from, r.dealer(), pay, (honba, sticks), pao);
                 assert_eq!(deltas, w.deltas, "{} {r}: {}", game.path, w.points);
                 wins += 1;
             }
@@ -174,35 +176,77 @@ fn every_real_win_has_the_points_text_and_score_changes_of_its_fu_and_han() {
 /// mjsoul scenarios of tests/data/scenarios.toml play it in the engine.
 #[test]
 fn a_pao_share_pays_only_its_part() {
-    let tsumo = payment(base_points(0, 0, 2), false, true);
+    let red = Scoring::of(Variant::Red);
+    let tsumo = red.payment(red.base_points(0, 0, 2), false, true);
     assert_eq!(
-        win_deltas(2, None, 0, tsumo, 0, 0, Some((0, [1, 2]))),
+        red.win_deltas(2, None, 0, tsumo, (0, 0), Some((0, [1, 2]))),
         [-48_000, -8_000, 64_000, -8_000],
         "the dealer pays 16000 of its own 32000 and 8000 of each other payer's 16000"
     );
     // Ron off seat 3 with one honba: the liable seat pays half of its 32000 share, the discarder
     // the rest and the 300.
-    let ron = payment(base_points(0, 0, 2), false, false);
+    let ron = red.payment(red.base_points(0, 0, 2), false, false);
     assert_eq!(
-        win_deltas(2, Some(3), 0, ron, 1, 0, Some((0, [1, 2]))),
+        red.win_deltas(2, Some(3), 0, ron, (1, 0), Some((0, [1, 2]))),
         [-16_000, 0, 64_300, -48_300]
     );
     // The whole hand (Tenhou): half each, honba to the discarder; a tsumo all on the liable seat.
     assert_eq!(
-        win_deltas(2, Some(3), 0, ron, 1, 0, Some((0, [1, 1]))),
+        red.win_deltas(2, Some(3), 0, ron, (1, 0), Some((0, [1, 1]))),
         [-32_000, 0, 64_300, -32_300]
     );
     assert_eq!(
-        win_deltas(2, None, 0, tsumo, 0, 0, Some((0, [1, 1]))),
+        red.win_deltas(2, None, 0, tsumo, (0, 0), Some((0, [1, 1]))),
         [-64_000, 0, 64_000, 0]
     );
 }
 
+/// M-League (`pao_pays_honba`): the liable seat also pays the honba the discarder or each payer
+/// would (ron: 2 honba, all 600 on the liable seat; a composite double yakuman tsumo: each
+/// payer's 100 on the liable seat with its share).
+#[test]
+fn mleague_pao_pays_the_honba() {
+    let m = Scoring::of(Variant::Mleague);
+    let ron = m.payment(m.base_points(0, 0, 1), false, false);
+    assert_eq!(
+        m.win_deltas(2, Some(3), 0, ron, (2, 0), Some((0, [1, 1]))),
+        [-16_600, 0, 32_600, -16_000]
+    );
+    let tsumo = m.payment(m.base_points(0, 0, 2), false, true);
+    assert_eq!(
+        m.win_deltas(2, None, 0, tsumo, (1, 0), Some((0, [1, 2]))),
+        [-48_300, -8_000, 64_300, -8_000]
+    );
+    // Tenhou: the discarder pays the honba.
+    let red = Scoring::of(Variant::Red);
+    assert_eq!(
+        red.win_deltas(2, Some(3), 0, ron, (2, 0), Some((0, [1, 1]))),
+        [-16_000, 0, 32_600, -16_600]
+    );
+}
+
+/// Kiriage mangan (M-League, WRC) and no kazoe yakuman (13 han is sanbaiman) in the points text.
+#[test]
+fn points_texts_follow_each_rule_set() {
+    let text = |v: Variant, han, fu| {
+        let s = Scoring::of(v);
+        let base = s.base_points(han, fu, 0);
+        points_text(fu, han, limit_of(base), s.payment(base, false, false))
+    };
+    assert_eq!(text(Variant::Red, 4, 30), "30符4飜7700点");
+    assert_eq!(text(Variant::Mleague, 4, 30), "満貫8000点");
+    assert_eq!(text(Variant::Wrc, 3, 60), "満貫8000点");
+    assert_eq!(text(Variant::Red, 13, 30), "役満32000点");
+    assert_eq!(text(Variant::Wrc, 13, 30), "三倍満24000点");
+    assert_eq!(text(Variant::Mleague, 13, 30), "三倍満24000点");
+}
+
 #[test]
 fn points_texts_of_each_form() {
+    let red = Scoring::of(Variant::Red);
     let text = |han, fu, yakuman, dealer, tsumo| {
-        let base = base_points(han, fu, yakuman);
-        points_text(fu, han, limit_of(base), payment(base, dealer, tsumo))
+        let base = red.base_points(han, fu, yakuman);
+        points_text(fu, han, limit_of(base), red.payment(base, dealer, tsumo))
     };
     assert_eq!(text(4, 30, 0, false, false), "30符4飜7700点");
     assert_eq!(text(2, 30, 0, false, true), "30符2飜500-1000点");
