@@ -11,13 +11,14 @@ from .env import split_record
 
 
 def read(path: str, observation: Union[str, Sequence[str]] = ("planes",)) -> dict:
-    """Every decision of every round of the log at `path`, replayed through the red variant.
+    """Every decision of every round of the log at `path`, replayed under its rule set (`red` for
+    Tenhou's logs; a log rinshan wrote for another rule set names it).
 
-    Returns `{"path", "rule", "red_fives", "names", "rounds"}`; each round has `kyoku`, `honba`,
-    `sticks`, `scores`, and per decision (claim prompts included) `seat`, `action` (the id the
-    player chose), `what` (the log's move), `legal_action_mask` and `observation` (the deciding
-    seat's view, one dict of arrays per decision axis). A round that cannot be replayed has
-    `error` instead of the decisions.
+    Returns `{"path", "rule", "red_fives", "variant", "names", "rounds"}`; each round has `kyoku`,
+    `honba`, `sticks`, `scores`, and per decision (claim prompts included) `seat`, `action` (the id
+    the player chose, in the variant's action layout), `what` (the log's move), `legal_action_mask`
+    and `observation` (the deciding seat's view, one dict of arrays per decision axis). A round
+    that cannot be replayed has `error` instead of the decisions.
     """
     forms = [observation] if isinstance(observation, str) else list(observation)
     game = _core.tenhou_read(str(path), forms)

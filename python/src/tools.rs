@@ -133,6 +133,7 @@ fn tenhou_read<'py>(py: Python<'py>, path: &str, forms: Vec<String>) -> PyResult
     out.set_item("path", &game.path)?;
     out.set_item("rule", &game.rule)?;
     out.set_item("red_fives", game.red_fives)?;
+    out.set_item("variant", game.variant.to_string())?;
     out.set_item("names", game.names.to_vec())?;
     out.set_item("rounds", rounds)?;
     Ok(out)

@@ -5,19 +5,22 @@ import json
 import subprocess
 
 import numpy as np
+import pytest
 
 import rinshan
 
 
-def test_same_seed_same_games_as_the_cli(cli, tmp_path):
+@pytest.mark.parametrize("variant", ["red", "mleague"])
+def test_same_seed_same_games_as_the_cli(cli, tmp_path, variant):
     # The CLI's self-play with four rule agents, exported as Tenhou logs ...
-    args = "selfplay --agents rule,rule,rule,rule --batch 4 --games 4 --seed 7 --threads 1 --json"
+    args = f"selfplay --variant {variant} --agents rule,rule,rule,rule --batch 4 --games 4 --seed 7"
+    args += " --threads 1 --json"
     out = subprocess.run(
         [cli, *args.split(), "--export", str(tmp_path)], check=True, capture_output=True, text=True
     ).stdout
     summary = json.loads(out)
     # ... and the package's env with the same seed, stepped with the same agent's actions.
-    env = rinshan.make("red", num_envs=4, seed=7, num_threads=1, auto_reset=False)
+    env = rinshan.make(variant, num_envs=4, seed=7, num_threads=1, auto_reset=False)
     ts = env.reset()
     ack = env.spec.action_names.index("dummy")
     played = [[] for _ in range(4)]
@@ -37,6 +40,8 @@ def test_same_seed_same_games_as_the_cli(cli, tmp_path):
     logged = []
     for path in sorted(tmp_path.glob("game-*.json")):
         game = rinshan.tenhou.read(str(path))
+        # The log names its rule set and is replayed under it: actions are the variant's ids.
+        assert game["variant"] == variant
         logged.append([int(a) for r in game["rounds"] for a in r["action"]])
     # The logs are numbered in the order games finished: match them to envs by content.
     assert sorted(map(tuple, logged)) == sorted(map(tuple, played))

@@ -14,13 +14,13 @@ use rinshan_engine::generated::kernel::GameState;
 use rinshan_engine::generated::red as k;
 use rinshan_engine::hand::YakuHan;
 use rinshan_engine::random::Rng;
-use rinshan_engine::{Tile, Variant};
+use rinshan_engine::{with_variant, Tile, Variant};
 use rinshan_logs::tenhou::log::{collect_files, parse_game, read_game, Discard, Draw, Game, Outcome, Round};
 use rinshan_logs::tenhou::plan::plan;
 use rinshan_logs::tenhou::replay::replay;
 use rinshan_logs::tenhou::write::{game_text, GameRecorder, Recorder, WriteError};
-use rinshan_tests::policy::{legal, Policy, VariantPolicy};
-use rinshan_tests::scenario::{build_wall, load, Actions};
+use rinshan_tests::policy::{legal, VariantPolicy};
+use rinshan_tests::scenario::{build_wall, load, Actions, Scenario};
 use rinshan_tests::test_data;
 
 fn env(mode: Mode, batch: usize, seed: u64, auto_reset: bool) -> Env {
@@ -252,7 +252,7 @@ const PREPARED: [(&str, &str); 12] = [
 #[test]
 fn prepared_rounds_round_trip() {
     let all = load();
-    let scenarios: Vec<_> = PREPARED
+    let scenarios: Vec<&Scenario> = PREPARED
         .iter()
         .map(|(name, _)| {
             all.iter()
@@ -260,72 +260,11 @@ fn prepared_rounds_round_trip() {
                 .unwrap_or_else(|| panic!("no scenario {name}"))
         })
         .collect();
-    let acts = Actions {
-        blocks: k::host::ACTION_BLOCKS.to_vec(),
-        red: true,
-    };
-    let walls: Vec<[Tile; 136]> = scenarios
-        .iter()
-        .map(|sc| {
-            assert!(
-                sc.start.is_none(),
-                "{}: a prepared round starts from East 1's table",
-                sc.name
-            );
-            build_wall(sc, true)
-                .unwrap_or_else(|e| panic!("{}: {e}", sc.name))
-                .map(|v| u8::try_from(v).ok().and_then(Tile::from_value).expect("a tile value"))
-        })
-        .collect();
-    let dealers: Vec<u32> = scenarios.iter().map(|sc| sc.dealer).collect();
-    let n = scenarios.len();
-    let mut env = env(Mode::Half, n, 11, false);
-    env.reset_with_walls(&walls, &dealers).expect("walls");
-    let mut recorder = Recorder::new(&env).expect("recorder");
-    let mut policies: Vec<Policy> = (0..n as u64).map(|i| Policy(Rng::new(77 + i))).collect();
-    let mut next_step = vec![0usize; n];
-    let mut games: Vec<Option<Game>> = vec![None; n];
-    while games.iter().any(Option::is_none) {
-        let step = env.last().clone();
-        let now = states(&env);
-        let mut actions = vec![k::ACTION_PASS; n];
-        for (i, sc) in scenarios.iter().enumerate() {
-            let mask = &step.legal_action_mask[i];
-            let scripted = sc
-                .steps
-                .get(next_step[i])
-                .filter(|_| now[i].rounds == 0 && !step.terminated[i]);
-            actions[i] = match scripted {
-                Some(s) if s.auto.is_some() => {
-                    if legal(mask, k::ACTION_TSUMOGIRI) {
-                        k::ACTION_TSUMOGIRI
-                    } else {
-                        k::ACTION_PASS
-                    }
-                }
-                Some(s) => {
-                    let action = s.action.as_deref().unwrap_or_default();
-                    assert_eq!(
-                        Some(step.current_player[i]),
-                        s.seat,
-                        "{}: step {}",
-                        sc.name,
-                        next_step[i]
-                    );
-                    next_step[i] += 1;
-                    acts.id(action).unwrap_or_else(|e| panic!("{}: {e}", sc.name))
-                }
-                None => policies[i].act(&now[i], mask),
-            };
-        }
-        env.step(&actions).expect("step");
-        recorder.observe(&env, &actions).expect("recorded");
-        for f in recorder.take_finished() {
-            games[f.env] = Some(f.game);
-        }
-    }
-    let games: Vec<Game> = games.into_iter().flatten().collect();
+    let games = play_prepared(Variant::Red, &scenarios);
     for ((name, what), g) in PREPARED.iter().zip(&games) {
+        let g = g
+            .as_ref()
+            .unwrap_or_else(|| panic!("{name} ended with an illegal action"));
         let first = tally(std::slice::from_ref(&Game {
             rounds: g.rounds[..1].to_vec(),
             ..g.clone()
@@ -335,8 +274,121 @@ fn prepared_rounds_round_trip() {
             "{name}: its first round has no {what}: {first:?}"
         );
     }
+    let games: Vec<Game> = games.into_iter().flatten().collect();
     eprintln!("prepared games: {:?}", tally(&games));
     round_trip(&games);
+}
+
+/// Every scenario of the other rule sets (each pins one of its rules) that starts a game from East
+/// 1's table: its round played as scripted, the rest of a half game by the policy, recorded and
+/// replayed under the rule set.
+#[test]
+fn every_rule_sets_scenarios_round_trip() {
+    let all = load();
+    let mut played = 0;
+    for &variant in Variant::ALL.iter().filter(|&&v| v != Variant::Red) {
+        let name = variant.to_string().replace('-', "_");
+        let scenarios: Vec<&Scenario> = all
+            .iter()
+            .filter(|sc| sc.variant == name && sc.start.is_none())
+            .filter(|sc| sc.expect.illegal != Some(true) && !sc.steps.iter().any(|s| s.illegal))
+            .collect();
+        if scenarios.is_empty() {
+            continue;
+        }
+        played += scenarios.len();
+        let games: Vec<Game> = play_prepared(variant, &scenarios).into_iter().flatten().collect();
+        assert_eq!(
+            games.len(),
+            scenarios.len(),
+            "{variant}: a scenario's game was not recorded"
+        );
+        eprintln!("{variant}: {} scenarios: {:?}", scenarios.len(), tally(&games));
+        round_trip(&games);
+    }
+    // mjsoul, mleague and wrc have such scenarios (no-red's one starts from its own table).
+    assert!(played >= 12, "{played} scenarios played");
+}
+
+/// The first round of each scenario as scripted, then the rest of a half game of `variant` by the
+/// policy, as the recorder wrote them (`None` for a game an illegal action ended).
+fn play_prepared(variant: Variant, scenarios: &[&Scenario]) -> Vec<Option<Game>> {
+    let acts = Actions {
+        blocks: with_variant!(variant, v => v::host::ACTION_BLOCKS.to_vec()),
+        red: variant.red_fives(),
+    };
+    let (tsumogiri, pass) = with_variant!(variant, v => (v::ACTION_TSUMOGIRI, v::ACTION_PASS));
+    let walls: Vec<[Tile; 136]> = scenarios
+        .iter()
+        .map(|sc| {
+            assert!(
+                sc.start.is_none(),
+                "{}: a prepared round starts from East 1's table",
+                sc.name
+            );
+            build_wall(sc, variant.red_fives())
+                .unwrap_or_else(|e| panic!("{}: {e}", sc.name))
+                .map(|v| u8::try_from(v).ok().and_then(Tile::from_value).expect("a tile value"))
+        })
+        .collect();
+    let dealers: Vec<u32> = scenarios.iter().map(|sc| sc.dealer).collect();
+    let n = scenarios.len();
+    let mut env = variant_env(variant, Mode::Half, n, 11, false);
+    env.reset_with_walls(&walls, &dealers).expect("walls");
+    let mut recorder = Recorder::new(&env).expect("recorder");
+    let mut policies: Vec<VariantPolicy> = (0..n as u64)
+        .map(|i| VariantPolicy::new(variant, Rng::new(77 + i)))
+        .collect();
+    let mut next_step = vec![0usize; n];
+    let mut games: Vec<Option<Game>> = vec![None; n];
+    let mut over = vec![false; n];
+    while over.iter().any(|o| !o) {
+        let step = env.last().clone();
+        let now = states(&env);
+        let mut actions = vec![pass; n];
+        for (i, sc) in scenarios.iter().enumerate() {
+            let mask = &step.legal_action_mask[i];
+            let scripted = loop {
+                let Some(s) = sc.steps.get(next_step[i]).filter(|_| now[i].rounds == 0 && !over[i]) else {
+                    break None;
+                };
+                // An auto step ends where the scenario's next step begins: `until_wall_left` tiles
+                // left, a seat to act on its draw.
+                let left = now[i].live_end.saturating_sub(now[i].next_draw);
+                match s.until_wall_left {
+                    Some(until) if s.auto.is_some() && left <= until && !legal(mask, pass) => next_step[i] += 1,
+                    _ => break Some(s),
+                }
+            };
+            actions[i] = match scripted {
+                Some(s) if s.auto.is_some() => {
+                    if legal(mask, tsumogiri) {
+                        tsumogiri
+                    } else {
+                        pass
+                    }
+                }
+                Some(s) => {
+                    let action = s.action.as_deref().unwrap_or_default();
+                    if let Some(seat) = s.seat {
+                        assert_eq!(step.current_player[i], seat, "{}: step {}", sc.name, next_step[i]);
+                    }
+                    next_step[i] += 1;
+                    acts.id(action).unwrap_or_else(|e| panic!("{}: {e}", sc.name))
+                }
+                None => policies[i].act(&now[i], mask),
+            };
+        }
+        let after = env.step(&actions).expect("step").clone();
+        recorder.observe(&env, &actions).expect("recorded");
+        for (i, o) in over.iter_mut().enumerate() {
+            *o |= after.terminated[i];
+        }
+        for f in recorder.take_finished() {
+            games[f.env] = Some(f.game);
+        }
+    }
+    games
 }
 
 /// Plays a logged round on the kernel from the wall the planner rebuilds, records it, and

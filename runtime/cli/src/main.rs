@@ -43,7 +43,7 @@ enum Command {
     Score(score::Args),
     /// Self-play of the built-in agents (or a uniformly random policy): speed, game statistics and how each agent did, e.g. `rinshan selfplay --games 1000`
     Selfplay(selfplay::Args),
-    /// Replay tenhou.net/6 or MJAI logs through the red variant and compare every round, e.g. `rinshan replay logs/`
+    /// Replay tenhou.net/6, MJAI or mjlog logs, each under its rule set (red for Tenhou's), and compare every round, e.g. `rinshan replay logs/`
     Replay(replay::Args),
     /// Convert logs between tenhou.net/6 JSON and MJAI, e.g. `rinshan convert game.json -o game.mjson`
     Convert(convert::Args),

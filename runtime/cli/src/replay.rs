@@ -1,5 +1,5 @@
-//! `rinshan replay <files or folders>`: replays tenhou.net/6, MJAI or mjlog logs through the red variant
-//! and reports how far rinshan agrees with them (see `rinshan_logs::tenhou::replay`).
+//! `rinshan replay <files or folders>`: replays tenhou.net/6, MJAI or mjlog logs, each under its
+//! rule set (red for Tenhou's and MJAI's; a log rinshan wrote names its own), and reports how far rinshan agrees with them (see `rinshan_logs::tenhou::replay`).
 
 use std::path::PathBuf;
 

@@ -278,45 +278,79 @@ fn selfplay_rejects_bad_options() {
     }
 }
 
+/// Games of each rule set exported as tenhou.net/6 replay under that rule set, one folder at a
+/// time and all together.
 #[test]
 fn selfplay_exports_games_that_replay() {
-    let dir = std::env::temp_dir().join(format!("rinshan-export-{}", std::process::id()));
-    let path = dir.to_str().expect("utf-8 path");
-    let args = ["selfplay", "--games", "6", "--batch", "4", "--json", "--seed", "9"];
-    let plain = json(&rinshan(&args));
-    let exported = json(&rinshan(&[&args[..], &["--export", path]].concat()));
-    // Exporting plays the same games.
-    assert_eq!(plain["rounds"], exported["rounds"]);
-    let mut files: Vec<String> = std::fs::read_dir(&dir)
-        .expect("the export folder")
-        .map(|e| e.expect("an entry").file_name().to_string_lossy().into_owned())
-        .collect();
-    files.sort();
-    let mut expected: Vec<String> = (1..=6).map(|n| format!("game-{n}.json")).collect();
-    expected.sort();
-    assert_eq!(files, expected);
-    let rounds: usize = files
+    let root = std::env::temp_dir().join(format!("rinshan-export-{}", std::process::id()));
+    for variant in ["red", "mleague", "no-red"] {
+        let dir = root.join(variant);
+        let path = dir.to_str().expect("utf-8 path");
+        let args = [
+            "selfplay",
+            "--games",
+            "6",
+            "--batch",
+            "4",
+            "--json",
+            "--seed",
+            "9",
+            "--variant",
+            variant,
+        ];
+        let plain = json(&rinshan(&args));
+        let exported = json(&rinshan(&[&args[..], &["--export", path]].concat()));
+        // Exporting plays the same games.
+        assert_eq!(plain["rounds"], exported["rounds"]);
+        let mut files: Vec<String> = std::fs::read_dir(&dir)
+            .expect("the export folder")
+            .map(|e| e.expect("an entry").file_name().to_string_lossy().into_owned())
+            .collect();
+        files.sort();
+        let mut expected: Vec<String> = (1..=6).map(|n| format!("game-{n}.json")).collect();
+        expected.sort();
+        assert_eq!(files, expected);
+        let texts: Vec<String> = files
+            .iter()
+            .map(|f| std::fs::read_to_string(dir.join(f)).expect("a game"))
+            .collect();
+        let rounds: usize = texts.iter().map(|t| t.lines().count()).sum();
+        assert_eq!(serde_json::json!(rounds), plain["rounds"], "one line per round");
+        let named = texts.iter().all(|t| t.contains(&format!("\"variant\":\"{variant}\"")));
+        assert_eq!(named, variant != "red", "{variant}: {}", texts[0]);
+        let v = json(&rinshan(&["replay", path, "--json"]));
+        assert_eq!(v["all_agree"], true, "{v}");
+    }
+    let dirs: Vec<String> = ["red", "mleague", "no-red"]
         .iter()
-        .map(|f| std::fs::read_to_string(dir.join(f)).expect("a game").lines().count())
-        .sum();
-    assert_eq!(serde_json::json!(rounds), plain["rounds"], "one line per round");
-    let v = json(&rinshan(&["replay", path, "--json"]));
-    assert_eq!(v["all_agree"], true, "{v}");
-    std::fs::remove_dir_all(&dir).ok();
+        .map(|v| root.join(v).to_string_lossy().into_owned())
+        .collect();
+    let args: Vec<&str> = ["replay", "--json"]
+        .into_iter()
+        .chain(dirs.iter().map(String::as_str))
+        .collect();
+    let all = json(&rinshan(&args));
+    assert_eq!(
+        (&all["all_agree"], &all["report"]["games"]),
+        (&serde_json::json!(true), &serde_json::json!(18)),
+        "{all}"
+    );
+    std::fs::remove_dir_all(&root).ok();
 }
 
 #[test]
 fn selfplay_export_says_what_it_needs() {
-    for (option, value, needle) in [
-        ("--backend", "gpu", "--backend cpu"),
-        ("--variant", "no-red", "(red, mjsoul); not no-red"),
-        ("--variant", "mleague", "(red, mjsoul); not mleague"),
-        ("--mode", "single", "east or half"),
+    let mjai = ["--variant", "mleague", "--export-format", "mjai"];
+    for (options, needle) in [
+        (&["--backend", "gpu"][..], "--backend cpu"),
+        (&mjai[..], "MJAI logs hold Tenhou's rules only"),
+        (&["--mode", "single"][..], "east or half"),
     ] {
-        let out = rinshan(&["selfplay", "--games", "1", option, value, "--export", "/tmp/unused"]);
-        assert_eq!(out.status.code(), Some(2), "{option} {value}");
+        let args = [&["selfplay", "--games", "1"][..], options, &["--export", "/tmp/unused"]].concat();
+        let out = rinshan(&args);
+        assert_eq!(out.status.code(), Some(2), "{options:?}");
         let err = String::from_utf8_lossy(&out.stderr);
-        assert!(err.contains(needle), "{option} {value}: {err}");
+        assert!(err.contains(needle), "{options:?}: {err}");
     }
 }
 

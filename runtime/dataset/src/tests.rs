@@ -248,3 +248,22 @@ fn bad_logs_are_skipped_with_file_and_reason_and_the_rest_is_kept() {
     std::fs::remove_dir_all(dir).unwrap();
     std::fs::remove_dir_all(out).unwrap();
 }
+
+/// A dataset holds one action layout: a game of another rule set is skipped with its reason, and
+/// the red games beside it keep their rows.
+#[test]
+fn games_of_other_rule_sets_are_skipped() {
+    let paths = logs("tenhou", "json");
+    let red = read_log(&paths[0]).unwrap();
+    let mleague = rinshan_logs::tenhou::log::Game {
+        variant: rinshan_engine::Variant::Mleague,
+        path: "other.json".into(),
+        ..red.clone()
+    };
+    let outcomes = record(&[mleague, red], &options(&[Form::Planes])).unwrap();
+    match &outcomes[0] {
+        Outcome::Skipped(why) => assert!(why.contains("played under mleague"), "{why}"),
+        other => panic!("{other:?}"),
+    }
+    assert!(matches!(outcomes[1], Outcome::Rows(_)), "{:?}", outcomes[1]);
+}

@@ -522,6 +522,40 @@ fn red_fives_need_a_red_rule() {
     );
 }
 
+/// A record of another rule set names it (`"variant"`); a name rinshan does not know, a rule
+/// set without red fives whose `aka` says red, or a second record of another rule set are errors
+/// of the rule.
+#[test]
+fn the_rule_names_the_rule_set() {
+    let mut record = first_record();
+    assert_eq!(
+        parse_game("t.json", &record.to_string()).map(|g| g.variant),
+        Ok(Variant::Red)
+    );
+    record["rule"]["variant"] = json!("mleague");
+    let game = parse_game("t.json", &record.to_string()).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(game.variant, Variant::Mleague);
+    let rule_error = |record: &Value, says: &str| {
+        let err = parse_game("t.json", &record.to_string()).unwrap_err();
+        assert_eq!(err.field.as_deref(), Some("rule"), "{err}");
+        assert!(err.message.contains(says), "{err}");
+    };
+    record["rule"]["variant"] = json!("blue");
+    rule_error(&record, "blue");
+    record["rule"]["variant"] = json!(3);
+    rule_error(&record, "not a name");
+    record["rule"]["variant"] = json!("wrc");
+    rule_error(&record, "wrc plays without them");
+    let mut mleague = first_record();
+    mleague["rule"]["variant"] = json!("mleague");
+    let two = format!("{}\n{mleague}\n", first_record());
+    let err = parse_game("two.json", &two).unwrap_err();
+    assert!(
+        err.message.contains("variant mleague") && err.message.contains("one file is one game"),
+        "{err}"
+    );
+}
+
 #[test]
 fn other_layouts_of_the_same_record() {
     let record = first_record();
