@@ -73,21 +73,28 @@ pub struct Plan {
 impl Plan {
     /// The deal that starts `round` (logged as this plan's round) from the plan's wall, for a
     /// game of `variant`: without red fives, the unseen tiles that fill the wall are black too
-    /// (the logged ones are, [`crate::tenhou::log`] checks).
-    pub fn deal(&self, round: &Round, variant: Variant) -> rinshan_engine::env::Deal {
+    /// (the logged ones are, [`crate::tenhou::log`] checks); with them, a round that shows four
+    /// black copies of a five cannot be dealt.
+    pub fn deal(&self, round: &Round, variant: Variant) -> Result<rinshan_engine::env::Deal, String> {
         let wall = if variant.red_fives() {
+            for red in (34..37).filter_map(Tile::from_value) {
+                if !self.wall.contains(&red) {
+                    let black = Tile::plain(red.kind());
+                    return Err(format!("four black {black} shown: {variant} has a red one among the four"));
+                }
+            }
             self.wall
         } else {
             self.wall.map(|t| Tile::plain(t.kind()))
         };
-        rinshan_engine::env::Deal {
+        Ok(rinshan_engine::env::Deal {
             round: round.kyoku,
             dealer: round.dealer() as u32,
             honba: round.honba,
             sticks: round.sticks,
             scores: round.scores,
             wall,
-        }
+        })
     }
 }
 

@@ -64,7 +64,8 @@ pub fn round_replay(game: &Game, round: usize) -> Result<(Vec<Position>, Option<
     let from_red = ActionMap::new(Variant::Red, game.variant);
     let pass = with_variant!(game.variant, v => v::ACTION_PASS);
     env.reset().map_err(|e| e.to_string())?;
-    env.deal(&[Some(p.deal(r, game.variant))]).map_err(|e| e.to_string())?;
+    let deal = p.deal(r, game.variant).map_err(|e| format!("{where_}: {e}"))?;
+    env.deal(&[Some(deal)]).map_err(|e| e.to_string())?;
     let mut out = Vec::new();
     let mut next = 0;
     loop {

@@ -67,10 +67,9 @@ impl<'g> Run<'g> {
             self.next = 0;
             self.steps = 0;
             self.change = [0; 4];
-            match plan(r) {
-                Ok(p) => {
+            match plan(r).and_then(|p| Ok((p.deal(r, self.variant)?, p))) {
+                Ok((deal, p)) => {
                     report.actions += p.moves.len();
-                    let deal = p.deal(r, self.variant);
                     self.plan = Some(p);
                     return Some(deal);
                 }
