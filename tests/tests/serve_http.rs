@@ -252,6 +252,46 @@ async fn every_rule_set_is_offered_with_its_description() {
     assert_eq!(v["rules"], info["variant_descriptions"]["mleague"], "{v}");
 }
 
+/// Plays game `id` to its end, the person taking the first legal action; the last view.
+async fn play_to_the_end(app: &Router, id: &str) -> Value {
+    loop {
+        let v = settled(app, id).await;
+        match v["phase"].as_str() {
+            Some("human") => {
+                let body = json!({"action": v["legal"][0]["id"], "step": v["step"]});
+                let (status, text) = post(app, &format!("/api/games/{id}/actions"), &body).await;
+                assert_eq!(status, StatusCode::OK, "{text}");
+            }
+            Some("result") => {
+                let (status, text) = send(app, Method::POST, &format!("/api/games/{id}/next"), None, false).await;
+                assert_eq!(status, StatusCode::OK, "{text}");
+            }
+            Some("over") => return v,
+            other => panic!("phase {other:?}"),
+        }
+    }
+}
+
+/// A game of another rule set is logged too: the log names it and replays under it.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_wrc_game_is_logged_under_its_rules() {
+    let app = app(Limits {
+        fixed_seed: Some(4),
+        ..Limits::default()
+    });
+    let body = json!({"variant": "wrc", "mode": "east", "seat": 1, "agents": ["rule", "rule", "rule"], "delay_ms": 0});
+    let id = new_game(&app, body).await["id"].as_str().expect("an id").to_string();
+    play_to_the_end(&app, &id).await;
+    let (status, text) = get(&app, &format!("/api/games/{id}/log")).await;
+    assert_eq!(status, StatusCode::OK, "{text}");
+    assert!(text.contains("\"variant\":\"wrc\""), "{text}");
+    let game = rinshan_logs::tenhou::log::parse_game("download", &text).expect("a Tenhou log");
+    assert_eq!((game.variant, game.red_fives), (rinshan_engine::Variant::Wrc, false));
+    let report = rinshan_logs::tenhou::replay::replay(std::slice::from_ref(&game), rinshan_engine::env::Backend::Cpu)
+        .expect("it replays");
+    assert!(report.all_agree(), "{report:?}");
+}
+
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn every_refusal_has_its_status_and_a_message() {
     let app = app(Limits {

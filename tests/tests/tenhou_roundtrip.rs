@@ -224,8 +224,15 @@ fn no_red_games_round_trip() {
         .collect();
     assert!(tenhou.iter().all(|g| g.variant == Variant::Red && !g.red_fives));
     let report = replay(&tenhou, Backend::Cpu).expect("the replay runs");
-    let four = report.mismatches.iter().filter(|m| m.log.contains("four black")).count();
-    assert!(four > 0 && report.rounds_replayed > 0, "{four} rounds with four black fives: {report:?}");
+    let four = report
+        .mismatches
+        .iter()
+        .filter(|m| m.log.contains("four black"))
+        .count();
+    assert!(
+        four > 0 && report.rounds_replayed > 0,
+        "{four} rounds with four black fives: {report:?}"
+    );
 }
 
 #[test]

@@ -80,7 +80,9 @@ impl Plan {
             for red in (34..37).filter_map(Tile::from_value) {
                 if !self.wall.contains(&red) {
                     let black = Tile::plain(red.kind());
-                    return Err(format!("four black {black} shown: {variant} has a red one among the four"));
+                    return Err(format!(
+                        "four black {black} shown: {variant} has a red one among the four"
+                    ));
                 }
             }
             self.wall
