@@ -7,6 +7,8 @@ use rinshan_logs::read_log;
 use rinshan_logs::tenhou::log::collect_files;
 use rinshan_logs::tenhou::replay::{replay, Report};
 
+use rinshan_engine::Variant;
+
 use crate::args::BackendArg;
 use crate::error::CliError;
 
@@ -18,6 +20,10 @@ pub struct Args {
     paths: Vec<PathBuf>,
     #[command(flatten)]
     backend: BackendArg,
+    /// Play every log under this rule set instead of the one it names (red unless rinshan wrote
+    /// it), e.g. Mahjong Soul games converted to tenhou.net/6: --variant mjsoul
+    #[arg(long)]
+    variant: Option<Variant>,
     /// Print the report as JSON
     #[arg(long)]
     json: bool,
@@ -59,7 +65,16 @@ pub fn run(args: Args) -> Result<(), CliError> {
     let mut unreadable = Vec::new();
     for f in &files {
         match read_log(f) {
-            Ok(g) => games.push(g),
+            Ok(mut g) => match args.variant {
+                Some(v) if g.red_fives && !v.red_fives() => {
+                    unreadable.push(format!("{}: the log plays red fives, {v} has none", g.path));
+                }
+                Some(v) => {
+                    g.variant = v;
+                    games.push(g);
+                }
+                None => games.push(g),
+            },
             Err(e) => unreadable.push(e.to_string()),
         }
     }

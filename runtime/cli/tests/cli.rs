@@ -338,6 +338,48 @@ fn selfplay_exports_games_that_replay() {
     std::fs::remove_dir_all(&root).ok();
 }
 
+/// `replay --variant` plays logs that do not name their rule set (a converted Mahjong Soul log,
+/// say) under the rule set given: M-League games without their name disagree with Tenhou's rules
+/// and agree with M-League's; a log with red fives is refused for a rule set without them.
+#[test]
+fn replay_under_a_rule_set_the_logs_do_not_name() {
+    let root = std::env::temp_dir().join(format!("rinshan-unnamed-{}", std::process::id()));
+    let (named, unnamed) = (root.join("named"), root.join("unnamed"));
+    let path = |p: &std::path::Path| p.to_str().expect("utf-8 path").to_string();
+    let args = [
+        "selfplay",
+        "--games",
+        "6",
+        "--batch",
+        "4",
+        "--seed",
+        "9",
+        "--variant",
+        "mleague",
+    ];
+    let out = rinshan(&[&args[..], &["--export", &path(&named)]].concat());
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    std::fs::create_dir_all(&unnamed).expect("a folder");
+    for entry in std::fs::read_dir(&named).expect("the export") {
+        let file = entry.expect("an entry").path();
+        let text = std::fs::read_to_string(&file).expect("a log");
+        let stripped = text.replace(",\"variant\":\"mleague\"", "");
+        assert_ne!(stripped, text);
+        std::fs::write(unnamed.join(file.file_name().expect("a name")), stripped).expect("written");
+    }
+    let out = rinshan(&["replay", &path(&unnamed), "--json"]);
+    assert_eq!(out.status.code(), Some(1), "{}", String::from_utf8_lossy(&out.stderr));
+    let as_red: serde_json::Value = serde_json::from_slice(&out.stdout).expect("a JSON report");
+    assert_eq!(as_red["all_agree"], false, "{as_red}");
+    let as_mleague = json(&rinshan(&["replay", &path(&unnamed), "--variant", "mleague", "--json"]));
+    assert_eq!(as_mleague["all_agree"], true, "{as_mleague}");
+    let out = rinshan(&["replay", &path(&unnamed), "--variant", "wrc"]);
+    assert_eq!(out.status.code(), Some(2));
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("the log plays red fives, wrc has none"), "{text}");
+    std::fs::remove_dir_all(&root).ok();
+}
+
 #[test]
 fn selfplay_export_says_what_it_needs() {
     let mjai = ["--variant", "mleague", "--export-format", "mjai"];
