@@ -4,7 +4,7 @@ learning, and replay checks."""
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import Union
+from typing import Optional, Union
 
 from . import _core
 from .env import split_record
@@ -32,9 +32,13 @@ def read(path: str, observation: Union[str, Sequence[str]] = ("planes",)) -> dic
     return game
 
 
-def replay(paths: Union[str, Sequence[str]], backend: str = "cpu") -> dict:
+def replay(
+    paths: Union[str, Sequence[str]], backend: str = "cpu", variant: Optional[str] = None
+) -> dict:
     """Replays logs (files or folders) and compares every round with the log: counts of what
-    agrees (`all_agree`) and every mismatch as text."""
+    agrees (`all_agree`) and every mismatch as text. Each log is played under the rule set it
+    names (red unless rinshan wrote it), or under `variant` when given (e.g. Mahjong Soul games
+    converted to tenhou.net/6: `variant="mjsoul"`)."""
     if isinstance(paths, str):
         paths = [paths]
-    return _core.replay([str(p) for p in paths], backend)
+    return _core.replay([str(p) for p in paths], backend, variant)

@@ -141,14 +141,27 @@ fn tenhou_read<'py>(py: Python<'py>, path: &str, forms: Vec<String>) -> PyResult
 
 /// Replays logs (files or folders) through the engine: the agreement counts and mismatches.
 #[pyfunction]
-#[pyo3(signature = (paths, backend="cpu"))]
-fn replay<'py>(py: Python<'py>, paths: Vec<String>, backend: &str) -> PyResult<Bound<'py, PyDict>> {
+#[pyo3(signature = (paths, backend="cpu", variant=None))]
+fn replay<'py>(
+    py: Python<'py>,
+    paths: Vec<String>,
+    backend: &str,
+    variant: Option<&str>,
+) -> PyResult<Bound<'py, PyDict>> {
     let backend: Backend = parse("backend", backend)?;
+    let variant: Option<Variant> = variant.map(|v| parse("variant", v)).transpose()?;
     let paths: Vec<std::path::PathBuf> = paths.iter().map(std::path::PathBuf::from).collect();
     let files = tenhou::log::collect_files(&paths).map_err(|e| PyValueError::new_err(e.to_string()))?;
+    let read = |f: &std::path::PathBuf| -> Result<tenhou::log::Game, String> {
+        let mut game = rinshan_logs::read_log(f).map_err(|e| e.to_string())?;
+        if let Some(v) = variant {
+            game.play_under(v)?;
+        }
+        Ok(game)
+    };
     let games = files
         .iter()
-        .map(|f| rinshan_logs::read_log(f).map_err(|e| PyValueError::new_err(e.to_string())))
+        .map(|f| read(f).map_err(PyValueError::new_err))
         .collect::<PyResult<Vec<_>>>()?;
     let r = py
         .detach(|| tenhou::replay::replay(&games, backend))

@@ -88,3 +88,23 @@ def test_replay_agrees_with_the_logs(log_path):
     report = rinshan.replay([log_path])
     assert report["games"] == 1 and report["all_agree"], report["mismatches"][:3]
     assert report["actions_accepted"] == report["actions"] > 100
+
+
+def test_replay_under_a_rule_set_the_log_does_not_name(cli, tmp_path):
+    # M-League games from the CLI, their rule set's name taken out of the logs ...
+    out = tmp_path / "named"
+    args = "selfplay --variant mleague --games 2 --batch 2 --seed 5"
+    subprocess.run([cli, *args.split(), "--export", str(out)], check=True, capture_output=True)
+    unnamed = tmp_path / "unnamed"
+    unnamed.mkdir()
+    for path in out.glob("game-*.json"):
+        text = path.read_text()
+        assert ',"variant":"mleague"' in text
+        (unnamed / path.name).write_text(text.replace(',"variant":"mleague"', ""))
+    # ... replay under M-League's rules when asked; a rule set without red fives refuses them.
+    report = rinshan.replay([str(unnamed)], variant="mleague")
+    assert report["games"] == 2 and report["all_agree"], report["mismatches"][:3]
+    with pytest.raises(ValueError, match="the log plays red fives, wrc has none"):
+        rinshan.replay([str(unnamed)], variant="wrc")
+    with pytest.raises(ValueError, match="blue"):
+        rinshan.replay([str(unnamed)], variant="blue")

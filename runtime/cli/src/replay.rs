@@ -65,15 +65,9 @@ pub fn run(args: Args) -> Result<(), CliError> {
     let mut unreadable = Vec::new();
     for f in &files {
         match read_log(f) {
-            Ok(mut g) => match args.variant {
-                Some(v) if g.red_fives && !v.red_fives() => {
-                    unreadable.push(format!("{}: the log plays red fives, {v} has none", g.path));
-                }
-                Some(v) => {
-                    g.variant = v;
-                    games.push(g);
-                }
-                None => games.push(g),
+            Ok(mut g) => match args.variant.map_or(Ok(()), |v| g.play_under(v)) {
+                Ok(()) => games.push(g),
+                Err(e) => unreadable.push(e),
             },
             Err(e) => unreadable.push(e.to_string()),
         }

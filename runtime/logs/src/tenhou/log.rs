@@ -122,6 +122,19 @@ pub struct Game {
     pub rounds: Vec<Round>,
 }
 
+impl Game {
+    /// Plays the game under `variant` instead of the rule set it names (logs that cannot name
+    /// theirs, such as Mahjong Soul games converted to tenhou.net/6); a game with red fives
+    /// cannot be played under a rule set without them.
+    pub fn play_under(&mut self, variant: Variant) -> Result<(), String> {
+        if self.red_fives && !variant.red_fives() {
+            return Err(format!("{}: the log plays red fives, {variant} has none", self.path));
+        }
+        self.variant = variant;
+        Ok(())
+    }
+}
+
 /// Why a log could not be read. Lines count from 1; seats (absolute) and list entries from 0.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct LogError {
