@@ -286,18 +286,8 @@ fn selfplay_exports_games_that_replay() {
     for variant in ["red", "mleague", "no-red"] {
         let dir = root.join(variant);
         let path = dir.to_str().expect("utf-8 path");
-        let args = [
-            "selfplay",
-            "--games",
-            "6",
-            "--batch",
-            "4",
-            "--json",
-            "--seed",
-            "9",
-            "--variant",
-            variant,
-        ];
+        let line = format!("selfplay --games 6 --batch 4 --json --seed 9 --variant {variant}");
+        let args: Vec<&str> = line.split(' ').collect();
         let plain = json(&rinshan(&args));
         let exported = json(&rinshan(&[&args[..], &["--export", path]].concat()));
         // Exporting plays the same games.
@@ -346,17 +336,9 @@ fn replay_under_a_rule_set_the_logs_do_not_name() {
     let root = std::env::temp_dir().join(format!("rinshan-unnamed-{}", std::process::id()));
     let (named, unnamed) = (root.join("named"), root.join("unnamed"));
     let path = |p: &std::path::Path| p.to_str().expect("utf-8 path").to_string();
-    let args = [
-        "selfplay",
-        "--games",
-        "6",
-        "--batch",
-        "4",
-        "--seed",
-        "9",
-        "--variant",
-        "mleague",
-    ];
+    let args: Vec<&str> = "selfplay --games 6 --batch 4 --seed 9 --variant mleague"
+        .split(' ')
+        .collect();
     let out = rinshan(&[&args[..], &["--export", &path(&named)]].concat());
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     std::fs::create_dir_all(&unnamed).expect("a folder");
