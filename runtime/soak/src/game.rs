@@ -46,7 +46,7 @@ pub(super) fn play(soak: &Soak, g: u64, seed: u64, starting: i32, logged: bool) 
         };
         let mut policy = Rng::new(seed ^ 0x736f_616b);
         let mut leak_rng = Rng::new(seed ^ 0x6c65_616b);
-        let mut recorder = match logged.then(|| GameRecorder::new(&s)).transpose() {
+        let mut recorder = match logged.then(|| GameRecorder::for_variant(&s, soak.variant)).transpose() {
             Ok(r) => r,
             Err(e) => {
                 out.failure = Some((0, format!("the recorder refused the game: {e}")));

@@ -3,8 +3,8 @@
 //! random policy, and after every step the engine's invariants hold
 //! ([`rinshan_engine::invariants`]), the action played was legal, and every so often the current
 //! seat's observation does not change when everything it cannot see is resampled. At the end the
-//! rewards add up to each seat's score change, and a red east or half game, written as a Tenhou
-//! log, reads back and replays through the engine exactly. A violation is reported with the
+//! rewards add up to each seat's score change, and an east or half game, written as a Tenhou
+//! log, reads back and replays through the engine under its rule set exactly. A violation is reported with the
 //! game's seed and every action played, which repeat it, and its log when the log is what failed.
 //!
 //! Depends on `rinshan-engine` and `rinshan-logs` (the Tenhou log round trip).
@@ -103,7 +103,7 @@ const REPLAY_BATCH: usize = 64;
 pub fn run(soak: &Soak, progress: &(dyn Fn(u64) + Sync)) -> Outcome {
     let done = AtomicU64::new(0);
     let starting = soak.variant.starting_points() as i32;
-    let logged = soak.variant == Variant::Red && soak.mode != Mode::Single;
+    let logged = soak.mode != Mode::Single;
     let chunks: Vec<Outcome> = (0..soak.games)
         .collect::<Vec<u64>>()
         .par_chunks(REPLAY_BATCH)
