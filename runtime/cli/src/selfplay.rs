@@ -43,8 +43,8 @@ pub struct Args {
     #[command(flatten)]
     mjai: MjaiArgs,
     /// Also write each counted game as DIR/game-<n>.json (n = 1..games), a tenhou.net/6 log that
-    /// `rinshan replay` replays under the game's rule set (or .mjson for red, see
-    /// --export-format). East or half games, CPU backend only (the games' states are read after
+    /// `rinshan replay` replays under the game's rule set (or .mjson, see --export-format, which
+    /// cannot name the rule set: replay those with --variant). East or half games, CPU backend only (the games' states are read after
     /// every step)
     #[arg(long, value_name = "DIR")]
     export: Option<PathBuf>,
@@ -190,7 +190,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
         return Err(CliError::input("--games must be at least 1"));
     }
     if let Some(dir) = &args.export {
-        check_export(dir, &config, args.export_format)?;
+        check_export(dir, &config)?;
     }
     let mut env = Env::new(config).map_err(|e| match e {
         rinshan_engine::env::EnvError::Gpu(_) => CliError::failure(e),
@@ -360,13 +360,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
 }
 
 /// Why games cannot be exported as asked; creates the folder.
-fn check_export(dir: &Path, config: &Config, format: FormatArg) -> Result<(), CliError> {
-    if config.variant != Variant::Red && format != FormatArg::Tenhou {
-        return Err(CliError::input(format!(
-            "--export of {} games writes tenhou.net/6 (--export-format tenhou), which names the rule set; MJAI logs hold Tenhou's rules only",
-            config.variant
-        )));
-    }
+fn check_export(dir: &Path, config: &Config) -> Result<(), CliError> {
     if config.mode == Mode::Single {
         return Err(CliError::input(
             "--export needs --mode east or half: Tenhou has no one-hand games",

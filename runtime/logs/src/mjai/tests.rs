@@ -47,19 +47,6 @@ fn real_logs_read_from_mjai_replay_exactly() {
     assert_eq!(report.games, games.len());
 }
 
-/// MJAI's start_game cannot name a rule set, so a game of another one is not written as MJAI.
-#[test]
-fn games_of_other_rule_sets_are_not_written_as_mjai() {
-    let (_, game) = real_logs().swap_remove(0);
-    assert!(game_text(&game).is_ok());
-    let mleague = Game {
-        variant: rinshan_engine::Variant::Mleague,
-        ..game
-    };
-    let err = game_text(&mleague).unwrap_err();
-    assert!(err.message.contains("mleague game as tenhou.net/6"), "{err}");
-}
-
 #[test]
 fn the_original_mjai_yaku_names_read_as_ours() {
     // The real logs with every yaku renamed as the original mjai server (and the Tenhou-to-MJAI

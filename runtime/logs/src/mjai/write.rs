@@ -44,22 +44,10 @@ pub(crate) fn start_game(names: &[String; 4], rule: &str, red_fives: bool) -> Ev
     }
 }
 
-/// Every event of the game, `start_game` to `end_game`.
+/// Every event of the game, `start_game` to `end_game`. MJAI cannot name a rule set: a game of
+/// another than Tenhou's is replayed from its MJAI log with that rule set given
+/// ([`crate::tenhou::log::Game::play_under`]).
 pub fn game_events(game: &Game) -> Result<Vec<Event>, LogError> {
-    if game.variant != rinshan_engine::Variant::Red {
-        // MJAI's start_game has no field for a rule set, and its readers play Tenhou's rules.
-        return Err(LogError {
-            file: game.path.clone(),
-            line: None,
-            column: None,
-            round: None,
-            field: None,
-            message: format!(
-                "MJAI logs hold games of Tenhou's rules (red); write this {} game as tenhou.net/6, which names its rules",
-                game.variant
-            ),
-        });
-    }
     let mut events = vec![start_game(&game.names, &game.rule, game.red_fives)];
     for round in &game.rounds {
         round_events(round, &mut events).map_err(|message| LogError {
