@@ -107,8 +107,8 @@ fn collect_sticks(s: &mut GameState, to: u32) {
 
 // The yakuman the winner's liable seat pays for (pao), or YAKU_COUNT for none: big dragons or big
 // winds fed by a call, else (PAO_SUUKANTSU) four kans whose fourth was an open kan. A hand with
-// both, fed by two seats, charges the first only.
-fn pao_yaku(s: &mut GameState, winner: u32, out: ScoreOutput) -> u32 {
+// both, fed by two seats, charges the first only. The log writer reads it too.
+pub fn pao_yaku(s: &mut GameState, winner: u32, out: ScoreOutput) -> u32 {
     let p: u32 = byte_of(s.pao, winner);
     if !PAO || p == 0u32 {
         return YAKU_COUNT;
@@ -128,7 +128,7 @@ fn pao_yaku(s: &mut GameState, winner: u32, out: ScoreOutput) -> u32 {
 }
 
 // The seat liable for the winner's `pao` yakuman (see `pao_yaku`), or 4 for none.
-fn liable_seat(s: &mut GameState, winner: u32, pao: u32) -> u32 {
+pub fn liable_seat(s: &mut GameState, winner: u32, pao: u32) -> u32 {
     if pao == YAKU_COUNT {
         return 4u32;
     }

@@ -10,8 +10,7 @@ use crate::tenhou::plan::wall::{DORA, RINSHAN, URA};
 use crate::tenhou::plan::Played;
 use rinshan_engine::env::{events, ActionMap, DrawRecord, WinRecord};
 use rinshan_engine::generated::kernel::{self, GameState};
-// Red's ids: the recorder reads every variant's moves in red's layout (`to_red`), and every
-// variant has the same yaku ids.
+// Red's ids: the recorder reads every variant's moves in red's layout (`to_red`).
 use rinshan_engine::generated::red as k;
 use rinshan_engine::Variant;
 
@@ -234,7 +233,7 @@ impl GameRecorder {
             for (n, &w) in winners.iter().enumerate() {
                 let rec = WinRecord::decode(&a.win_yaku, &a.win_score, w as usize);
                 let scoring = &self.scoring;
-                let liable = liability(scoring, kernel::byte_of(b.pao, w), &rec);
+                let liable = scoring.liability(b, w, [a.win_yaku[2 * w as usize], a.win_yaku[2 * w as usize + 1]]);
                 let base = scoring.base_points(rec.han, rec.fu, rec.yakuman);
                 let limit = limit_of(base);
                 let pay = scoring.payment(base, w as usize == dealer, tsumo);
@@ -310,25 +309,4 @@ impl GameRecorder {
         }
         Ok(())
     }
-}
-
-/// The seat liable for a win and the yakuman it is liable for (the scoring kernel's `pao_yaku`):
-/// big dragons or big winds fed by a call (the low nibble of the winner's `pao` byte, seat + 1),
-/// else, with `pao_suukantsu`, four kans whose fourth was an open kan (the high nibble).
-fn liability(scoring: &Scoring, pao: u32, rec: &WinRecord) -> Option<(u32, u32)> {
-    if !scoring.pao {
-        return None;
-    }
-    let has = |yaku: u32| rec.yaku_ids().any(|y| y == yaku);
-    let fed = (pao & 15).checked_sub(1);
-    if let Some(seat) = fed {
-        for yaku in [k::YAKU_DAISANGEN, k::YAKU_DAISUUSHI] {
-            if has(yaku) {
-                return Some((seat, yaku));
-            }
-        }
-    }
-    let kans = (pao >> 4).checked_sub(1);
-    kans.filter(|_| scoring.pao_suukantsu && has(k::YAKU_SUUKANTSU))
-        .map(|seat| (seat, k::YAKU_SUUKANTSU))
 }

@@ -8,6 +8,7 @@
 
 use crate::tenhou::log::{tenhou_yaku, Limit, LoggedDraw, Outcome};
 use rinshan_engine::env::{DrawKind, DrawRecord, WinRecord};
+use rinshan_engine::generated::kernel::{GameState, ScoreOutput};
 use rinshan_engine::hand::{yaku_worth, Payment, Yaku, YakuHan};
 use rinshan_engine::Variant;
 
@@ -23,10 +24,8 @@ pub(crate) struct Scoring {
     honba_tsumo: u32,
     /// Points of one riichi stick.
     pub(crate) stick: u32,
-    /// `[liability] pao`, `pao_pays_honba`, `pao_suukantsu`.
-    pub(crate) pao: bool,
+    /// `[liability] pao_pays_honba`.
     pao_pays_honba: bool,
-    pub(crate) pao_suukantsu: bool,
 }
 
 impl std::fmt::Debug for Scoring {
@@ -44,10 +43,25 @@ impl Scoring {
             honba_ron: v::HONBA_RON_POINTS,
             honba_tsumo: v::HONBA_TSUMO_POINTS,
             stick: v::RIICHI_STICK_POINTS,
-            pao: v::PAO,
             pao_pays_honba: v::PAO_PAYS_HONBA,
-            pao_suukantsu: v::PAO_SUUKANTSU,
         })
+    }
+
+    /// The seat liable for the win of `winner` in the state `before` the winning step, and the
+    /// yakuman it is liable for (the scoring kernel's `pao_yaku` and `liable_seat`); `yaku` are
+    /// the win's yaku words.
+    pub(crate) fn liability(&self, before: &GameState, winner: u32, yaku: [u32; 2]) -> Option<(u32, u32)> {
+        let out = ScoreOutput {
+            yaku_lo: yaku[0],
+            yaku_hi: yaku[1],
+            ..bytemuck::Zeroable::zeroed()
+        };
+        let mut s = *before;
+        let (pao, seat) = rinshan_engine::with_variant!(self.variant, v => {
+            let pao = v::pao_yaku(&mut s, winner, out);
+            (pao, v::liable_seat(&mut s, winner, pao))
+        });
+        (seat < 4).then_some((seat, pao))
     }
 
     /// Base points of a hand: fu x 2^(han+2) up to the limits.
