@@ -278,7 +278,8 @@ fn check_variant(
         }
     }
 
-    let uma = check_uma(c, vf);
+    let seats = check_seats(c, &options, vf);
+    let uma = check_uma(c, vf, seats);
     let illegal_action_penalty = check_penalty(c, vf);
     if let Some(o) = options.iter().find(|o| o.option.name == "starting_points") {
         if !matches!(o.option.value, OptionValue::U32(1..)) {
@@ -300,13 +301,14 @@ fn check_variant(
         "abortive_draws",
         "the `kyuushu` action follows it",
     );
-    let (actions, num_actions) = check_actions(c, &vf.actions, red_fives, abortive_draws);
+    let (actions, num_actions) = check_actions(c, &vf.actions, red_fives, abortive_draws, seats);
 
     Variant {
         name,
         description: vf.variant.description.clone(),
         red_fives,
         abortive_draws,
+        seats,
         yaku_rules: vf
             .yaku_rules
             .iter()
@@ -320,8 +322,31 @@ fn check_variant(
     }
 }
 
-/// `[game] uma`: four integers (thousands of points) summing to 0.
-fn check_uma(c: &mut Checker<'_>, vf: &VariantFile) -> [i32; 4] {
+/// `[game] seats`: 4, or 3 for the three-player game. Reported where it is wrong; 4 then, so that
+/// the checks that follow it do not pile up.
+fn check_seats(c: &mut Checker<'_>, options: &[options::Located], vf: &VariantFile) -> u32 {
+    let found = options
+        .iter()
+        .find(|o| o.option.section == "game" && o.option.name == "seats");
+    match found.map(|o| (o.option.value, o.value_at)) {
+        Some((OptionValue::U32(n @ 3..=4), _)) => n,
+        Some((_, at)) => {
+            c.variant_err(at, "seats must be 4, or 3 for the three-player game (sanma)");
+            4
+        }
+        None if vf.game.get_ref().keys().any(|k| k.get_ref() == "seats") => 4,
+        None => {
+            c.variant_err(
+                vf.game.span().start,
+                "`[game]` lacks `seats`; add `seats = 4` (or 3 for the three-player game)",
+            );
+            4
+        }
+    }
+}
+
+/// `[game] uma`: one integer per seat (thousands of points) summing to 0.
+fn check_uma(c: &mut Checker<'_>, vf: &VariantFile, seats: u32) -> [i32; 4] {
     let mut uma = [0i32; 4];
     let Some(value) = options::special(c, &vf.game, "uma", "uma = [30, 10, -10, -30]") else {
         return uma;
@@ -334,16 +359,16 @@ fn check_uma(c: &mut Checker<'_>, vf: &VariantFile) -> [i32; 4] {
         );
         return uma;
     };
-    if uma_vec.len() != 4 {
+    if uma_vec.len() != seats as usize {
         c.variant_err(
             at,
             format!(
-                "uma has {} entries; write one per place, in thousands of points, e.g. `uma = [30, 10, -10, -30]`",
+                "uma has {} entries, but the game has {seats} seats; write one per place, in thousands of points, e.g. `uma = [30, 10, -10, -30]`",
                 uma_vec.len()
             ),
         );
     } else {
-        uma.copy_from_slice(&uma_vec);
+        uma[..uma_vec.len()].copy_from_slice(&uma_vec);
         let sum: i64 = uma.iter().map(|&u| i64::from(u)).sum();
         if sum != 0 {
             c.variant_err(
@@ -379,6 +404,7 @@ fn check_actions(
     a: &ActionsSection,
     red_fives: bool,
     abortive_draws: bool,
+    seats: u32,
 ) -> (Vec<ActionBlock>, u32) {
     let mut blocks: Vec<ActionBlock> = Vec::new();
     let mut next = 0u32;
@@ -417,6 +443,20 @@ fn check_actions(
                 format!(
                     "`{kind}` declares an abortive draw, but `[draws] abortive_draws = false`; remove it from the layout"
                 ),
+            ),
+            Need::FourSeats | Need::FourSeatsRedFives if seats != 4 => c.variant_err(
+                at,
+                format!("`{kind}` is a chi, but `[game] seats = {seats}` has no chi; remove it from the layout"),
+            ),
+            Need::FourSeatsRedFives if !red_fives => c.variant_err(
+                at,
+                format!(
+                    "`{kind}` uses a red five, but `[tiles] red_fives = false`; remove it from the layout"
+                ),
+            ),
+            Need::ThreeSeats if seats != 3 => c.variant_err(
+                at,
+                format!("`{kind}` sets North aside, which only the three-player game does; remove it from the layout"),
             ),
             _ => {}
         }
@@ -469,12 +509,18 @@ fn check_actions(
             Need::Always => true,
             Need::RedFives => red_fives,
             Need::AbortiveDraws => abortive_draws,
+            Need::FourSeats => seats == 4,
+            Need::FourSeatsRedFives => seats == 4 && red_fives,
+            Need::ThreeSeats => seats == 3,
         };
         if needed && !blocks.iter().any(|b| b.kind == info.name) {
             let why = match info.need {
                 Need::Always => "every variant needs it",
                 Need::RedFives => "red_fives = true needs it",
                 Need::AbortiveDraws => "abortive_draws = true needs it",
+                Need::FourSeats => "seats = 4 needs it",
+                Need::FourSeatsRedFives => "seats = 4 with red_fives = true needs it",
+                Need::ThreeSeats => "seats = 3 needs it",
             };
             c.variant_err(
                 a.layout.span().start,

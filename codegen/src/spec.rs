@@ -6,7 +6,7 @@ use std::fmt;
 
 /// Action kinds the kernel knows, in the reference order. `count` is the block size, except for
 /// `discard`, whose size follows `red_fives` (34 tile types, plus 3 red fives).
-pub const ACTION_KINDS: [ActionKindInfo; 18] = [
+pub const ACTION_KINDS: [ActionKindInfo; 19] = [
     ActionKindInfo::new("discard", 34, Need::Always),
     ActionKindInfo::new("self_kan", 34, Need::Always),
     ActionKindInfo::new("tsumogiri", 1, Need::Always),
@@ -16,14 +16,15 @@ pub const ACTION_KINDS: [ActionKindInfo; 18] = [
     ActionKindInfo::new("pon", 1, Need::Always),
     ActionKindInfo::new("pon_red", 1, Need::RedFives),
     ActionKindInfo::new("open_kan", 1, Need::Always),
-    ActionKindInfo::new("chi_left", 1, Need::Always),
-    ActionKindInfo::new("chi_left_red", 1, Need::RedFives),
-    ActionKindInfo::new("chi_middle", 1, Need::Always),
-    ActionKindInfo::new("chi_middle_red", 1, Need::RedFives),
-    ActionKindInfo::new("chi_right", 1, Need::Always),
-    ActionKindInfo::new("chi_right_red", 1, Need::RedFives),
+    ActionKindInfo::new("chi_left", 1, Need::FourSeats),
+    ActionKindInfo::new("chi_left_red", 1, Need::FourSeatsRedFives),
+    ActionKindInfo::new("chi_middle", 1, Need::FourSeats),
+    ActionKindInfo::new("chi_middle_red", 1, Need::FourSeatsRedFives),
+    ActionKindInfo::new("chi_right", 1, Need::FourSeats),
+    ActionKindInfo::new("chi_right_red", 1, Need::FourSeatsRedFives),
     ActionKindInfo::new("pass", 1, Need::Always),
     ActionKindInfo::new("kyuushu", 1, Need::AbortiveDraws),
+    ActionKindInfo::new("kita", 1, Need::ThreeSeats),
     ActionKindInfo::new("dummy", 1, Need::Always),
 ];
 
@@ -36,6 +37,12 @@ pub enum Need {
     /// Present exactly when `[draws] abortive_draws = true` (kyuushu is also the confirmation of
     /// every abortive draw).
     AbortiveDraws,
+    /// Present exactly when `[game] seats = 4`: three players have no chi.
+    FourSeats,
+    /// Present exactly when `[game] seats = 4` and `[tiles] red_fives = true`.
+    FourSeatsRedFives,
+    /// Present exactly when `[game] seats = 3`: North set aside (kita).
+    ThreeSeats,
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -136,11 +143,13 @@ pub struct Variant {
     pub red_fives: bool,
     /// Also in `options`; a field because the `kyuushu` action depends on it.
     pub abortive_draws: bool,
+    /// `[game] seats`, 3 or 4; also in `options`. The chi and kita actions and the uma follow it.
+    pub seats: u32,
     /// `[yaku_rules]`: bool options visible to conditions, sorted by name.
     pub yaku_rules: Vec<(String, bool)>,
     /// The plain options, in file order (section by section, keys as written).
     pub options: Vec<VariantOption>,
-    /// In thousands of points, first place first.
+    /// In thousands of points, first place first; 0 past the last seat.
     pub uma: [i32; 4],
     pub illegal_action_penalty: f32,
     pub num_actions: u32,

@@ -73,7 +73,7 @@ fn claim_options_for(s: &mut GameState, q: u32, from: u32, v: u32, kan: u32) -> 
         return o;
     }
     let n: u32 = hand_count(s, q, t);
-    let chi_seat: bool = q == (from + 1u32) % 4u32 && t < 27u32;
+    let chi_seat: bool = SEATS == 4u32 && q == (from + 1u32) % SEATS && t < 27u32;
     if n < 2u32 && !chi_seat {
         return o;
     }
@@ -115,7 +115,8 @@ fn claim_options_for(s: &mut GameState, q: u32, from: u32, v: u32, kan: u32) -> 
 }
 
 // Opens a claim window on tile value `v` from seat `from`. `kan`: 0 a discard, 1 an added kan
-// (chankan), 2 a closed kan (only thirteen orphans may rob it, where the rules allow).
+// (chankan), 2 a closed kan (only thirteen orphans may rob it, where the rules allow), 3 a North
+// set aside (CLAIM_WINDOW_KITA: ron only, no chankan).
 fn set_claim(s: &mut GameState, from: u32, v: u32, kan: u32) -> u32 {
     s.claim_tile = v;
     s.claim_from = from;
@@ -128,8 +129,8 @@ fn open_claims(s: &mut GameState) -> u32 {
     let v: u32 = s.claim_tile;
     let kan: u32 = s.claim_kan;
     let mut any: bool = false;
-    for j in 1u32..4u32 {
-        let q: u32 = (from + j) % 4u32;
+    for j in 1u32..SEATS {
+        let q: u32 = (from + j) % SEATS;
         let o: u32 = claim_options_for(s, q, from, v, kan);
         // Furiten does not depend on yaku: a wait passing by unclaimable still binds the seat
         // (a declined ron does so in do_claim_decision). Only thirteen orphans may rob a closed
@@ -184,9 +185,9 @@ fn do_claim_decision(s: &mut GameState, a: u32) -> u32 {
         miss_win(s, q);
     }
     let from: u32 = s.claim_from;
-    let mut j: u32 = (q + 4u32 - from) % 4u32 + 1u32;
-    while j < 4u32 {
-        let next: u32 = (from + j) % 4u32;
+    let mut j: u32 = (q + SEATS - from) % SEATS + 1u32;
+    while j < SEATS {
+        let next: u32 = (from + j) % SEATS;
         if s.claim_options[next as usize] != 0u32 {
             s.current = next;
             return TASK_DONE;
@@ -224,8 +225,8 @@ fn resolve_claims(s: &mut GameState) -> u32 {
     let v: u32 = s.claim_tile;
     let kan: u32 = s.claim_kan;
     let mut rons: u32 = 0u32;
-    for j in 1u32..4u32 {
-        if s.claim_choices[((from + j) % 4u32) as usize] == ACTION_RON {
+    for j in 1u32..SEATS {
+        if s.claim_choices[((from + j) % SEATS) as usize] == ACTION_RON {
             rons += 1u32;
         }
     }
@@ -237,10 +238,10 @@ fn resolve_claims(s: &mut GameState) -> u32 {
         }
         let mut first: bool = true;
         let mut dealer_won: bool = false;
-        for j in 1u32..4u32 {
-            let q: u32 = (from + j) % 4u32;
+        for j in 1u32..SEATS {
+            let q: u32 = (from + j) % SEATS;
             if s.claim_choices[q as usize] == ACTION_RON && (first || DOUBLE_RON) {
-                settle_ron(s, q, from, v, kan != 0u32, first);
+                settle_ron(s, q, from, v, kan != 0u32 && kan != CLAIM_WINDOW_KITA, first);
                 if q == s.dealer {
                     dealer_won = true;
                 }
@@ -256,10 +257,14 @@ fn resolve_claims(s: &mut GameState) -> u32 {
     }
     s.task_seat = from;
     if kan != 0u32 {
-        // The kan stands: it breaks every ippatsu (a hand that robbed it kept its ippatsu; Tenhou
-        // scores riichi + ippatsu + chankan).
-        for p in 0u32..4u32 {
+        // The kan (or kita) stands: it breaks every ippatsu (a hand that robbed it kept its
+        // ippatsu; Tenhou scores riichi + ippatsu + chankan).
+        for p in 0u32..SEATS {
             s.seat_flags[p as usize] &= !SEAT_IPPATSU;
+        }
+        s.task_flags = 0u32;
+        if kan == CLAIM_WINDOW_KITA {
+            s.task_flags = REPLACE_KITA;
         }
         clear_claims(s);
         return TASK_REPLACEMENT;
@@ -272,8 +277,8 @@ fn resolve_claims(s: &mut GameState) -> u32 {
     }
     let mut caller: u32 = 4u32;
     let mut call: u32 = 0u32;
-    for j in 1u32..4u32 {
-        let q: u32 = (from + j) % 4u32;
+    for j in 1u32..SEATS {
+        let q: u32 = (from + j) % SEATS;
         let a: u32 = s.claim_choices[q as usize];
         if a == ACTION_PON || a == ACTION_PON_RED || a == ACTION_OPEN_KAN {
             caller = q;
@@ -281,8 +286,8 @@ fn resolve_claims(s: &mut GameState) -> u32 {
         }
     }
     if caller == 4u32 {
-        for j in 1u32..4u32 {
-            let q: u32 = (from + j) % 4u32;
+        for j in 1u32..SEATS {
+            let q: u32 = (from + j) % SEATS;
             let a: u32 = s.claim_choices[q as usize];
             if a != NO_CHOICE && a != ACTION_PASS && a != ACTION_RON {
                 caller = q;
@@ -299,7 +304,7 @@ fn resolve_claims(s: &mut GameState) -> u32 {
 
 fn four_riichi(s: &mut GameState) -> bool {
     let mut n: u32 = 0u32;
-    for p in 0u32..4u32 {
+    for p in 0u32..SEATS {
         if (s.seat_flags[p as usize] & SEAT_RIICHI) != 0u32 {
             n += 1u32;
         }
@@ -309,7 +314,7 @@ fn four_riichi(s: &mut GameState) -> bool {
 
 fn kan_seats(s: &mut GameState) -> u32 {
     let mut n: u32 = 0u32;
-    for p in 0u32..4u32 {
+    for p in 0u32..SEATS {
         let mut has: bool = false;
         for i in 0u32..meld_count(s, p) {
             let k: u32 = meld_kind(s.melds[(p * 4u32 + i) as usize]);
@@ -324,8 +329,9 @@ fn kan_seats(s: &mut GameState) -> u32 {
     n
 }
 
+// Four players only: three cannot discard four winds in the first go-round.
 fn four_winds(s: &mut GameState) -> bool {
-    if s.uninterrupted == 0u32 {
+    if SEATS != 4u32 || s.uninterrupted == 0u32 {
         return false;
     }
     let first: u32 = s.rivers[0] & 63u32;
@@ -358,7 +364,7 @@ fn after_discard(s: &mut GameState) -> u32 {
         }
         return TASK_END_ROUND;
     }
-    draw(s, (from + 1u32) % 4u32);
+    draw(s, (from + 1u32) % SEATS);
     TASK_DONE
 }
 
@@ -375,7 +381,7 @@ fn do_call(s: &mut GameState, q: u32, from: u32, v: u32, a: u32) -> u32 {
         s.rivers[(from * 6u32 + i / 4u32) as usize] |= 64u32 << ((i % 4u32) * 8u32);
     }
     s.seat_flags[from as usize] &= !SEAT_NAGASHI;
-    for p in 0u32..4u32 {
+    for p in 0u32..SEATS {
         s.seat_flags[p as usize] &= !SEAT_IPPATSU;
     }
     s.seat_flags[q as usize] &= !SEAT_CONCEALED;
@@ -427,7 +433,8 @@ fn do_call(s: &mut GameState, q: u32, from: u32, v: u32, a: u32) -> u32 {
     }
     log_push(s, ev, q, v, ev_flags);
     let n: u32 = meld_count(s, q);
-    let src: u32 = (from + 4u32 - q) % 4u32;
+    // The discarder's place from the caller: 1 the next seat, SEATS - 1 the one before.
+    let src: u32 = (from + SEATS - q) % SEATS;
     s.melds[(q * 4u32 + n) as usize] = meld_word(kind, low) | (src << MELD_FROM_SHIFT) | (reds << MELD_REDS_SHIFT);
     s.meld_counts = with_byte(s.meld_counts, q, n + 1u32);
     if PAO && kind != MELD_CHI && t >= FIRST_HONOR {
@@ -443,6 +450,7 @@ fn do_call(s: &mut GameState, q: u32, from: u32, v: u32, a: u32) -> u32 {
         reveal_pending_dora(s);
         s.dora_pending += 1u32;
         s.task_seat = q;
+        s.task_flags = 0u32;
         return TASK_REPLACEMENT;
     }
     s.kuikae = t | (ban_b << 8u32);

@@ -24,6 +24,8 @@ pub const EV_RIICHI: u32 = 7;
 pub const EV_RIICHI_ACCEPTED: u32 = 8;
 pub const EV_DORA: u32 = 9;
 pub const EV_DRAW: u32 = 10;
+// North set aside (kita, three players).
+pub const EV_KITA: u32 = 11;
 
 // Flags of a discard.
 pub const LOG_TSUMOGIRI: u32 = 1;
@@ -93,14 +95,5 @@ fn log_mark_called(s: &mut GameState) {
             s.log[(i / 2u32) as usize] |= (LOG_CALLED << 12u32) << ((i % 2u32) * 16u32);
             return;
         }
-    }
-}
-
-// Reveals `n` more dora indicators, logging each.
-fn reveal_dora(s: &mut GameState, n: u32) {
-    for i in 0u32..n {
-        let v: u32 = wall_tile(s, WALL_DORA + s.dora_revealed);
-        s.dora_revealed += 1u32;
-        log_push(s, EV_DORA, s.current, v, 0u32);
     }
 }

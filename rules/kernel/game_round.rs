@@ -1,6 +1,31 @@
 // Rounds: dealing, drawing, kan dora, and what happens when a round ends (dealer repeat, honba,
 // the next round or the end of the game with uma).
 
+// The wall, in dealing order: 13 tiles to each seat, the live wall, then the dead wall's 14 tiles:
+// five dora indicators, five ura indicators, four replacement tiles. Three players play without
+// 2m-8m (108 tiles); their replacement tiles past the fourth are the live wall's last ones, each
+// kan or kita having moved the live wall's end down by one (Tenhou keeps 14 tiles in the dead
+// wall). `pub`: log replay builds walls in this layout.
+pub const WALL_TILES: u32 = 136u32 - 28u32 * (4u32 - SEATS);
+pub const WALL_LIVE_START: u32 = 13u32 * SEATS;
+pub const WALL_LIVE_END: u32 = WALL_TILES - 14u32;
+pub const WALL_DORA: u32 = WALL_LIVE_END;
+pub const WALL_URA: u32 = WALL_DORA + 5u32;
+pub const WALL_RINSHAN: u32 = WALL_URA + 5u32;
+
+// Whether tile type t is in the set: three players have no 2m-8m.
+pub fn tile_in_play(t: u32) -> bool {
+    SEATS == 4u32 || t == 0u32 || t >= 8u32
+}
+
+// The wall index of the k-th replacement tile of the round (kans and kita together).
+pub fn replacement_index(k: u32) -> u32 {
+    if k < 4u32 {
+        return WALL_RINSHAN + k;
+    }
+    WALL_LIVE_END + 3u32 - k
+}
+
 fn empty_state() -> GameState {
     GameState {
         seed: [0u32; 2],
@@ -29,6 +54,7 @@ fn empty_state() -> GameState {
         discarded: [0u32; 8],
         waits: [0u32; 8],
         seat_flags: [0u32; 4],
+        kita: 0u32,
         pao: 0u32,
         phase: PHASE_TURN,
         current: 0u32,
@@ -63,20 +89,24 @@ fn empty_state() -> GameState {
     }
 }
 
-// The 136 tiles in a uniformly random order (Fisher-Yates over the wall stream of the game's
-// round).
+// The WALL_TILES tiles in a uniformly random order (Fisher-Yates over the wall stream of the
+// game's round); the rest of the array is 0.
 pub fn shuffled_wall(seed: [u32; 2], game: u32, round: u32) -> [u32; 136] {
     let mut w: [u32; 136] = [0u32; 136];
+    let mut n: u32 = 0u32;
     for i in 0u32..136u32 {
         let t: u32 = i / 4u32;
         let mut v: u32 = t;
         if RED_FIVES && i % 4u32 == 0u32 && t < 27u32 && t % 9u32 == 4u32 {
             v = 34u32 + t / 9u32;
         }
-        w[i as usize] = v;
+        if tile_in_play(t) {
+            w[n as usize] = v;
+            n += 1u32;
+        }
     }
     let mut rng: Rng = rng_new(seed, RNG_WALL, game, round);
-    let mut i: u32 = 135u32;
+    let mut i: u32 = WALL_TILES - 1u32;
     while i > 0u32 {
         let j: u32 = random_below(&mut rng, i + 1u32);
         let x: u32 = w[i as usize];
@@ -107,6 +137,7 @@ fn start_round(s: &mut GameState, wall: [u32; 136]) {
     s.river_lens = 0u32;
     s.discarded = [0u32; 8];
     s.seat_flags = [SEAT_CONCEALED | SEAT_NAGASHI; 4];
+    s.kita = 0u32;
     s.pao = 0u32;
     s.uninterrupted = 1u32;
     s.kuikae = 0xffffu32;
@@ -115,14 +146,14 @@ fn start_round(s: &mut GameState, wall: [u32; 136]) {
     s.claim_options = [0u32; 4];
     s.claim_choices = [NO_CHOICE; 4];
     log_clear(s);
-    for j in 0u32..4u32 {
-        let seat: u32 = (s.dealer + j) % 4u32;
+    for j in 0u32..SEATS {
+        let seat: u32 = (s.dealer + j) % SEATS;
         for k in 0u32..13u32 {
             let v: u32 = wall_tile(s, j * 13u32 + k);
             give_tile(s, seat, v);
         }
     }
-    for seat in 0u32..4u32 {
+    for seat in 0u32..SEATS {
         update_waits(s, seat);
     }
     draw(s, s.dealer);
@@ -134,15 +165,26 @@ fn draw(s: &mut GameState, seat: u32) {
     receive_draw(s, seat, v, 0u32);
 }
 
-// The replacement draw after a kan: the dead wall gives one tile and the live wall shrinks by one.
-fn draw_replacement(s: &mut GameState, seat: u32) {
+// North tiles set aside this round, all seats.
+pub fn kita_total(s: &mut GameState) -> u32 {
+    (s.kita.wrapping_mul(0x01010101u32) >> 24u32) & 255u32
+}
+
+// The replacement draw after a kan or a kita: the dead wall gives one tile and the live wall
+// shrinks by one.
+fn draw_replacement(s: &mut GameState, seat: u32, kita: bool) {
     if KAN_DORA_AT_ONCE {
         // An open kan's dora, or an added kan's once no one robbed it, shows before the
         // replacement tile is drawn, so a rinshan win already counts it.
         reveal_pending_dora(s);
     }
-    let v: u32 = wall_tile(s, WALL_RINSHAN + s.kans);
-    s.kans += 1u32;
+    let k: u32 = s.kans + kita_total(s);
+    let v: u32 = wall_tile(s, replacement_index(k));
+    if kita {
+        s.kita += 1u32 << (seat * 8u32);
+    } else {
+        s.kans += 1u32;
+    }
     s.live_end -= 1u32;
     receive_draw(s, seat, v, 1u32);
 }
@@ -161,25 +203,45 @@ fn receive_draw(s: &mut GameState, seat: u32, v: u32, rinshan: u32) {
     log_draw(s);
 }
 
+// Reveals `n` more dora indicators, logging each.
+fn reveal_dora(s: &mut GameState, n: u32) {
+    for i in 0u32..n {
+        let v: u32 = wall_tile(s, WALL_DORA + s.dora_revealed);
+        s.dora_revealed += 1u32;
+        log_push(s, EV_DORA, s.current, v, 0u32);
+    }
+}
+
 fn reveal_pending_dora(s: &mut GameState) {
     let n: u32 = s.dora_pending;
     s.dora_pending = 0u32;
     reveal_dora(s, n);
 }
 
+// Rounds count up by one per dealer: East 1 is 0, South 1 is SEATS.
 fn last_round(s: &mut GameState) -> u32 {
     if s.mode == MODE_EAST {
-        return 3u32;
+        return SEATS - 1u32;
     }
-    7u32
+    2u32 * SEATS - 1u32
+}
+
+// The round's wind, 0..3 = E S W N.
+pub fn round_wind_of(round: u32) -> u32 {
+    (round / SEATS) % 4u32
+}
+
+// East 1's dealer: the seat `round` dealer changes before the current dealer.
+fn first_dealer_seat(s: &mut GameState) -> u32 {
+    (s.dealer + 16u32 * SEATS - s.round % (16u32 * SEATS)) % SEATS
 }
 
 fn top_seat(s: &mut GameState) -> u32 {
     // Ties go to the seat nearer the first dealer of the game (East 1's dealer is round 0's).
-    let first: u32 = (s.dealer + 64u32 - s.round) % 4u32;
+    let first: u32 = first_dealer_seat(s);
     let mut best: u32 = first;
-    for j in 1u32..4u32 {
-        let p: u32 = (first + j) % 4u32;
+    for j in 1u32..SEATS {
+        let p: u32 = (first + j) % SEATS;
         if s.scores[p as usize] > s.scores[best as usize] {
             best = p;
         }
@@ -193,7 +255,7 @@ fn game_is_over(s: &mut GameState, flags: u32) -> bool {
         return true;
     }
     if BUST_BELOW_ZERO {
-        for p in 0u32..4u32 {
+        for p in 0u32..SEATS {
             if s.scores[p as usize] < 0i32 {
                 return true;
             }
@@ -207,7 +269,7 @@ fn game_is_over(s: &mut GameState, flags: u32) -> bool {
     }
     let mut limit: u32 = last;
     if WEST_EXTENSION {
-        limit = last + 4u32;
+        limit = last + SEATS;
     }
     if s.round > last && reached {
         // Extension rounds end as soon as someone reaches the target.
@@ -230,12 +292,12 @@ fn game_is_over(s: &mut GameState, flags: u32) -> bool {
 // The seat's place by score, 0 = first; ties go to the seat nearer the first dealer of the game
 // (East 1's dealer is round 0's). Uma, observations and the arena all rank by it.
 pub fn seat_rank(s: &mut GameState, p: u32) -> u32 {
-    let first: u32 = (s.dealer + 64u32 - s.round) % 4u32;
+    let first: u32 = first_dealer_seat(s);
     let mut rank: u32 = 0u32;
-    for q in 0u32..4u32 {
+    for q in 0u32..SEATS {
         let above: bool = s.scores[q as usize] > s.scores[p as usize];
-        let tie_before: bool =
-            s.scores[q as usize] == s.scores[p as usize] && (q + 4u32 - first) % 4u32 < (p + 4u32 - first) % 4u32;
+        let tie_before: bool = s.scores[q as usize] == s.scores[p as usize]
+            && (q + SEATS - first) % SEATS < (p + SEATS - first) % SEATS;
         if q != p && (above || tie_before) {
             rank += 1u32;
         }
@@ -249,13 +311,13 @@ pub fn seat_rank(s: &mut GameState, p: u32) -> u32 {
 // order, so the uma still sums to zero and every share is a whole reward unit.
 pub fn uma_shares(scores: [i32; 4], ranks: [u32; 4], uma: [i32; 4]) -> [i32; 4] {
     let mut out: [i32; 4] = [0i32; 4];
-    for p in 0u32..4u32 {
+    for p in 0u32..SEATS {
         out[p as usize] = uma[ranks[p as usize] as usize];
         if TIED_SEATS_SHARE_UMA {
             let mut total: i32 = 0;
             let mut n: i32 = 0;
             let mut ahead: i32 = 0;
-            for q in 0u32..4u32 {
+            for q in 0u32..SEATS {
                 if scores[q as usize] == scores[p as usize] {
                     total += uma[ranks[q as usize] as usize] / 100i32;
                     n += 1i32;
@@ -284,12 +346,12 @@ fn finish_game(s: &mut GameState) {
     let top: u32 = top_seat(s);
     collect_sticks(s, top);
     let mut ranks: [u32; 4] = [0u32; 4];
-    for p in 0u32..4u32 {
+    for p in 0u32..SEATS {
         ranks[p as usize] = seat_rank(s, p);
         s.ranks |= ranks[p as usize] << (p * RANK_SHIFT);
     }
     let uma: [i32; 4] = uma_shares(s.scores, ranks, s.uma);
-    for p in 0u32..4u32 {
+    for p in 0u32..SEATS {
         let u: i32 = uma[p as usize];
         s.scores[p as usize] += u;
         s.rewards[p as usize] += u / 100i32;
@@ -316,7 +378,7 @@ fn end_round(s: &mut GameState, flags: u32) {
     }
     if !dealer_continues {
         s.round += 1u32;
-        s.dealer = (s.dealer + 1u32) % 4u32;
+        s.dealer = (s.dealer + 1u32) % SEATS;
     }
     let wall: [u32; 136] = shuffled_wall(s.seed, s.games, s.rounds);
     start_round(s, wall);

@@ -92,13 +92,10 @@ const END_DEALER_CONTINUES: u32 = 1;
 const END_DRAWN: u32 = 2;
 const END_ABORTIVE: u32 = 4;
 
-// Dead wall layout (indices into the 136-tile wall): replacement tiles, dora and ura indicators.
-// `pub`: log replay builds walls in this layout.
-pub const WALL_LIVE_START: u32 = 52;
-pub const WALL_LIVE_END: u32 = 122;
-pub const WALL_DORA: u32 = 122;
-pub const WALL_URA: u32 = 127;
-pub const WALL_RINSHAN: u32 = 132;
+// GameState.claim_kan of a claim window on a North set aside (kita): ron only, not a chankan.
+const CLAIM_WINDOW_KITA: u32 = 3;
+// TASK_REPLACEMENT's argument (GameState.task_flags): the replacement tile follows a kita, not a kan.
+const REPLACE_KITA: u32 = 1;
 
 #[derive(Clone, Copy)]
 #[repr(C)]
@@ -110,7 +107,8 @@ pub struct ResetInput {
     pub dealer: u32,
     // 1: deal `wall` instead of shuffling (tests, log replay); the first round only.
     pub use_wall: u32,
-    // Tile values in dealing order (see `wall_tile`): 0..33, 34..36 = red 5m 5p 5s.
+    // Tile values in dealing order (see `wall_tile`): 0..33, 34..36 = red 5m 5p 5s; WALL_TILES of
+    // them (108 for three players).
     pub wall: [u32; 136],
     // Uma by final rank, in points; paid with the leftover riichi sticks in the last step.
     pub uma: [i32; 4],
@@ -179,11 +177,11 @@ pub struct GameState {
     pub honba: u32,
     pub sticks: u32,
     pub scores: [i32; 4],
-    // 136 tile values, 4 per word (8 bits each).
+    // WALL_TILES tile values, 4 per word (8 bits each).
     pub wall: [u32; 34],
-    // Index of the next live draw, counting up from 52 (after the deal).
+    // Index of the next live draw, counting up from WALL_LIVE_START (after the deal).
     pub next_draw: u32,
-    // Live draws end before this index; each kan moves it down by one (a replacement tile).
+    // Live draws end before this index; each kan or kita moves it down by one (a replacement tile).
     pub live_end: u32,
     pub kans: u32,
     // Dora indicators revealed (1 + kan dora).
@@ -206,6 +204,8 @@ pub struct GameState {
     // that hand changes (deal, discard, kan): claims, tsumo checks and tenpai read them.
     pub waits: [u32; 8],
     pub seat_flags: [u32; 4],
+    // North tiles each seat has set aside (kita, three players only), 8 bits per seat.
+    pub kita: u32,
     // Liable seat + 1 for pao, 8 bits per seat: the low nibble for big dragons / big winds, the
     // high one for four kans (PAO_SUUKANTSU); 0 = none.
     pub pao: u32,

@@ -65,7 +65,8 @@ pub fn game_flow(s: &mut GameState, _arg: u32) {
     }
     if s.task == TASK_REPLACEMENT {
         let seat: u32 = s.task_seat;
-        draw_replacement(s, seat);
+        let kita: bool = s.task_flags == REPLACE_KITA;
+        draw_replacement(s, seat, kita);
         s.task = TASK_DONE;
     }
     if s.task == TASK_ABORTIVE {
@@ -98,7 +99,7 @@ pub fn game_settle(s: &mut GameState, _arg: u32) {
         if s.auto_reset != 0u32 {
             // Pgx-style auto-reset: the next game starts in this step; the view still reports the end.
             s.games += 1u32;
-            let dealer: u32 = first_dealer(s.seed, s.games, 4u32);
+            let dealer: u32 = first_dealer(s.seed, s.games, SEATS);
             let wall: [u32; 136] = shuffled_wall(s.seed, s.games, 0u32);
             let finished_rounds: u32 = s.rounds;
             begin_game(s, dealer, wall);
@@ -117,12 +118,13 @@ pub fn game_mask(s: &mut GameState, _arg: u32) {
     s.task = TASK_DONE;
 }
 
+// `requested` below SEATS is that seat; anything else draws one from the seed.
 fn first_dealer(seed: [u32; 2], games: u32, requested: u32) -> u32 {
-    if requested < 4u32 {
+    if requested < SEATS {
         return requested;
     }
     let mut rng: Rng = rng_new(seed, RNG_DEALER, games, 0u32);
-    random_below(&mut rng, 4u32)
+    random_below(&mut rng, SEATS)
 }
 
 pub fn game_new(inp: ResetInput) -> GameState {
@@ -202,7 +204,7 @@ pub fn game_deal(s: &mut GameState, inp: DealInput) {
         return;
     }
     s.round = inp.round;
-    s.dealer = inp.dealer % 4u32;
+    s.dealer = inp.dealer % SEATS;
     s.honba = inp.honba;
     s.sticks = inp.sticks;
     s.scores = inp.scores;

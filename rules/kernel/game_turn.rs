@@ -101,6 +101,28 @@ fn riichi_kan_keeps_waits(s: &mut GameState, p: u32, t: u32) -> bool {
     w0[0] == w1[0] && w0[1] == w1[1] && (w0[0] | w0[1]) != 0u32
 }
 
+// Kita (three players): after a draw, a North may be set aside for a replacement tile while the
+// live wall has tiles left; in riichi only the North just drawn (the waits stay those of the hand).
+fn kita_allowed(s: &mut GameState, p: u32, riichi: bool) -> bool {
+    if SEATS != 3u32 || s.next_draw >= s.live_end || hand_count(s, p, NORTH) == 0u32 {
+        return false;
+    }
+    !riichi || s.drawn == NORTH
+}
+
+// Sets the drawn North aside: it may be ronned (ron only, no chankan), then a replacement tile
+// follows (TASK_REPLACEMENT with REPLACE_KITA). It interrupts the first go-round (double riichi,
+// tenhou, chiihou, kyuushu); ippatsu ends once it stands (see `resolve_claims`).
+fn do_kita(s: &mut GameState) -> u32 {
+    let p: u32 = s.current;
+    take_tile(s, p, NORTH);
+    s.uninterrupted = 0u32;
+    s.drawn = NO_TILE_VALUE;
+    log_push(s, EV_KITA, p, NORTH, 0u32);
+    update_waits(s, p);
+    set_claim(s, p, NORTH, CLAIM_WINDOW_KITA)
+}
+
 fn turn_mask(s: &mut GameState) -> [u32; 3] {
     let p: u32 = s.current;
     let mut m: [u32; 3] = [0u32; 3];
@@ -145,10 +167,14 @@ fn turn_mask(s: &mut GameState) -> [u32; 3] {
             }
         }
     }
+    if kita_allowed(s, p, riichi) {
+        mask_set(&mut m, ACTION_KITA);
+    }
     let concealed: bool = (f & SEAT_CONCEALED) != 0u32;
     // A minimum of 0 is no minimum: where no one busts (M-League), a seat below zero may riichi.
     let enough_points: bool = RIICHI_MIN_POINTS == 0u32 || s.scores[p as usize] >= RIICHI_MIN_POINTS as i32;
-    if !riichi && concealed && enough_points && s.live_end - s.next_draw >= 4u32 && riichi_possible(s, p) {
+    // Riichi needs a draw left for every seat (four tiles, three with three players).
+    if !riichi && concealed && enough_points && s.live_end - s.next_draw >= SEATS && riichi_possible(s, p) {
         mask_set(&mut m, ACTION_RIICHI);
     }
     if ABORTIVE_DRAWS && s.uninterrupted != 0u32 && (f & SEAT_DISCARDED) == 0u32 && yaochu_kinds(s, p) >= 9u32 {
@@ -271,6 +297,9 @@ fn do_turn_action(s: &mut GameState, a: u32) -> u32 {
     if a == ACTION_KYUUSHU {
         s.draw_kind = DRAW_KYUUSHU;
         return TASK_ABORTIVE;
+    }
+    if a == ACTION_KITA {
+        return do_kita(s);
     }
     do_self_kan(s, a - ACTION_SELF_KAN)
 }

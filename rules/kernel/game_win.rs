@@ -2,7 +2,7 @@
 // come without a win.
 
 fn seat_wind_of(s: &mut GameState, seat: u32) -> u32 {
-    (seat + 4u32 - s.dealer) % 4u32
+    (seat + SEATS - s.dealer) % SEATS
 }
 
 // The scoring kernel's input for `seat` winning on tile value `v`.
@@ -72,13 +72,14 @@ fn win_input(s: &mut GameState, seat: u32, v: u32, tsumo: bool, chankan: bool) -
         melds: melds,
         n_melds: n,
         flags: flags,
-        round_wind: (s.round / 4u32) % 4u32,
+        round_wind: round_wind_of(s.round),
         seat_wind: seat_wind_of(s, seat),
         dora: dora,
         n_dora: s.dora_revealed,
         ura: ura,
         n_ura: s.dora_revealed,
         aka: aka,
+        kita: byte_of(s.kita, seat),
         honba: s.honba,
         sticks: s.sticks,
     }
@@ -203,7 +204,8 @@ fn settle_tsumo(s: &mut GameState, winner: u32) {
     let pao: u32 = pao_yaku(s, winner, out);
     let liable: u32 = liable_seat(s, winner, pao);
     let share: [u32; 2] = pao_share(out.yakuman, pao);
-    for p in 0u32..4u32 {
+    // Three players pay a tsumo at four-player rates, the absent seat's share lost (tsumo loss).
+    for p in 0u32..SEATS {
         if p != winner {
             let mut amount: u32 = out.others_pay;
             if p == s.dealer && winner != s.dealer {
@@ -234,7 +236,7 @@ fn settle_exhaustive_draw(s: &mut GameState) -> bool {
     let mut tenpai: u32 = 0u32;
     let mut n_tenpai: u32 = 0u32;
     let mut nagashi: u32 = 0u32;
-    for p in 0u32..4u32 {
+    for p in 0u32..SEATS {
         if seat_tenpai(s, p) {
             tenpai |= 1u32 << p;
             n_tenpai += 1u32;
@@ -245,9 +247,9 @@ fn settle_exhaustive_draw(s: &mut GameState) -> bool {
         }
     }
     if nagashi != 0u32 {
-        for w in 0u32..4u32 {
+        for w in 0u32..SEATS {
             if ((nagashi >> w) & 1u32) != 0u32 {
-                for p in 0u32..4u32 {
+                for p in 0u32..SEATS {
                     if p != w {
                         let mut amount: u32 = 2000u32;
                         if p == s.dealer || w == s.dealer {
@@ -260,10 +262,10 @@ fn settle_exhaustive_draw(s: &mut GameState) -> bool {
         }
         s.events |= EVENT_NAGASHI;
         s.draw_kind = DRAW_NAGASHI | (tenpai << DRAW_TENPAI_SHIFT) | (nagashi << DRAW_NAGASHI_SHIFT);
-    } else if n_tenpai > 0u32 && n_tenpai < 4u32 {
-        let gain: u32 = 3000u32 / n_tenpai;
-        let loss: u32 = 3000u32 / (4u32 - n_tenpai);
-        for p in 0u32..4u32 {
+    } else if n_tenpai > 0u32 && n_tenpai < SEATS {
+        let gain: u32 = NOTEN_POOL_POINTS / n_tenpai;
+        let loss: u32 = NOTEN_POOL_POINTS / (SEATS - n_tenpai);
+        for p in 0u32..SEATS {
             if ((tenpai >> p) & 1u32) != 0u32 {
                 s.scores[p as usize] += gain as i32;
                 s.rewards[p as usize] += (gain / 100u32) as i32;

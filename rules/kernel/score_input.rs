@@ -58,6 +58,9 @@ pub struct ScoreInput {
     pub n_ura: u32,
     // Red fives among all of the winner's tiles, melds included.
     pub aka: u32,
+    // North tiles the winner set aside (kita, three players): each a dora, and one more for each
+    // dora or ura indicator that points at North.
+    pub kita: u32,
     pub honba: u32,
     pub sticks: u32,
 }
@@ -158,7 +161,7 @@ fn input_is_valid(inp: ScoreInput) -> bool {
     if inp.n_melds > 4u32 || inp.win_tile >= N_TYPES || inp.round_wind > 3u32 || inp.seat_wind > 3u32 {
         return false;
     }
-    if inp.n_dora > 5u32 || inp.n_ura > 5u32 || inp.aka > 4u32 {
+    if inp.n_dora > 5u32 || inp.n_ura > 5u32 || inp.aka > 4u32 || inp.kita > 4u32 {
         return false;
     }
     let mut all: [u32; 34] = inp.hand;

@@ -55,10 +55,23 @@ fn has_yaku(lo: u32, hi: u32, i: u32) -> bool {
     ((hi >> (i - 32u32)) & 1u32) != 0u32
 }
 
-fn dora_count(h: HandInfo, indicators: [u32; 5], n: u32) -> u32 {
+// The dora an indicator shows: three players have no 2m-8m, so 1m shows 9m (and 9m 1m).
+fn dora_shown(indicator: u32) -> u32 {
+    if SEATS == 3u32 && indicator == 0u32 {
+        return 8u32;
+    }
+    dora_of(indicator)
+}
+
+// Dora in the hand for `n` indicators; the North tiles set aside count as held Norths.
+fn dora_count(h: HandInfo, indicators: [u32; 5], n: u32, kita: u32) -> u32 {
     let mut count: u32 = 0u32;
     for i in 0u32..n {
-        count += h.full[dora_of(indicators[i as usize]) as usize];
+        let d: u32 = dora_shown(indicators[i as usize]);
+        count += h.full[d as usize];
+        if d == NORTH {
+            count += kita;
+        }
     }
     count
 }
@@ -136,9 +149,10 @@ fn judge(inp: ScoreInput, h: HandInfo, f: Features, fu: u32, fixed_fu: u32) -> J
         j.base = base_points(0u32, 0u32, yakuman);
         return j;
     }
-    j.dora = dora_count(h, inp.dora, inp.n_dora);
+    // Each North set aside is a dora of its own as well (nukidora).
+    j.dora = dora_count(h, inp.dora, inp.n_dora, inp.kita) + inp.kita;
     if f.riichi {
-        j.ura = dora_count(h, inp.ura, inp.n_ura);
+        j.ura = dora_count(h, inp.ura, inp.n_ura, inp.kita);
     }
     if RED_FIVES {
         j.aka = inp.aka;

@@ -5,6 +5,7 @@ const N_TYPES: u32 = 34;
 const FIRST_HONOR: u32 = 27;
 const FIRST_DRAGON: u32 = 31;
 const EAST: u32 = 27;
+const NORTH: u32 = 30;
 
 fn is_honor(t: u32) -> bool {
     t >= FIRST_HONOR

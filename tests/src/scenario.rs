@@ -5,7 +5,7 @@
 use std::collections::BTreeSet;
 
 use rinshan_engine::notation::parse_tile;
-use rinshan_engine::{Tile, TileType};
+use rinshan_engine::{Tile, TileType, Variant};
 use serde::Deserialize;
 
 use crate::test_data;
@@ -182,15 +182,26 @@ impl Actions {
     }
 }
 
-/// The 136 tile values in dealing order, from the scenario's hands, draws and dead wall; the rest
-/// is filled with the unused tiles in value order.
-pub fn build_wall(sc: &Scenario, red: bool) -> Result<[u32; 136], String> {
+/// The variant's tile values in dealing order (136, or 108 for three players), from the
+/// scenario's hands, draws and dead wall; the rest is filled with the unused tiles in value order.
+pub fn build_wall(sc: &Scenario, variant: Variant) -> Result<[u32; 136], String> {
+    let red = variant.red_fives();
+    let seats = variant.seats();
+    let layout = variant.wall();
+    // Three players play without 2m-8m.
+    let in_play = |t: usize| seats == 4 || t == 0 || t >= 8;
     let mut left = [0u32; 37];
     for (t, n) in left.iter_mut().enumerate().take(34) {
-        *n = if red && t < 27 && t % 9 == 4 { 3 } else { 4 };
+        *n = match (in_play(t), red && t < 27 && t % 9 == 4) {
+            (false, _) => 0,
+            (true, true) => 3,
+            (true, false) => 4,
+        };
     }
     if red {
-        left[34..37].copy_from_slice(&[1, 1, 1]);
+        for suit in 0..3 {
+            left[34 + suit] = u32::from(in_play(suit * 9 + 4));
+        }
     }
     let mut wall: [Option<u32>; 136] = [None; 136];
     let mut place = |i: usize, text: &str, what: &str, wall: &mut [Option<u32>; 136]| -> Result<(), String> {
@@ -206,7 +217,7 @@ pub fn build_wall(sc: &Scenario, red: bool) -> Result<[u32; 136], String> {
         }
         if left[v as usize] == 0 {
             return Err(format!(
-                "{what}: no copy of {} left (every type has 4 copies, a red five replacing one five)",
+                "{what}: no copy of {} left (every type in play has 4 copies, a red five replacing one five)",
                 value_name(v)
             ));
         }
@@ -214,31 +225,32 @@ pub fn build_wall(sc: &Scenario, red: bool) -> Result<[u32; 136], String> {
         wall[i] = Some(v);
         Ok(())
     };
-    if sc.dealer > 3 {
-        return Err("dealer must be 0..3".into());
+    if sc.dealer >= seats {
+        return Err(format!("dealer must be 0..{}", seats - 1));
+    }
+    if sc.hands.len() > seats as usize {
+        return Err(format!("{} hands for {seats} seats", sc.hands.len()));
     }
     for (seat, hand) in sc.hands.iter().enumerate() {
         let tiles = rinshan_engine::notation::parse_tiles(hand).map_err(|e| format!("hand of seat {seat}: {e}"))?;
         if tiles.tiles.len() != 13 {
             return Err(format!("hand of seat {seat} has {} tiles, not 13", tiles.tiles.len()));
         }
-        let offset = ((seat as u32 + 4 - sc.dealer) % 4 * 13) as usize;
+        let offset = ((seat as u32 + seats - sc.dealer) % seats * 13) as usize;
         for (k, t) in tiles.tiles.iter().enumerate() {
             place(offset + k, &t.name(), &format!("hand of seat {seat}"), &mut wall)?;
         }
     }
-    use rinshan_engine::generated::kernel::{WALL_DORA, WALL_LIVE_END, WALL_LIVE_START, WALL_RINSHAN, WALL_URA};
     let at = |i: u32| i as usize;
-    let lists: [(&[String], usize, usize, &str); 4] = [
+    let lists: [(&[String], usize, usize, &str); 3] = [
         (
             &sc.draws,
-            at(WALL_LIVE_START),
-            at(WALL_LIVE_END - WALL_LIVE_START),
+            at(layout.live_start),
+            at(layout.live_end - layout.live_start),
             "draws",
         ),
-        (&sc.dora, at(WALL_DORA), at(WALL_URA - WALL_DORA), "dora"),
-        (&sc.ura, at(WALL_URA), at(WALL_RINSHAN - WALL_URA), "ura"),
-        (&sc.rinshan, at(WALL_RINSHAN), 136 - at(WALL_RINSHAN), "rinshan"),
+        (&sc.dora, at(layout.dora), at(layout.ura - layout.dora), "dora"),
+        (&sc.ura, at(layout.ura), at(layout.rinshan - layout.ura), "ura"),
     ];
     for (list, start, max, what) in lists {
         if list.len() > max {
@@ -248,13 +260,21 @@ pub fn build_wall(sc: &Scenario, red: bool) -> Result<[u32; 136], String> {
             place(start + k, text, what, &mut wall)?;
         }
     }
-    if sc.seat_draws.len() > 4 {
+    // Replacement tiles, in the order drawn (three players' past the fourth come from the live
+    // wall's end).
+    if sc.rinshan.len() > 8 || (seats == 4 && sc.rinshan.len() > 4) {
+        return Err(format!("rinshan: at most {} tiles", if seats == 4 { 4 } else { 8 }));
+    }
+    for (k, text) in sc.rinshan.iter().enumerate() {
+        place(at(variant.replacement_index(k as u32)), text, "rinshan", &mut wall)?;
+    }
+    if sc.seat_draws.len() > seats as usize {
         return Err("seat_draws: one list per seat".into());
     }
     for (seat, list) in sc.seat_draws.iter().enumerate() {
         for (k, text) in list.iter().enumerate() {
-            let i = WALL_LIVE_START + (seat as u32 + 4 - sc.dealer) % 4 + 4 * k as u32;
-            if i >= WALL_LIVE_END {
+            let i = layout.live_start + (seat as u32 + seats - sc.dealer) % seats + seats * k as u32;
+            if i >= layout.live_end {
                 return Err(format!("seat_draws of seat {seat}: draw {k} is past the live wall"));
             }
             place(i as usize, text, &format!("seat_draws of seat {seat}"), &mut wall)?;
@@ -262,7 +282,7 @@ pub fn build_wall(sc: &Scenario, red: bool) -> Result<[u32; 136], String> {
     }
     for (index, text) in &sc.wall_at {
         let i: usize = index.parse().map_err(|_| format!("wall_at: bad index `{index}`"))?;
-        if i >= 136 {
+        if i >= at(layout.tiles) {
             return Err(format!("wall_at: index {i} is past the wall"));
         }
         place(i, text, &format!("wall_at {i}"), &mut wall)?;
@@ -276,7 +296,7 @@ pub fn build_wall(sc: &Scenario, red: bool) -> Result<[u32; 136], String> {
         std::iter::repeat_n(t, left[t as usize] as usize).chain(red_copy.filter(|&r| left[r as usize] == 1))
     });
     let mut out = [0u32; 136];
-    for i in 0..136 {
+    for i in 0..at(layout.tiles) {
         out[i] = match wall[i] {
             Some(v) => v,
             None => pool.next().ok_or("ran out of filler tiles")?,

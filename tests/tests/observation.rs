@@ -91,13 +91,13 @@ fn hidden_resampling(k: Kernels) {
         let mut s = (k.new)(reset_input(1000 + game, 4, None));
         let mut draws: [OwnDraws; 4] = Default::default();
         for (q, d) in draws.iter_mut().enumerate() {
-            d.update(&s, &mut s.clone(), q as u32);
+            d.update(variant, &s, &mut s.clone(), q as u32);
         }
         let mut policy = Rng::new(5000 + game);
         while s.terminated == 0 {
             let observer = rng.below(4);
             let (p, t) = both(&k, &s, observer);
-            let r = resample_hidden(&s, observer, &draws[observer as usize].positions, &mut rng);
+            let r = resample_hidden(variant, &s, observer, &draws[observer as usize].positions, &mut rng);
             let (rp, rt) = both(&k, &r, observer);
             assert!(
                 p == rp,
@@ -121,7 +121,7 @@ fn hidden_resampling(k: Kernels) {
             let a = policy.pick_legal(&s.mask);
             (k.step)(&mut s, a);
             for (q, d) in draws.iter_mut().enumerate() {
-                d.update(&before, &mut s, q as u32);
+                d.update(variant, &before, &mut s, q as u32);
             }
         }
         game += 1;

@@ -52,7 +52,7 @@ fn is_call(a: u32, first: u32, last: u32) -> bool {
 
 fn indicators(s: &GameState) -> Vec<u32> {
     (0..s.dora_revealed)
-        .map(|i| kernel::wall_tile(&mut { *s }, kernel::WALL_DORA + i))
+        .map(|i| kernel::wall_tile(&mut { *s }, rinshan_engine::Variant::Red.wall().dora + i))
         .collect()
 }
 

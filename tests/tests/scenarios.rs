@@ -9,6 +9,7 @@
 
 use std::collections::BTreeSet;
 
+use rinshan_engine::Variant;
 use rinshan_tests::scenario::{build_wall, load, Actions, Expect, Scenario};
 
 /// Scenarios where the engine disagrees with the rules (see the comment of each entry). They are
@@ -47,7 +48,7 @@ fn close(a: f64, b: f64) -> bool {
 }
 
 macro_rules! runner {
-    ($fn_name:ident, $v:ident) => {
+    ($fn_name:ident, $v:ident, $variant:ident) => {
         fn $fn_name(sc: &Scenario) -> Result<(), String> {
             use rinshan_engine::generated::$v as k;
             let acts = Actions {
@@ -60,7 +61,7 @@ macro_rules! runner {
                 "half" => 2,
                 m => return Err(format!("unknown mode `{m}` (single, east, half)")),
             };
-            let wall = build_wall(sc, acts.red)?;
+            let wall = build_wall(sc, Variant::$variant)?;
             let mut s = k::game_new(rinshan_engine::generated::kernel::ResetInput {
                 seed: sc.seed.unwrap_or([7, 11]),
                 mode,
@@ -296,11 +297,12 @@ macro_rules! runner {
     };
 }
 
-runner!(run_red, red);
-runner!(run_no_red, no_red);
-runner!(run_mjsoul, mjsoul);
-runner!(run_mleague, mleague);
-runner!(run_wrc, wrc);
+runner!(run_red, red, Red);
+runner!(run_no_red, no_red, NoRed);
+runner!(run_mjsoul, mjsoul, Mjsoul);
+runner!(run_mleague, mleague, Mleague);
+runner!(run_wrc, wrc, Wrc);
+runner!(run_sanma, sanma, Sanma);
 
 fn run(sc: &Scenario) -> Result<(), String> {
     match sc.variant.as_str() {
@@ -309,7 +311,8 @@ fn run(sc: &Scenario) -> Result<(), String> {
         "mjsoul" => run_mjsoul(sc),
         "mleague" => run_mleague(sc),
         "wrc" => run_wrc(sc),
-        v => Err(format!("unknown variant `{v}` (red, no_red, mjsoul, mleague, wrc)")),
+        "sanma" => run_sanma(sc),
+        v => Err(format!("unknown variant `{v}` (red, no_red, mjsoul, mleague, wrc, sanma)")),
     }
 }
 
@@ -385,7 +388,7 @@ fn tiny(hands: [&str; 4]) -> Scenario {
 #[test]
 fn harness_builds_walls_and_rejects_overused_tiles() {
     let sc = tiny(["123456789m1234z"; 4]);
-    let err = build_wall(&sc, true).unwrap_err();
+    let err = build_wall(&sc, Variant::Red).unwrap_err();
     assert!(err.contains("no copy of"), "{err}");
     let sc = tiny([
         "123456789m1234z",
@@ -393,7 +396,7 @@ fn harness_builds_walls_and_rejects_overused_tiles() {
         "123456789s1234z",
         "1111222333444z",
     ]);
-    let err = build_wall(&sc, true).unwrap_err();
+    let err = build_wall(&sc, Variant::Red).unwrap_err();
     assert!(err.contains("no copy of 1z"), "{err}");
     let sc = tiny([
         "123406789m1234z",
@@ -401,7 +404,7 @@ fn harness_builds_walls_and_rejects_overused_tiles() {
         "123456789s2567z",
         "1188m99p1199s567z",
     ]);
-    let wall = build_wall(&sc, true).expect("wall");
+    let wall = build_wall(&sc, Variant::Red).expect("wall");
     // Dealer is seat 1: its hand comes first; seat 0 deals last.
     assert_eq!(wall[0], 9);
     assert_eq!(wall[39], 0);

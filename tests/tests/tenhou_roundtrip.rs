@@ -348,7 +348,7 @@ fn play_prepared(variant: Variant, scenarios: &[&Scenario]) -> Vec<Option<Game>>
                 "{}: a prepared round starts from East 1's table",
                 sc.name
             );
-            build_wall(sc, variant.red_fives())
+            build_wall(sc, variant)
                 .unwrap_or_else(|e| panic!("{}: {e}", sc.name))
                 .map(|v| u8::try_from(v).ok().and_then(Tile::from_value).expect("a tile value"))
         })

@@ -348,6 +348,7 @@ pub fn score_input(win: &Win) -> Result<[u32; SCORE_IN_WORDS], ScoreError> {
         ura: up_to_five(&c.ura),
         n_ura: c.ura.len() as u32,
         aka: u32::from(win.aka),
+        kita: 0,
         honba: c.honba,
         sticks: c.sticks,
     };

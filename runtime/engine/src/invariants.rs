@@ -2,13 +2,15 @@
 //! the soak (`rinshan soak`) check it after every step.
 
 use crate::generated::kernel::{self as k, GameState};
+use crate::Variant;
 
-/// Tiles held (hands, melds, uncalled river tiles) and tiles drawn from the wall, per type, read
-/// with the kernel's accessors.
-pub fn tiles_held_and_drawn(state: &GameState) -> ([u32; 34], [u32; 34]) {
+/// Tiles held (hands, melds, uncalled river tiles, North set aside) and tiles drawn from the wall
+/// (live draws and replacement tiles), per type, read with the kernel's accessors.
+pub fn tiles_held_and_drawn(state: &GameState, variant: Variant) -> ([u32; 34], [u32; 34]) {
     let mut s = *state;
     let mut held = [0u32; 34];
     for seat in 0..4u32 {
+        held[30] += k::byte_of(s.kita, seat);
         for (h, n) in held.iter_mut().zip(k::hand_counts(&mut s, seat)) {
             *h += n;
         }
@@ -33,18 +35,22 @@ pub fn tiles_held_and_drawn(state: &GameState) -> ([u32; 34], [u32; 34]) {
     for i in 0..s.next_draw.min(136) {
         drawn[(k::value_type(k::wall_tile(&mut s, i)) as usize).min(33)] += 1;
     }
-    for n in 0..s.kans.min(4) {
-        drawn[(k::value_type(k::wall_tile(&mut s, k::WALL_RINSHAN + n)) as usize).min(33)] += 1;
+    let replacements = s.kans.min(4) + (0..4).map(|q| k::byte_of(s.kita, q)).sum::<u32>().min(4);
+    for n in 0..replacements {
+        let i = variant.replacement_index(n);
+        drawn[(k::value_type(k::wall_tile(&mut s, i)) as usize).min(33)] += 1;
     }
     (held, drawn)
 }
 
-/// Checks one state of a game that started with `starting_points` per seat: tiles conserved,
+/// Checks one state of a game of `variant` (each seat starting with its `starting_points`): tiles conserved,
 /// points conserved (with the riichi sticks on the table), the round's event log not full, and
 /// while the game runs one seat to act with a legal action: at a claim prompt a seat with a
 /// claim, on a turn the seat holding a tile more than the others (14 counting each meld as 3).
-pub fn check(state: &GameState, starting_points: i32) -> Result<(), String> {
-    let (held, drawn) = tiles_held_and_drawn(state);
+pub fn check(state: &GameState, variant: Variant) -> Result<(), String> {
+    let (held, drawn) = tiles_held_and_drawn(state, variant);
+    let seats = variant.seats();
+    let starting_points = variant.starting_points() as i32;
     if held != drawn {
         let t = (0..34).find(|&t| held[t] != drawn[t]).unwrap_or(0);
         return Err(format!(
@@ -53,11 +59,9 @@ pub fn check(state: &GameState, starting_points: i32) -> Result<(), String> {
         ));
     }
     let points = state.scores.iter().map(|&x| i64::from(x)).sum::<i64>() + i64::from(state.sticks) * 1000;
-    if points != 4 * i64::from(starting_points) {
-        return Err(format!(
-            "points plus sticks on the table are {points}, not {}",
-            4 * starting_points
-        ));
+    let total = i64::from(seats) * i64::from(starting_points);
+    if points != total {
+        return Err(format!("points plus sticks on the table are {points}, not {total}"));
     }
     let mut s = *state;
     let logged = k::log_count(&mut s);
@@ -67,13 +71,13 @@ pub fn check(state: &GameState, starting_points: i32) -> Result<(), String> {
     if s.terminated != 0 || s.phase == k::PHASE_OVER {
         return Ok(());
     }
-    if s.current > 3 {
+    if s.current >= seats {
         return Err(format!("seat {} is to act", s.current));
     }
     if s.mask == [0; 3] {
         return Err(format!("seat {} is to act with no legal action", s.current));
     }
-    let sizes: Vec<u32> = (0..4u32)
+    let sizes: Vec<u32> = (0..seats)
         .map(|q| k::hand_counts(&mut s, q).iter().sum::<u32>() + 3 * k::meld_count(&mut s, q))
         .collect();
     if s.phase == k::PHASE_CLAIM {
@@ -84,7 +88,7 @@ pub fn check(state: &GameState, starting_points: i32) -> Result<(), String> {
             return Err(format!("hands at a claim prompt are {sizes:?} tiles, not 13 each"));
         }
     } else {
-        let want: Vec<u32> = (0..4).map(|q| if q == s.current { 14 } else { 13 }).collect();
+        let want: Vec<u32> = (0..seats).map(|q| if q == s.current { 14 } else { 13 }).collect();
         if sizes != want {
             return Err(format!(
                 "seat {} is on its turn with hands of {sizes:?} tiles, not {want:?}",
@@ -116,19 +120,19 @@ mod tests {
     #[test]
     fn a_dealt_game_holds_and_broken_ones_do_not() {
         let s = dealt();
-        assert_eq!(check(&s, 25_000), Ok(()));
+        assert_eq!(check(&s, Variant::Red), Ok(()));
         let mut points = s;
         points.scores[1] += 100;
-        assert!(check(&points, 25_000).is_err_and(|e| e.contains("points")));
+        assert!(check(&points, Variant::Red).is_err_and(|e| e.contains("points")));
         let mut tile = s;
         // One more tile of the first seat's first type: held no longer matches drawn.
         tile.hands[0] += 1;
-        assert!(check(&tile, 25_000).is_err_and(|e| e.contains("tiles held")));
+        assert!(check(&tile, Variant::Red).is_err_and(|e| e.contains("tiles held")));
         let mut nobody = s;
         nobody.mask = [0; 3];
-        assert!(check(&nobody, 25_000).is_err_and(|e| e.contains("no legal action")));
+        assert!(check(&nobody, Variant::Red).is_err_and(|e| e.contains("no legal action")));
         let mut turn = s;
         turn.current = (s.current + 1) % 4;
-        assert!(check(&turn, 25_000).is_err_and(|e| e.contains("on its turn")));
+        assert!(check(&turn, Variant::Red).is_err_and(|e| e.contains("on its turn")));
     }
 }

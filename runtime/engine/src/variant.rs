@@ -58,6 +58,48 @@ impl Variant {
     pub fn starting_points(self) -> u32 {
         with_variant!(self, v => v::STARTING_POINTS)
     }
+
+    /// Players at the table (`[game] seats`): 4, or 3 for the three-player game. The state keeps
+    /// four seats' arrays; seats from this number on take no part.
+    pub fn seats(self) -> u32 {
+        with_variant!(self, v => v::SEATS)
+    }
+
+    /// Where the parts of the wall lie in a state's `wall` (the kernel's `WALL_*` constants).
+    pub fn wall(self) -> WallLayout {
+        with_variant!(self, v => WallLayout {
+            tiles: v::WALL_TILES,
+            live_start: v::WALL_LIVE_START,
+            live_end: v::WALL_LIVE_END,
+            dora: v::WALL_DORA,
+            ura: v::WALL_URA,
+            rinshan: v::WALL_RINSHAN,
+        })
+    }
+
+    /// The wall index of the round's `k`-th replacement tile (kans and kita together).
+    pub fn replacement_index(self, k: u32) -> u32 {
+        with_variant!(self, v => v::replacement_index(k))
+    }
+}
+
+/// Where the parts of a variant's wall lie, as indices into the dealing order: 13 tiles per seat
+/// from 0, the live wall from `live_start` to `live_end`, then five dora indicators, five ura
+/// indicators and four replacement tiles, `tiles` in all.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct WallLayout {
+    /// Tiles in the wall: 136, or 108 for three players.
+    pub tiles: u32,
+    /// The first live draw (the dealer's): 13 per seat dealt before it.
+    pub live_start: u32,
+    /// The end of the live wall before any kan or kita.
+    pub live_end: u32,
+    /// The first dora indicator; kan dora follow it.
+    pub dora: u32,
+    /// The first ura indicator.
+    pub ura: u32,
+    /// The first replacement tile; see [`Variant::replacement_index`] for the rest.
+    pub rinshan: u32,
 }
 
 impl std::fmt::Display for Variant {

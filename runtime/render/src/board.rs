@@ -192,7 +192,7 @@ impl Board {
         }
         let (melds, rivers, last) = public_record(&mut s);
         let dora = (0..s.dora_revealed.min(5))
-            .filter_map(|i| tile_of(kernel::wall_tile(&mut s, kernel::WALL_DORA + i)))
+            .filter_map(|i| tile_of(kernel::wall_tile(&mut s, rinshan_engine::generated::red::WALL_DORA + i)))
             .collect();
         let riichi =
             std::array::from_fn(|p| s.seat_flags[p] & kernel::SEAT_RIICHI != 0 || rivers[p].iter().any(|r| r.riichi));
@@ -272,7 +272,7 @@ impl Board {
         let riichi_won = wins.iter().any(|w| board.riichi[w.seat as usize]);
         let ura = if riichi_won {
             (0..s.dora_revealed.min(5))
-                .filter_map(|i| tile_of(kernel::wall_tile(&mut s, kernel::WALL_URA + i)))
+                .filter_map(|i| tile_of(kernel::wall_tile(&mut s, rinshan_engine::generated::red::WALL_URA + i)))
                 .collect()
         } else {
             Vec::new()

@@ -55,7 +55,7 @@ pub(super) fn play(soak: &Soak, g: u64, seed: u64, starting: i32, logged: bool) 
         };
         let mut draws: [OwnDraws; 4] = Default::default();
         for (q, d) in draws.iter_mut().enumerate() {
-            d.update(&s, &mut s.clone(), q as u32);
+            d.update(soak.variant, &s, &mut s.clone(), q as u32);
         }
         let mut rewards = [0f64; 4];
         let fail = |out: &mut Played, what: String| {
@@ -63,7 +63,7 @@ pub(super) fn play(soak: &Soak, g: u64, seed: u64, starting: i32, logged: bool) 
             out.failure = Some((step, what));
         };
         loop {
-            if let Err(e) = rinshan_engine::invariants::check(&s, starting) {
+            if let Err(e) = rinshan_engine::invariants::check(&s, soak.variant) {
                 fail(&mut out, e);
                 return out;
             }
@@ -74,7 +74,7 @@ pub(super) fn play(soak: &Soak, g: u64, seed: u64, starting: i32, logged: bool) 
             let decided = out.actions.len() as u64;
             if soak.leak_every > 0 && decided.is_multiple_of(soak.leak_every) {
                 out.leak_checks += 1;
-                let r = resample_hidden(&s, p, &draws[p as usize].positions, &mut leak_rng);
+                let r = resample_hidden(soak.variant, &s, p, &draws[p as usize].positions, &mut leak_rng);
                 let same = bytemuck::bytes_of(&v::observe_planes(s, p)) == bytemuck::bytes_of(&v::observe_planes(r, p))
                     && bytemuck::bytes_of(&v::observe_tokens(s, p)) == bytemuck::bytes_of(&v::observe_tokens(r, p))
                     && bytemuck::bytes_of(&v::observe_packed(s, p)) == bytemuck::bytes_of(&v::observe_packed(r, p));
@@ -102,7 +102,7 @@ pub(super) fn play(soak: &Soak, g: u64, seed: u64, starting: i32, logged: bool) 
                 *sum += f64::from(r);
             }
             for (q, d) in draws.iter_mut().enumerate() {
-                d.update(&before, &mut s, q as u32);
+                d.update(soak.variant, &before, &mut s, q as u32);
             }
             if let Some(rec) = &mut recorder {
                 match rec.record(&before, a, &s) {

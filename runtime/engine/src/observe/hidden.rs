@@ -2,11 +2,14 @@
 //! reshuffled or scrambled. An observation that changes under it leaks; the tests and the soak
 //! check every observation form against it.
 
-use crate::generated::kernel::{
-    self, GameState, SEAT_FURITEN_RIICHI, SEAT_FURITEN_TEMP, WALL_DORA, WALL_LIVE_END, WALL_LIVE_START, WALL_RINSHAN,
-    WALL_URA,
-};
+use crate::generated::kernel::{self, GameState, SEAT_FURITEN_RIICHI, SEAT_FURITEN_TEMP};
 use crate::random::Rng;
+use crate::Variant;
+
+/// Replacement tiles drawn this round: one per kan and per North set aside.
+fn replacements(s: &GameState) -> u32 {
+    s.kans + (0..4).map(|q| kernel::byte_of(s.kita, q)).sum::<u32>()
+}
 
 fn wall_set(s: &mut GameState, i: u32, v: u32) {
     let w = &mut s.wall[(i / 4) as usize];
@@ -23,23 +26,24 @@ pub struct OwnDraws {
 }
 
 impl OwnDraws {
-    /// Follows one step of the game from `before` to `after` for `observer`.
-    pub fn update(&mut self, before: &GameState, after: &mut GameState, observer: u32) {
+    /// Follows one step of a game of `variant` from `before` to `after` for `observer`.
+    pub fn update(&mut self, variant: Variant, before: &GameState, after: &mut GameState, observer: u32) {
         let key = Some((after.games, after.rounds, after.round * 64 + after.honba));
         let drew_now = after.drawn != kernel::NO_TILE_VALUE && after.current == observer;
         if key != self.round_key || after.next_draw < before.next_draw {
             self.round_key = key;
             self.positions.clear();
             if after.dealer == observer {
-                self.positions.push(WALL_LIVE_START);
+                self.positions.push(variant.wall().live_start);
             }
             return;
         }
         if after.next_draw == before.next_draw + 1 && drew_now {
             self.positions.push(after.next_draw - 1);
         }
-        if after.kans == before.kans + 1 && drew_now && after.rinshan == 1 {
-            self.positions.push(WALL_RINSHAN + after.kans - 1);
+        let k = replacements(after);
+        if k == replacements(before) + 1 && drew_now && after.rinshan == 1 {
+            self.positions.push(variant.replacement_index(k - 1));
         }
     }
 }
@@ -49,27 +53,31 @@ impl OwnDraws {
 /// places of tiles that left it unseen scrambled, the other seats' waits, furiten, claim options
 /// and choices, and the seeds and the step counter. `own_draws` are the wall places the observer
 /// drew from this round ([`OwnDraws`]).
-pub fn resample_hidden(s: &GameState, observer: u32, own_draws: &[u32], rng: &mut Rng) -> GameState {
+pub fn resample_hidden(variant: Variant, s: &GameState, observer: u32, own_draws: &[u32], rng: &mut Rng) -> GameState {
     let mut r = *s;
+    let wall = variant.wall();
+    let seats = variant.seats();
+    let drawn_replacements: Vec<u32> = (0..replacements(s)).map(|k| variant.replacement_index(k)).collect();
     let mut pool: Vec<u32> = Vec::new();
     let mut hidden_positions: Vec<u32> = Vec::new();
-    for i in s.next_draw..WALL_LIVE_END {
+    // The live wall's end is where three players' replacement tiles past the fourth come from.
+    for i in (s.next_draw..wall.live_end).filter(|i| !drawn_replacements.contains(i)) {
         hidden_positions.push(i);
     }
-    for i in WALL_DORA + s.dora_revealed..WALL_DORA + 5 {
+    for i in wall.dora + s.dora_revealed..wall.dora + 5 {
         hidden_positions.push(i);
     }
-    for i in WALL_URA..WALL_URA + 5 {
+    for i in wall.ura..wall.ura + 5 {
         hidden_positions.push(i);
     }
-    for i in WALL_RINSHAN + s.kans..WALL_RINSHAN + 4 {
+    for i in (wall.rinshan..wall.rinshan + 4).filter(|i| !drawn_replacements.contains(i)) {
         hidden_positions.push(i);
     }
     for &i in &hidden_positions {
         pool.push(kernel::wall_tile(&mut r, i));
     }
     let mut sizes = [0usize; 4];
-    for q in (0..4).filter(|&q| q != observer) {
+    for q in (0..seats).filter(|&q| q != observer) {
         let counts = kernel::hand_counts(&mut r, q);
         for t in 0..34u32 {
             let mut n = counts[t as usize];
@@ -92,7 +100,7 @@ pub fn resample_hidden(s: &GameState, observer: u32, own_draws: &[u32], rng: &mu
             wall_set(&mut r, i, v);
         }
     }
-    for q in (0..4).filter(|&q| q != observer) {
+    for q in (0..seats).filter(|&q| q != observer) {
         for w in 0..5 {
             r.hands[(q * 5 + w) as usize] = 0;
         }
@@ -119,18 +127,18 @@ pub fn resample_hidden(s: &GameState, observer: u32, own_draws: &[u32], rng: &mu
         r.claim_choices[q as usize] = rng.below(256);
     }
     // Tiles that left the wall into other hands: their positions tell nothing now.
-    let dealt_by = |i: u32| (s.dealer + i / 13) % 4;
-    for i in 0..WALL_LIVE_START {
+    let dealt_by = |i: u32| (s.dealer + i / 13) % seats;
+    for i in 0..wall.live_start {
         if dealt_by(i) != observer {
             wall_set(&mut r, i, rng.below(37));
         }
     }
-    for i in WALL_LIVE_START..s.next_draw {
+    for i in wall.live_start..s.next_draw {
         if !own_draws.contains(&i) {
             wall_set(&mut r, i, rng.below(37));
         }
     }
-    for i in WALL_RINSHAN..WALL_RINSHAN + s.kans {
+    for &i in &drawn_replacements {
         if !own_draws.contains(&i) {
             wall_set(&mut r, i, rng.below(37));
         }

@@ -143,6 +143,17 @@ impl Default for TableView {
     }
 }
 
+/// The views follow four-player games only: the env refuses observations of three-player ones
+/// (`Config::check`) until the observations take the seat count.
+const FOUR_SEAT_WALL: crate::WallLayout = crate::WallLayout {
+    tiles: 136,
+    live_start: 52,
+    live_end: 122,
+    dora: 122,
+    ura: 127,
+    rinshan: 132,
+};
+
 fn entry_of(log: &[u32; LOG_WORDS], i: u32) -> u32 {
     (log[(i / 2) as usize] >> ((i % 2) * 16)) & 0xffff
 }
@@ -233,10 +244,10 @@ impl TableView {
         if (f & k::LOG_DREW) != 0 {
             let at = if self.after_kan {
                 self.replacement_draws += 1;
-                k::WALL_RINSHAN + self.replacement_draws - 1
+                FOUR_SEAT_WALL.rinshan + self.replacement_draws - 1
             } else {
                 self.live_draws += 1;
-                k::WALL_LIVE_START + self.live_draws - 1
+                FOUR_SEAT_WALL.live_start + self.live_draws - 1
             };
             let i = self.events_len as usize;
             if i < EVENTS {

@@ -1,15 +1,16 @@
 //! The wall a logged round was dealt from, as the engine reads it.
 
 use crate::tenhou::log::Round;
-use rinshan_engine::generated::kernel;
+use rinshan_engine::generated::red as four_seats;
 use rinshan_engine::tile::Tile;
 
-/// Where the engine deals from (rules/kernel/game_state.rs: `WALL_*`).
-pub(crate) const LIVE_START: usize = kernel::WALL_LIVE_START as usize;
-pub(crate) const LIVE_END: usize = kernel::WALL_LIVE_END as usize;
-pub(crate) const DORA: usize = kernel::WALL_DORA as usize;
-pub(crate) const URA: usize = kernel::WALL_URA as usize;
-pub(crate) const RINSHAN: usize = kernel::WALL_RINSHAN as usize;
+/// Where the engine deals a four-player game from (rules/kernel/game_round.rs: `WALL_*`, the same
+/// for every four-player variant). Tenhou logs here are four-player games.
+pub(crate) const LIVE_START: usize = four_seats::WALL_LIVE_START as usize;
+pub(crate) const LIVE_END: usize = four_seats::WALL_LIVE_END as usize;
+pub(crate) const DORA: usize = four_seats::WALL_DORA as usize;
+pub(crate) const URA: usize = four_seats::WALL_URA as usize;
+pub(crate) const RINSHAN: usize = four_seats::WALL_RINSHAN as usize;
 
 /// Copies of each tile value in the red rules' set: four of each type, one of them red for the
 /// fives of the three suits.
