@@ -54,7 +54,6 @@ fn empty_state() -> GameState {
         discarded: [0u32; 8],
         waits: [0u32; 8],
         seat_flags: [0u32; 4],
-        kita: 0u32,
         pao: 0u32,
         phase: PHASE_TURN,
         current: 0u32,
@@ -137,7 +136,6 @@ fn start_round(s: &mut GameState, wall: [u32; 136]) {
     s.river_lens = 0u32;
     s.discarded = [0u32; 8];
     s.seat_flags = [SEAT_CONCEALED | SEAT_NAGASHI; 4];
-    s.kita = 0u32;
     s.pao = 0u32;
     s.uninterrupted = 1u32;
     s.kuikae = 0xffffu32;
@@ -165,9 +163,18 @@ fn draw(s: &mut GameState, seat: u32) {
     receive_draw(s, seat, v, 0u32);
 }
 
+// North tiles the seat has set aside this round.
+pub fn kita_count(s: &mut GameState, seat: u32) -> u32 {
+    (s.seat_flags[seat as usize] >> SEAT_KITA_SHIFT) & 7u32
+}
+
 // North tiles set aside this round, all seats.
-pub fn kita_total(s: &mut GameState) -> u32 {
-    (s.kita.wrapping_mul(0x01010101u32) >> 24u32) & 255u32
+fn kita_total(s: &mut GameState) -> u32 {
+    let mut n: u32 = 0u32;
+    for p in 0u32..SEATS {
+        n += kita_count(s, p);
+    }
+    n
 }
 
 // The replacement draw after a kan or a kita: the dead wall gives one tile and the live wall
@@ -178,11 +185,10 @@ fn draw_replacement(s: &mut GameState, seat: u32, kita: bool) {
         // replacement tile is drawn, so a rinshan win already counts it.
         reveal_pending_dora(s);
     }
-    let k: u32 = s.kans + kita_total(s);
+    // A kita counts from its declaration (`do_kita`), a kan from its replacement tile.
+    let k: u32 = s.kans + kita_total(s) - kita as u32;
     let v: u32 = wall_tile(s, replacement_index(k));
-    if kita {
-        s.kita += 1u32 << (seat * 8u32);
-    } else {
+    if !kita {
         s.kans += 1u32;
     }
     s.live_end -= 1u32;

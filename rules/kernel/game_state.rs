@@ -23,6 +23,8 @@ pub const SEAT_FURITEN_RIICHI: u32 = 32; // a winning tile passed by in riichi: 
 const SEAT_NAGASHI: u32 = 64; // every discard so far was a terminal or honor, none called
 const SEAT_CONCEALED: u32 = 128; // no open meld
 const SEAT_DISCARDED: u32 = 256; // has discarded at least once this round
+// North tiles the seat has set aside this round (kita, three players only): a count in 3 bits.
+pub const SEAT_KITA_SHIFT: u32 = 16;
 
 pub const NO_TILE_VALUE: u32 = 255;
 const NO_CHOICE: u32 = 255;
@@ -204,8 +206,6 @@ pub struct GameState {
     // that hand changes (deal, discard, kan): claims, tsumo checks and tenpai read them.
     pub waits: [u32; 8],
     pub seat_flags: [u32; 4],
-    // North tiles each seat has set aside (kita, three players only), 8 bits per seat.
-    pub kita: u32,
     // Liable seat + 1 for pao, 8 bits per seat: the low nibble for big dragons / big winds, the
     // high one for four kans (PAO_SUUKANTSU); 0 = none.
     pub pao: u32,

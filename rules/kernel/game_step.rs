@@ -17,6 +17,10 @@ fn begin_game(s: &mut GameState, dealer: u32, wall: [u32; 136]) {
     s.honba = 0u32;
     s.sticks = 0u32;
     s.scores = [STARTING_POINTS as i32; 4];
+    // A seat past the table's (three players) holds nothing.
+    for p in SEATS..4u32 {
+        s.scores[p as usize] = 0i32;
+    }
     s.rounds = 0u32;
     s.phase = PHASE_TURN;
     s.terminated = 0u32;

@@ -116,6 +116,7 @@ fn kita_allowed(s: &mut GameState, p: u32, riichi: bool) -> bool {
 fn do_kita(s: &mut GameState) -> u32 {
     let p: u32 = s.current;
     take_tile(s, p, NORTH);
+    s.seat_flags[p as usize] += 1u32 << SEAT_KITA_SHIFT;
     s.uninterrupted = 0u32;
     s.drawn = NO_TILE_VALUE;
     log_push(s, EV_KITA, p, NORTH, 0u32);

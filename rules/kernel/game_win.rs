@@ -79,7 +79,7 @@ fn win_input(s: &mut GameState, seat: u32, v: u32, tsumo: bool, chankan: bool) -
         ura: ura,
         n_ura: s.dora_revealed,
         aka: aka,
-        kita: byte_of(s.kita, seat),
+        kita: kita_count(s, seat),
         honba: s.honba,
         sticks: s.sticks,
     }

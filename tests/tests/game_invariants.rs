@@ -86,7 +86,7 @@ macro_rules! invariant_suite {
                 }
                 total_steps += u64::from(steps);
                 per_game.push_str(&format!("{g} {steps} {:016x}\n", game_print.0));
-                for p in 0..4 {
+                for p in 0..variant::SEATS as usize {
                     let change = f64::from(s.scores[p] - variant::STARTING_POINTS as i32) / 100.0;
                     assert_eq!(
                         reward_sum[p], change,

@@ -10,7 +10,7 @@ pub fn tiles_held_and_drawn(state: &GameState, variant: Variant) -> ([u32; 34], 
     let mut s = *state;
     let mut held = [0u32; 34];
     for seat in 0..4u32 {
-        held[30] += k::byte_of(s.kita, seat);
+        held[30] += (s.seat_flags[seat as usize] >> k::SEAT_KITA_SHIFT) & 7;
         for (h, n) in held.iter_mut().zip(k::hand_counts(&mut s, seat)) {
             *h += n;
         }
@@ -35,7 +35,8 @@ pub fn tiles_held_and_drawn(state: &GameState, variant: Variant) -> ([u32; 34], 
     for i in 0..s.next_draw.min(136) {
         drawn[(k::value_type(k::wall_tile(&mut s, i)) as usize).min(33)] += 1;
     }
-    let replacements = s.kans.min(4) + (0..4).map(|q| k::byte_of(s.kita, q)).sum::<u32>().min(4);
+    // Each replacement tile drawn (after a kan or a kita) moved the live wall's end down by one.
+    let replacements = variant.wall().live_end.saturating_sub(s.live_end).min(8);
     for n in 0..replacements {
         let i = variant.replacement_index(n);
         drawn[(k::value_type(k::wall_tile(&mut s, i)) as usize).min(33)] += 1;

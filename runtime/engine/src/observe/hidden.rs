@@ -6,9 +6,10 @@ use crate::generated::kernel::{self, GameState, SEAT_FURITEN_RIICHI, SEAT_FURITE
 use crate::random::Rng;
 use crate::Variant;
 
-/// Replacement tiles drawn this round: one per kan and per North set aside.
-fn replacements(s: &GameState) -> u32 {
-    s.kans + (0..4).map(|q| kernel::byte_of(s.kita, q)).sum::<u32>()
+/// Replacement tiles drawn this round (after a kan or a kita): each moved the live wall's end
+/// down by one.
+fn replacements(variant: Variant, s: &GameState) -> u32 {
+    variant.wall().live_end - s.live_end
 }
 
 fn wall_set(s: &mut GameState, i: u32, v: u32) {
@@ -41,8 +42,8 @@ impl OwnDraws {
         if after.next_draw == before.next_draw + 1 && drew_now {
             self.positions.push(after.next_draw - 1);
         }
-        let k = replacements(after);
-        if k == replacements(before) + 1 && drew_now && after.rinshan == 1 {
+        let k = replacements(variant, after);
+        if k == replacements(variant, before) + 1 && drew_now && after.rinshan == 1 {
             self.positions.push(variant.replacement_index(k - 1));
         }
     }
@@ -57,7 +58,7 @@ pub fn resample_hidden(variant: Variant, s: &GameState, observer: u32, own_draws
     let mut r = *s;
     let wall = variant.wall();
     let seats = variant.seats();
-    let drawn_replacements: Vec<u32> = (0..replacements(s)).map(|k| variant.replacement_index(k)).collect();
+    let drawn_replacements: Vec<u32> = (0..replacements(variant, s)).map(|k| variant.replacement_index(k)).collect();
     let mut pool: Vec<u32> = Vec::new();
     let mut hidden_positions: Vec<u32> = Vec::new();
     // The live wall's end is where three players' replacement tiles past the fourth come from.
