@@ -27,8 +27,8 @@ pub struct Scenario {
     pub mode: String,
     #[serde(default)]
     pub dealer: u32,
-    /// Seats 0..3 (absolute seats, not dealing order), 13 tiles each.
-    pub hands: [String; 4],
+    /// One per seat (absolute seats, not dealing order: four, or three in sanma), 13 tiles each.
+    pub hands: Vec<String>,
     /// Live wall from wall[52] on ("x": filler).
     #[serde(default)]
     pub draws: Vec<String>,
@@ -228,7 +228,7 @@ pub fn build_wall(sc: &Scenario, variant: Variant) -> Result<[u32; 136], String>
     if sc.dealer >= seats {
         return Err(format!("dealer must be 0..{}", seats - 1));
     }
-    if sc.hands.len() > seats as usize {
+    if sc.hands.len() != seats as usize {
         return Err(format!("{} hands for {seats} seats", sc.hands.len()));
     }
     for (seat, hand) in sc.hands.iter().enumerate() {

@@ -369,7 +369,7 @@ fn tiny(hands: [&str; 4]) -> Scenario {
         variant: "red".into(),
         mode: "single".into(),
         dealer: 1,
-        hands: hands.map(String::from),
+        hands: hands.map(String::from).to_vec(),
         draws: vec!["1z".into()],
         seat_draws: vec![],
         wall_at: Default::default(),

@@ -58,6 +58,12 @@ impl GameRecorder {
 
     /// As [`GameRecorder::new`], for a game of `variant`.
     pub fn for_variant(state: &GameState, variant: Variant) -> Result<GameRecorder, String> {
+        if variant.seats() != 4 {
+            return Err(format!(
+                "{variant} is a three-player game: its logs (kita, three seats) are not written yet; \
+                 four-player rule sets only"
+            ));
+        }
         let rule = match (state.mode, variant.red_fives()) {
             (kernel::MODE_HALF, true) => "鳳南喰赤",
             (kernel::MODE_HALF, false) => "鳳南喰",
