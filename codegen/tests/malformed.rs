@@ -701,3 +701,60 @@ fn yaku_rule_named_like_a_plain_option() {
         ],
     );
 }
+
+#[test]
+fn seats_are_four_or_three() {
+    let (v, ..) = sources("red");
+    let d = single_error(load_variant_edit("red", "seats = 4\n", "seats = 5\n"));
+    assert_diag(
+        &d,
+        &variant_path("red"),
+        line_of(&v, "seats = 4"),
+        9,
+        &["seats must be 4, or 3", "three-player"],
+    );
+}
+
+#[test]
+fn uma_has_one_entry_per_seat() {
+    let (v, ..) = sources("sanma");
+    let d = single_error(load_variant_edit("sanma", "uma = [15, 0, -15]", "uma = [15, 5, -5, -15]"));
+    assert_diag(
+        &d,
+        &variant_path("sanma"),
+        line_of(&v, "uma = [15, 0, -15]"),
+        7,
+        &["uma has 4 entries", "3 seats"],
+    );
+}
+
+#[test]
+fn three_seats_have_no_chi_and_four_no_kita() {
+    let (v, ..) = sources("sanma");
+    let d = single_error(load_variant_edit(
+        "sanma",
+        "    { kind = \"pass\" },",
+        "    { kind = \"chi_left\" },\n    { kind = \"pass\" },",
+    ));
+    assert!(
+        d.message.contains("`chi_left` is a chi") && d.message.contains("seats = 3"),
+        "{}",
+        d.message
+    );
+    assert_eq!(d.line, line_of(&v, "{ kind = \"pass\" }"));
+    let (v, ..) = sources("red");
+    let d = single_error(load_variant_edit(
+        "red",
+        "    { kind = \"pass\" },",
+        "    { kind = \"kita\" },\n    { kind = \"pass\" },",
+    ));
+    assert!(d.message.contains("`kita` sets North aside"), "{}", d.message);
+    assert_eq!(d.line, line_of(&v, "{ kind = \"pass\" }"));
+    // A three-player layout without kita is reported at the layout.
+    let r = load_variant_edit("sanma", "    { kind = \"kita\" },                 # 78: set a North aside for a replacement tile\n", "");
+    let Err(diags) = r else { panic!("loaded") };
+    assert!(
+        diags.iter().any(|d| d.message.contains("lacks `kita` (seats = 3 needs it)")),
+        "{diags:?}"
+    );
+}

@@ -57,9 +57,9 @@ const ALL_YAKU: [&str; 45] = [
 fn every_variant_loads() {
     assert_eq!(
         rinshan_codegen::variant_names(&rules_dir()),
-        ["mjsoul", "mleague", "no_red", "red", "wrc"]
+        ["mjsoul", "mleague", "no_red", "red", "sanma", "wrc"]
     );
-    for v in ["red", "no_red", "mjsoul", "mleague", "wrc"] {
+    for v in ["red", "no_red", "mjsoul", "mleague", "wrc", "sanma"] {
         let spec = load_real(v);
         assert_eq!(spec.variant.name, v);
     }
@@ -71,7 +71,7 @@ fn unknown_variant_lists_the_known_ones() {
         panic!("loaded")
     };
     assert!(
-        e[0].message.contains("no variant `blue`") && e[0].message.contains("mjsoul, mleague, no_red, red, wrc"),
+        e[0].message.contains("no variant `blue`") && e[0].message.contains("mjsoul, mleague, no_red, red, sanma, wrc"),
         "{}",
         e[0]
     );
@@ -295,6 +295,31 @@ fn variant_options() {
         ]
         .map(|(n, v)| (n, v.to_string()))
     );
+    // Sanma differs from Tenhou's four-player rules in the options its spec's header names: the
+    // seats (which bring the tile set, kita, no chi and tsumo loss), its honba, its noten pool, its
+    // points and its three-entry uma.
+    let sanma = load_real("sanma").variant;
+    let differ: Vec<(&str, String)> = red
+        .options
+        .iter()
+        .zip(&sanma.options)
+        .filter(|(a, b)| a.name != b.name || a.value != b.value)
+        .map(|(a, b)| (a.name.as_str(), b.value.to_string()))
+        .collect();
+    assert_eq!(
+        differ,
+        [
+            ("honba_ron_points", "200"),
+            ("noten_pool_points", "2000"),
+            ("seats", "3"),
+            ("starting_points", "35000"),
+            ("target_points", "40000"),
+        ]
+        .map(|(n, v)| (n, v.to_string()))
+    );
+    assert_eq!((sanma.seats, sanma.uma), (3, [15, 0, -15, 0]));
+    let kinds: Vec<&str> = sanma.actions.iter().map(|a| a.kind.as_str()).collect();
+    assert!(kinds.contains(&"kita") && !kinds.iter().any(|k| k.starts_with("chi")), "{kinds:?}");
     // 25,000 start, 30,000 return, uma +30/+10/-10/-30: measured from the start, first place
     // also takes the 20,000 oka and everyone gives back 5,000.
     let oka_and_return = [20 - 5, -5, -5, -5];
@@ -336,12 +361,14 @@ fn variant_options() {
                 "double_ron",
                 "triple_ron_abort",
                 "kokushi_robs_closed_kan",
+                "noten_pool_points",
                 "abortive_draws",
                 "nagashi_mangan",
                 "pao",
                 "pao_share_only",
                 "pao_pays_honba",
                 "pao_suukantsu",
+                "seats",
                 "starting_points",
                 "riichi_min_points",
                 "bust_below_zero",
