@@ -356,6 +356,10 @@ fn finish_game(s: &mut GameState) {
         ranks[p as usize] = seat_rank(s, p);
         s.ranks |= ranks[p as usize] << (p * RANK_SHIFT);
     }
+    // A seat past the table's (three players) holds the place no one does.
+    for p in SEATS..4u32 {
+        s.ranks |= 3u32 << (p * RANK_SHIFT);
+    }
     let uma: [i32; 4] = uma_shares(s.scores, ranks, s.uma);
     for p in 0u32..SEATS {
         let u: i32 = uma[p as usize];

@@ -22,12 +22,15 @@ struct Seen {
     decision: u32,
 }
 
+// Seat q as seen from `seat`: 0 itself, 1 the next seat, SEATS - 1 the one before.
 fn rel(seat: u32, q: u32) -> u32 {
-    (q + 4u32 - seat) % 4u32
+    (q + SEATS - seat) % SEATS
 }
 
+// A seat past the table's (three players) observes as the player to move, as OBSERVE_CURRENT
+// does; hosts refuse such seats before they get here.
 pub fn observer(s: &mut GameState, arg: u32) -> u32 {
-    if arg >= 4u32 {
+    if arg >= SEATS {
         return s.current;
     }
     arg
@@ -173,8 +176,8 @@ fn riichi_state(s: &mut GameState, q: u32) -> u32 {
 fn view_scalars(s: &mut GameState, v: Seen) -> [u32; 24] {
     let seat: u32 = v.seat;
     let mut sc: [u32; 24] = [0u32; 24];
-    for j in 0u32..4u32 {
-        let p: u32 = (seat + j) % 4u32;
+    for j in 0u32..SEATS {
+        let p: u32 = (seat + j) % SEATS;
         let f: u32 = s.seat_flags[p as usize];
         put_scalar(&mut sc, S_SCORE + j, s.scores[p as usize] / 100i32);
         put_scalar(&mut sc, S_RANK + j, seat_rank(s, p) as i32);
@@ -185,7 +188,7 @@ fn view_scalars(s: &mut GameState, v: Seen) -> [u32; 24] {
         put_scalar(&mut sc, S_MELDS + j, meld_count(s, p) as i32);
     }
     put_scalar(&mut sc, S_ROUND, s.round as i32);
-    put_scalar(&mut sc, S_ROUND_WIND, ((s.round / 4u32) % 4u32) as i32);
+    put_scalar(&mut sc, S_ROUND_WIND, round_wind_of(s.round) as i32);
     put_scalar(&mut sc, S_SEAT_WIND, rel(s.dealer, seat) as i32);
     put_scalar(&mut sc, S_DEALER, rel(seat, s.dealer) as i32);
     put_scalar(&mut sc, S_HONBA, s.honba as i32);
@@ -456,7 +459,7 @@ fn write_own_planes(s: &mut GameState, v: Seen, o: &mut ObsPlanes) {
         }
     }
     put_set(o, P_WAITS, own_waits(s, seat));
-    let round_wind: u32 = EAST + (s.round / 4u32) % 4u32;
+    let round_wind: u32 = EAST + round_wind_of(s.round);
     let seat_wind: u32 = EAST + rel(s.dealer, seat);
     put_plane(o, P_YAKUHAI, round_wind, 1u32 + (round_wind == seat_wind) as u32);
     if round_wind != seat_wind {
@@ -475,8 +478,8 @@ fn write_own_planes(s: &mut GameState, v: Seen, o: &mut ObsPlanes) {
 // Rows P_SEAT.. : each seat's river, melds and the tiles safe against it.
 fn view_seat_planes(s: &mut GameState, seat: u32, o: &mut ObsPlanes) {
     let sets: [u32; 24] = log_sets(s);
-    for j in 0u32..4u32 {
-        let q: u32 = (seat + j) % 4u32;
+    for j in 0u32..SEATS {
+        let q: u32 = (seat + j) % SEATS;
         let base: u32 = P_SEAT + j * P_SEAT_ROWS;
         // One pass, straight into the (zeroed) rows: counts add up in their bytes (at most 4 or
         // 24), the first turn is written once, the last turn overwritten by each later discard.
@@ -584,8 +587,8 @@ fn write_tokens_but_events(s: &mut GameState, v: Seen, o: &mut ObsTokens) {
         target = s.claim_tile;
     }
     put_tok(o, T_TARGET, target);
-    for j in 0u32..4u32 {
-        let q: u32 = (seat + j) % 4u32;
+    for j in 0u32..SEATS {
+        let q: u32 = (seat + j) % SEATS;
         for i in 0u32..4u32 {
             let at: u32 = T_MELDS + (j * 4u32 + i) * 4u32;
             if i < meld_count(s, q) {
@@ -632,7 +635,7 @@ fn view_events(s: &mut GameState, seat: u32, o: &mut ObsTokens) -> u32 {
         if (f & LOG_DREW) != 0u32 {
             let mut pos: u32 = WALL_LIVE_START + live;
             if after_kan {
-                pos = WALL_RINSHAN + replacement;
+                pos = replacement_index(replacement);
                 replacement += 1u32;
             } else {
                 live += 1u32;
@@ -655,7 +658,8 @@ fn view_events(s: &mut GameState, seat: u32, o: &mut ObsTokens) -> u32 {
             n += 1u32;
         }
         if k != EV_DORA {
-            after_kan = k == EV_OPEN_KAN || k == EV_CLOSED_KAN || k == EV_ADDED_KAN;
+            // A kan or a kita is followed by a replacement tile.
+            after_kan = k == EV_OPEN_KAN || k == EV_CLOSED_KAN || k == EV_ADDED_KAN || k == EV_KITA;
         }
     }
     if (s.log_len & LOG_PENDING_DRAW) != 0u32 && s.phase != PHASE_OVER && n < TOKEN_EVENTS {

@@ -115,7 +115,7 @@ fn write_own_packed(s: &mut GameState, v: Seen, o: &mut ObsPacked) {
     }
     put_bits(o, P_WAITS, own_waits(s, seat));
     let yakuhai: u32 = packed_index(P_YAKUHAI);
-    let round_wind: u32 = EAST + (s.round / 4u32) % 4u32;
+    let round_wind: u32 = EAST + round_wind_of(s.round);
     let seat_wind: u32 = EAST + rel(s.dealer, seat);
     add_count(o, yakuhai, round_wind, 1u32);
     add_count(o, yakuhai, seat_wind, 1u32);
@@ -131,8 +131,8 @@ fn write_own_packed(s: &mut GameState, v: Seen, o: &mut ObsPacked) {
 // Rows P_SEAT.. : each seat's river, melds and the tiles safe against it.
 fn packed_seat_rows(s: &mut GameState, seat: u32, o: &mut ObsPacked) {
     let sets: [u32; 24] = log_sets(s);
-    for j in 0u32..4u32 {
-        let q: u32 = (seat + j) % 4u32;
+    for j in 0u32..SEATS {
+        let q: u32 = (seat + j) % SEATS;
         let discarded: u32 = packed_seat_index(j, P_SEAT_DISCARDED);
         let tedashi: u32 = packed_seat_index(j, P_SEAT_TEDASHI);
         let first_turn: u32 = packed_seat_index(j, P_SEAT_FIRST_TURN);

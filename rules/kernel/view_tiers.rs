@@ -79,8 +79,8 @@ pub fn observe_oracle(state: GameState, arg: u32) -> ObsOracle {
 fn oracle_of(s: &mut GameState, arg: u32) -> ObsOracle {
     let seat: u32 = observer(s, arg);
     let mut out: [u32; 78] = [0u32; 78];
-    for j in 1u32..4u32 {
-        let q: u32 = (seat + j) % 4u32;
+    for j in 1u32..SEATS {
+        let q: u32 = (seat + j) % SEATS;
         let i: u32 = j - 1u32;
         let c: [u32; 34] = hand_counts(s, q);
         for t in 0u32..34u32 {
@@ -95,7 +95,7 @@ fn oracle_of(s: &mut GameState, arg: u32) -> ObsOracle {
             put_oracle_byte(&mut out, O_WAITS + i * 34u32 + t, waits_include(s, q, t) as u32);
         }
     }
-    for k in 0u32..70u32 {
+    for k in 0u32..WALL_LIVE_END - WALL_LIVE_START {
         let pos: u32 = WALL_LIVE_START + k;
         let mut v: u32 = NO_TILE_BYTE;
         if pos >= s.next_draw && pos < s.live_end {
@@ -103,9 +103,10 @@ fn oracle_of(s: &mut GameState, arg: u32) -> ObsOracle {
         }
         put_oracle_byte(&mut out, O_WALL + k, v);
     }
+    // The dead wall's replacement tiles not drawn yet (each draw moved the live wall's end down).
     for k in 0u32..4u32 {
         let mut v: u32 = NO_TILE_BYTE;
-        if k >= s.kans {
+        if k >= WALL_LIVE_END - s.live_end {
             v = wall_tile(s, WALL_RINSHAN + k);
         }
         put_oracle_byte(&mut out, O_RINSHAN + k, v);

@@ -184,7 +184,11 @@ fn bad_input_is_a_typed_error() {
     }
     assert!(matches!(
         env.reset_with_walls(&[good; 4], &[0, 1, 2, 4]),
-        Err(EnvError::BadDealer { env: 3, dealer: 4 })
+        Err(EnvError::BadDealer {
+            env: 3,
+            dealer: 4,
+            seats: 4
+        })
     ));
     assert!(matches!(
         env.reset_with_walls(&[good; 3], &[0; 3]),
@@ -317,15 +321,20 @@ fn final_ranks_order_the_final_scores() {
             }
         }
         let start = f64::from(v.starting_points());
+        let seats = v.seats() as usize;
         for (i, table) in env.tables().expect("tables").iter().enumerate() {
             let r = ranks[i].expect("finished");
             let mut places = r;
             places.sort_unstable();
             assert_eq!(places, [0, 1, 2, 3], "{v} env {i}: {r:?}");
-            for p in 0..4 {
+            // A seat a three-player game lacks holds the place no one does, and nothing.
+            for p in seats..4 {
+                assert_eq!((r[p], table.scores[p], sums[i][p]), (3, 0, 0.0), "{v} env {i}");
+            }
+            for p in 0..seats {
                 // The rewards add up to the final score, uma included.
                 assert_eq!(start + sums[i][p] * 100.0, f64::from(table.scores[p]), "{v} env {i}");
-                for q in 0..4 {
+                for q in 0..seats {
                     if table.scores[p] > table.scores[q] {
                         assert!(r[p] < r[q], "{v} env {i}: {:?} ranked {r:?}", table.scores);
                     }

@@ -178,19 +178,23 @@ pub enum EnvError {
         /// What is wrong with it.
         reason: String,
     },
-    /// An observer seat outside 0..3 (4 = the current player, where a per-env seat is given).
+    /// An observer seat that is not a seat of the table (nor 4, the current player).
     BadSeat {
         /// The env it was for.
         env: usize,
         /// The seat given.
         seat: u32,
+        /// Seats at the table: 4, or 3.
+        seats: u32,
     },
-    /// A dealer outside 0..3.
+    /// A first dealer who is not a seat of the table.
     BadDealer {
         /// The env it was for.
         env: usize,
         /// The seat given.
         dealer: u32,
+        /// Seats at the table: 4, or 3.
+        seats: u32,
     },
     /// A forced deal's table cannot be dealt ([`check_table`](super::check_table)).
     BadDeal {
@@ -223,13 +227,14 @@ impl std::fmt::Display for EnvError {
                 write!(f, "{got} {what} for a batch of {expected}: give exactly one per env")
             }
             EnvError::BadWall { env, reason } => write!(f, "wall of env {env}: {reason}"),
-            EnvError::BadDealer { env, dealer } => {
-                write!(f, "first dealer of env {env} is {dealer}: seats are 0..3")
+            EnvError::BadDealer { env, dealer, seats } => {
+                write!(f, "first dealer of env {env} is {dealer}: seats are 0..{}", seats - 1)
             }
-            EnvError::BadSeat { env, seat } => {
+            EnvError::BadSeat { env, seat, seats } => {
                 write!(
                     f,
-                    "observer seat {seat} of env {env}: seats are 0..3 (4 = the current player)"
+                    "observer seat {seat} of env {env}: seats are 0..{} (4 = the current player)",
+                    seats - 1
                 )
             }
             EnvError::BadDeal { env, reason } => write!(f, "deal of env {env}: {reason}"),

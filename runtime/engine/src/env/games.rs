@@ -33,9 +33,11 @@ fn uma_of(config: &Config) -> [i32; 4] {
 /// five as a five, and with red fives (only in a variant that has them) once each.
 pub(crate) fn check_wall(variant: Variant, wall: &[Tile; 136]) -> Result<(), String> {
     let red_fives = with_variant!(variant, v => v::RED_FIVES);
+    // Three players play 108 tiles, without 2m-8m; the array's last 28 places are not read.
+    let in_play = |t: usize| variant.seats() == 4 || t == 0 || t >= 8;
     let mut counts = [0u32; 34];
     let mut reds = [0u32; 3];
-    for (i, &t) in wall.iter().enumerate() {
+    for (i, &t) in wall.iter().enumerate().take(variant.wall().tiles as usize) {
         if t.is_red() && !red_fives {
             return Err(format!("tile {i} is a red five ({t}), but variant {variant} has none"));
         }
@@ -44,14 +46,16 @@ pub(crate) fn check_wall(variant: Variant, wall: &[Tile; 136]) -> Result<(), Str
         }
         counts[t.kind().index()] += 1;
     }
-    if let Some(t) = counts.iter().position(|&n| n != 4) {
-        return Err(format!(
-            "{} copies of tile type {t}: every type appears 4 times",
-            counts[t]
-        ));
+    if let Some(t) = (0..34).find(|&t| counts[t] != if in_play(t) { 4 } else { 0 }) {
+        let want = if in_play(t) {
+            "every type appears 4 times"
+        } else {
+            "three players have no 2m-8m"
+        };
+        return Err(format!("{} copies of tile type {t}: {want}", counts[t]));
     }
     if red_fives {
-        if let Some(s) = reds.iter().position(|&n| n != 1) {
+        if let Some(s) = (0..3).find(|&s| reds[s] != u32::from(in_play(s * 9 + 4))) {
             return Err(format!(
                 "{} red fives of suit {s}: this variant has exactly one per suit (value {})",
                 reds[s],
@@ -259,17 +263,19 @@ impl Env {
     }
 
     /// New games whose first round deals the given walls (tiles in dealing order) with the given
-    /// first dealers (0..3). Later rounds shuffle from the seeds [`Env::reset`] would use.
+    /// first dealers (0..3, 0..2 with three players). Later rounds shuffle from the seeds [`Env::reset`] would use.
     pub fn reset_with_walls(&mut self, walls: &[[Tile; 136]], dealers: &[u32]) -> Result<&Step, EnvError> {
         self.check_len("walls", walls.len())?;
         self.check_len("dealers", dealers.len())?;
         for (env, wall) in walls.iter().enumerate() {
             check_wall(self.variant(), wall).map_err(|reason| EnvError::BadWall { env, reason })?;
         }
-        if let Some(env) = dealers.iter().position(|&d| d > 3) {
+        let seats = self.variant().seats();
+        if let Some(env) = dealers.iter().position(|&d| d >= seats) {
             return Err(EnvError::BadDealer {
                 env,
                 dealer: dealers[env],
+                seats,
             });
         }
         let seeds = self.next_seeds();

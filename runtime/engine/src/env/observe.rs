@@ -12,23 +12,31 @@ use crate::observe::Form;
 pub enum Observer<'a> {
     /// Each env's current player (the seat that decides next).
     Current,
-    /// The same seat (0..3, or 4 for each env's current player) in every env.
+    /// The same seat (0..3, 0..2 with three players, or 4 for each env's current player) in
+    /// every env.
     Seat(u32),
-    /// One seat per env (0..3, or 4 for that env's current player).
+    /// One seat per env (0..3, 0..2 with three players, or 4 for that env's current player).
     Seats(&'a [u32]),
 }
 
 impl Env {
     fn observer_args(&self, observer: Observer) -> Result<Vec<u32>, EnvError> {
         let b = self.batch();
+        // A seat of the table (three in sanma), or OBSERVE_CURRENT.
+        let seats = self.variant().seats();
+        let bad = |s: u32| s >= seats && s != kernel::OBSERVE_CURRENT;
         match observer {
             Observer::Current => Ok(vec![kernel::OBSERVE_CURRENT; b]),
-            Observer::Seat(s) if s <= kernel::OBSERVE_CURRENT => Ok(vec![s; b]),
-            Observer::Seat(s) => Err(EnvError::BadSeat { env: 0, seat: s }),
+            Observer::Seat(s) if !bad(s) => Ok(vec![s; b]),
+            Observer::Seat(s) => Err(EnvError::BadSeat { env: 0, seat: s, seats }),
             Observer::Seats(seats) => {
                 self.check_len("seats", seats.len())?;
-                if let Some(env) = seats.iter().position(|&s| s > kernel::OBSERVE_CURRENT) {
-                    return Err(EnvError::BadSeat { env, seat: seats[env] });
+                if let Some(env) = seats.iter().position(|&s| bad(s)) {
+                    return Err(EnvError::BadSeat {
+                        env,
+                        seat: seats[env],
+                        seats: self.variant().seats(),
+                    });
                 }
                 Ok(seats.to_vec())
             }

@@ -186,7 +186,7 @@ impl Env {
     /// Starts the next round of the envs given a `Some` from that table and wall instead of the
     /// one each game reached by itself (log replay deals every logged round from its own wall).
     /// A finished game is left as it is. Returns the views after the deal. A wall that is not
-    /// this variant's tiles, a dealer outside 0..3 or a table that fails [`check_table`] is an
+    /// this variant's tiles, a dealer who is not a seat of the table or a table that fails [`check_table`] is an
     /// error, and nothing is dealt.
     pub fn deal(&mut self, deals: &[Option<Deal>]) -> Result<&Step, EnvError> {
         self.check_len("deals", deals.len())?;
@@ -194,8 +194,12 @@ impl Env {
         for (env, d) in deals.iter().enumerate() {
             let Some(d) = d else { continue };
             check_wall(variant, &d.wall).map_err(|reason| EnvError::BadWall { env, reason })?;
-            if d.dealer > 3 {
-                return Err(EnvError::BadDealer { env, dealer: d.dealer });
+            if d.dealer >= variant.seats() {
+                return Err(EnvError::BadDealer {
+                    env,
+                    dealer: d.dealer,
+                    seats: variant.seats(),
+                });
             }
             check_table(d.round, d.honba, d.sticks, &d.scores).map_err(|reason| EnvError::BadDeal { env, reason })?;
         }

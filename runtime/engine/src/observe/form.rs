@@ -122,6 +122,18 @@ pub(crate) fn observe_cpu<S: bytemuck::Pod>(
     serial: bool,
 ) {
     let sts: &[k::GameState] = bytemuck::cast_slice(states);
+    // The views follow four-player rounds; three players' observations come from the kernel's
+    // own writers, which rescan the round (the GPU's, and the views' oracle).
+    if variant.seats() != 4 {
+        with_variant!(variant, v => match form {
+            Form::Planes => each(out, sts, args, serial, v::observe_planes),
+            Form::Tokens => each(out, sts, args, serial, v::observe_tokens),
+            Form::Packed => each(out, sts, args, serial, v::observe_packed),
+            Form::Analysis => each(out, sts, args, serial, v::observe_analysis),
+            Form::Oracle => each(out, sts, args, serial, v::observe_oracle),
+        });
+        return;
+    }
     if matches!(form, Form::Planes | Form::Packed | Form::Tokens) {
         tables.resize_with(sts.len(), TableView::default);
     }
