@@ -97,7 +97,7 @@ fn parity(variant: Variant) {
         }
         if steps.is_multiple_of(25) {
             for form in Form::ALL {
-                for seat in 0..4 {
+                for seat in 0..variant.seats() {
                     let on_cpu = cpu.observe(form, Observer::Seat(seat)).expect("cpu observe").to_vec();
                     let on_gpu = gpu.observe(form, Observer::Seat(seat)).expect("gpu observe");
                     assert!(
@@ -150,6 +150,11 @@ fn mleague_half_games_are_identical_on_cpu_and_gpu() {
 #[test]
 fn wrc_half_games_are_identical_on_cpu_and_gpu() {
     parity(Variant::Wrc);
+}
+
+#[test]
+fn sanma_half_games_are_identical_on_cpu_and_gpu() {
+    parity(Variant::Sanma);
 }
 
 /// Hero mode on both backends: the caller plays one seat at random, the three agents the others.

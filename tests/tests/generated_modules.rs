@@ -52,6 +52,11 @@ fn wrc_wgsl_snapshot() {
     insta::assert_snapshot!("wrc_wgsl", body(wgsl(Variant::Wrc)));
 }
 
+#[test]
+fn sanma_wgsl_snapshot() {
+    insta::assert_snapshot!("sanma_wgsl", body(wgsl(Variant::Sanma)));
+}
+
 /// Size and member offsets of struct `name` in a WGSL module, as naga lays it out.
 fn wgsl_layout(module: &naga::Module, name: &str) -> (u32, Vec<(String, u32)>) {
     let mut layouter = naga::proc::Layouter::default();

@@ -215,8 +215,8 @@ async fn a_whole_game_through_the_api_replays_from_its_log() {
     assert_eq!(status, StatusCode::NOT_FOUND);
 }
 
-/// Every spec of rules/variants/ is offered to the page with its description, and a game of a
-/// rule set other than Tenhou's starts.
+/// Every four-player spec of rules/variants/ is offered to the page with its description (the
+/// page's board has four seats), and a game of a rule set other than Tenhou's starts.
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn every_rule_set_is_offered_with_its_description() {
     let app = app(Limits::default());
@@ -229,6 +229,13 @@ async fn every_rule_set_is_offered_with_its_description() {
         let path = entry.expect("an entry").path();
         let spec: toml::Table = toml::from_str(&std::fs::read_to_string(&path).expect("a spec")).expect("TOML");
         let name = spec["variant"]["name"].as_str().expect("a name").replace('_', "-");
+        if spec["game"]["seats"].as_integer() != Some(4) {
+            assert!(
+                info["variants"].as_array().is_some_and(|v| !v.contains(&json!(name))),
+                "{name}: {info}"
+            );
+            continue;
+        }
         assert!(
             info["variants"].as_array().is_some_and(|v| v.contains(&json!(name))),
             "{name}: {info}"
@@ -312,6 +319,10 @@ async fn every_refusal_has_its_status_and_a_message() {
         (
             json!({"variant": "blue", "seat": 0, "agents": ["rule", "rule", "rule"]}),
             "unknown variant",
+        ),
+        (
+            json!({"variant": "sanma", "seat": 0, "agents": ["rule", "rule", "rule"]}),
+            "three-player game",
         ),
         (
             json!({"mode": "long", "agents": ["rule", "rule", "rule", "rule"]}),

@@ -68,6 +68,13 @@ pub fn run(args: Args) -> Result<(), CliError> {
             None => Player::Builtin(Agent::Random),
         },
     });
+    if args.variant.variant.seats() != 4 {
+        return Err(CliError::input(format!(
+            "--variant {}: the duplicate arena rotates four players over four seats; three-player \
+             games are not rated yet",
+            args.variant.variant
+        )));
+    }
     if args.games == 0 || !args.games.is_multiple_of(4) {
         return Err(CliError::input(format!(
             "--games {} is not a positive multiple of 4: each wall set is played once per rotation",

@@ -78,6 +78,12 @@ pub fn run(args: Args) -> Result<(), CliError> {
         let page = rinshan_render::html::replay_html(&game, args.pov).map_err(CliError::input)?;
         return write(html, page.as_bytes());
     }
+    if args.variant.variant.seats() != 4 && args.log.is_none() {
+        return Err(CliError::input(format!(
+            "--variant {}: a three-player table is not drawn yet; the board has four seats",
+            args.variant.variant
+        )));
+    }
     let board = if let Some(log) = &args.log {
         log_board(log, args.round, args.step)?
     } else if let Some(seed) = args.seed {

@@ -74,14 +74,19 @@ pub(super) fn app_with_store(limits: Limits) -> (Router, Store) {
     (router, store)
 }
 
+/// The rule sets the page plays: the four-player ones (its board has four seats).
+fn four_player() -> Vec<String> {
+    Variant::ALL.iter().filter(|v| v.seats() == 4).map(|v| v.to_string()).collect()
+}
+
 /// `GET /api/agents`: what a new game may choose; the server's MJAI bots are agents named
 /// `mjai:NAME`.
 async fn agents(State(store): State<Store>) -> axum::Json<Value> {
     let bots = store.limits().bots.iter().map(|b| format!("{MJAI}{}", b.name));
     axum::Json(json!({
         "agents": Agent::ALL.iter().map(|a| a.name().to_string()).chain(bots).collect::<Vec<_>>(),
-        "variants": Variant::ALL.iter().map(|v| v.to_string()).collect::<Vec<_>>(),
-        "variant_descriptions": Variant::ALL.iter().map(|v| (v.to_string(), Value::from(v.description()))).collect::<serde_json::Map<_, _>>(),
+        "variants": four_player(),
+        "variant_descriptions": four_player().into_iter().filter_map(|v| Some((v.clone(), Value::from(v.parse::<Variant>().ok()?.description())))).collect::<serde_json::Map<_, _>>(),
         "modes": Mode::ALL.iter().map(|m| m.name()).collect::<Vec<_>>(),
         "tiles": TileMode::ALL.iter().map(|m| m.name()).collect::<Vec<_>>(),
     }))
@@ -163,6 +168,13 @@ fn opponent(name: &str, limits: &Limits) -> Result<Opponent, ApiError> {
 
 fn setup(g: NewGame, limits: &Limits) -> Result<Setup, ApiError> {
     let variant: Variant = parse("variant", &g.variant)?;
+    if variant.seats() != 4 {
+        return Err(unprocessable(format!(
+            "variant: {variant} is a three-player game, which the page does not draw yet; the \
+             four-player rule sets are {}",
+            four_player().join(", ")
+        )));
+    }
     let mode: Mode = parse("mode", &g.mode)?;
     let agents: Vec<Opponent> = g.agents.iter().map(|a| opponent(a, limits)).collect::<Result<_, _>>()?;
     let want = if g.seat.is_some() { 3 } else { 4 };

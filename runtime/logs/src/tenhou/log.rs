@@ -127,6 +127,12 @@ impl Game {
     /// theirs, such as Mahjong Soul games converted to tenhou.net/6); a game with red fives
     /// cannot be played under a rule set without them.
     pub fn play_under(&mut self, variant: Variant) -> Result<(), String> {
+        if variant.seats() != 4 {
+            return Err(format!(
+                "{}: a four-player log cannot be played under {variant}, a three-player game",
+                self.path
+            ));
+        }
         if self.red_fives && !variant.red_fives() {
             return Err(format!("{}: the log plays red fives, {variant} has none", self.path));
         }
