@@ -111,6 +111,9 @@ class Spec:
     action_names: tuple
     yaku_names: tuple
     starting_points: int
+    # Players at the table: 4, or 3 (sanma). Per-seat arrays keep four entries; the seats from
+    # this number on take no part (their rewards and scores stay 0).
+    num_players: int
     observation: tuple
     fields: dict
 
@@ -241,7 +244,7 @@ class Env:
         )
         self.num_envs = int(num_envs)
         self.oracle_enabled = oracle
-        names, yaku, start = _core.variant_info(variant)
+        names, yaku, start, players = _core.variant_info(variant)
         self.spec = Spec(
             variant=variant,
             mode=mode,
@@ -250,6 +253,7 @@ class Env:
             action_names=tuple(names),
             yaku_names=tuple(yaku),
             starting_points=start,
+            num_players=players,
             observation=tuple(forms),
             fields={f: fields(f)[1] for f in [*forms, *(["oracle"] if oracle else [])]},
         )
@@ -336,8 +340,8 @@ class Env:
         return split_record(self._core.observe(form, self._seats(players)), form)
 
     def observe_all(self, form: str = "planes") -> dict:
-        """Every seat's observation: arrays of shape (num_envs, 4, ...) (critics)."""
-        per_seat = [self.observe(s, form) for s in range(4)]
+        """Every seat's observation: arrays of shape (num_envs, num_players, ...) (critics)."""
+        per_seat = [self.observe(s, form) for s in range(self.spec.num_players)]
         return {k: np.stack([p[k] for p in per_seat], axis=1) for k in per_seat[0]}
 
     def oracle(self, players: Any = None) -> dict:
@@ -361,8 +365,9 @@ class Env:
             p = np.full(self.num_envs, int(p))
         if p.shape != (self.num_envs,):
             raise ValueError(f"players must be one seat or {self.num_envs} seats, not {p.shape}")
-        if ((p < 0) | (p > 3)).any():
-            raise ValueError("seats are 0..3")
+        last = self.spec.num_players - 1
+        if ((p < 0) | (p > last)).any():
+            raise ValueError(f"seats are 0..{last}")
         return [int(x) for x in p]
 
     # -- saving ------------------------------------------------------------------------------

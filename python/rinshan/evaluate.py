@@ -1,4 +1,5 @@
-"""Duplicate evaluation of a policy against three opponents: built-in agents or another policy."""
+"""Duplicate evaluation of a policy against the other seats' opponents (three, or two in a
+three-player variant): built-in agents or another policy."""
 
 from __future__ import annotations
 
@@ -9,6 +10,7 @@ from typing import Callable, Union
 
 import numpy as np
 
+from . import _core
 from .env import Env, TimeStep
 
 Policy = Union[str, Callable[[TimeStep], np.ndarray]]
@@ -16,7 +18,7 @@ Policy = Union[str, Callable[[TimeStep], np.ndarray]]
 
 @dataclasses.dataclass
 class Evaluation:
-    """A policy's results over duplicate games (each wall set played from all four seats)."""
+    """A policy's results over duplicate games (each wall set played from every seat)."""
 
     games: int
     average_rank: float
@@ -52,8 +54,8 @@ def evaluate(
     analysis: bool = False,
     num_threads=None,
 ) -> Evaluation:
-    """Plays `policy` against three `opponents` over `games` games (rounded up to a multiple of
-    4): each set of walls is played four times with the policy in each seat.
+    """Plays `policy` against `opponents` in the other seats over `games` games (rounded up to a
+    multiple of the seats, 4 or 3): each set of walls is played once with the policy in each seat.
 
     `policy` and `opponents` are each a built-in agent's name or a function from the TimeStep
     (observation of each env's current player and its legal mask) to one action per env; only the
@@ -64,10 +66,11 @@ def evaluate(
     """
     if games < 1:
         raise ValueError("games must be at least 1")
-    sets = math.ceil(games / 4)
-    n = sets * 4
+    players = _core.variant_info(variant)[3]
+    sets = math.ceil(games / players)
+    n = sets * players
     builtin = isinstance(opponents, str)
-    hero = np.tile(np.arange(4), sets)
+    hero = np.tile(np.arange(players), sets)
     env = Env(
         variant,
         mode=mode,
@@ -81,7 +84,7 @@ def evaluate(
         num_threads=num_threads,
     )
     set_seeds = np.random.SeedSequence(seed).generate_state(sets, np.uint64)
-    ts = env.reset(seeds=np.repeat(set_seeds, 4))
+    ts = env.reset(seeds=np.repeat(set_seeds, players))
     rank = np.full(n, -1)
     score = np.zeros(n)
     illegal = np.zeros(n, dtype=bool)
@@ -108,20 +111,20 @@ def evaluate(
         for i in theirs:
             # A failed bot places last, the others in their order of the moment.
             scores = ts.info["final_scores"][i]
-            others = [q for q in range(4) if q not in (hero[i], actor[i])]
+            others = [q for q in range(players) if q not in (hero[i], actor[i])]
             rank[i] = sum(scores[q] > scores[hero[i]] for q in others)
             bot_faults[i] = True
         illegal[idx] = bad & own[idx]
     env.close()
     # A game the policy ended with an illegal action counts as a last place.
-    places = np.where(illegal, 4, rank + 1)
-    per_set = places.reshape(sets, 4).mean(axis=1)
+    places = np.where(illegal, players, rank + 1)
+    per_set = places.reshape(sets, players).mean(axis=1)
     ci = 1.96 * per_set.std(ddof=1) / math.sqrt(sets) if sets > 1 else float("inf")
     return Evaluation(
         games=n,
         average_rank=float(places.mean()),
         ci95=float(ci),
-        rank_counts=[int((places == k).sum()) for k in range(1, 5)],
+        rank_counts=[int((places == k).sum()) for k in range(1, players + 1)],
         average_score=float(score.mean()),
         illegal=int(illegal.sum()),
         opponent_faults=int(bot_faults.sum()),

@@ -474,8 +474,12 @@ impl PyEnv {
                         seats.len()
                     )));
                 }
-                if let Some(s) = seats.iter().find(|&&s| s > 3) {
-                    return Err(PyValueError::new_err(format!("hero seat {s}: seats are 0..3")));
+                let table = variant.seats();
+                if let Some(s) = seats.iter().find(|&&s| s >= table) {
+                    return Err(PyValueError::new_err(format!(
+                        "hero seat {s}: seats are 0..{}",
+                        table - 1
+                    )));
                 }
                 if let Some(command) = name.strip_prefix("mjai:") {
                     let options = BotOptions {
@@ -690,6 +694,12 @@ impl PyEnv {
         let b = env.batch();
         if i >= b {
             return Err(PyValueError::new_err(format!("env {i} does not exist: there are {b}")));
+        }
+        if env.variant().seats() != 4 {
+            return Err(PyValueError::new_err(format!(
+                "{} is a three-player game: its table is not drawn yet (the board has four seats)",
+                env.variant()
+            )));
         }
         if pov.is_some_and(|p| p > 3) {
             return Err(PyValueError::new_err(format!("pov {pov:?}: seats are 0..3")));

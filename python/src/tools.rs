@@ -240,9 +240,9 @@ fn convert_log(path: &str, to: &str) -> PyResult<String> {
     rinshan_logs::file::game_text(&game, format).map_err(|e| PyValueError::new_err(e.to_string()))
 }
 
-/// The variant's action names by id, yaku names by id, and starting points.
+/// The variant's action names by id, yaku names by id, starting points and seats (4, or 3).
 #[pyfunction]
-fn variant_info(variant: &str) -> PyResult<(Vec<String>, Vec<String>, u32)> {
+fn variant_info(variant: &str) -> PyResult<(Vec<String>, Vec<String>, u32, u32)> {
     let v: Variant = parse("variant", variant)?;
     Ok((
         rinshan_engine::env::action_names(v),
@@ -251,6 +251,7 @@ fn variant_info(variant: &str) -> PyResult<(Vec<String>, Vec<String>, u32)> {
             .map(|s| s.to_string())
             .collect(),
         v.starting_points(),
+        v.seats(),
     ))
 }
 

@@ -26,7 +26,8 @@ def play(env, steps, seed=0):
 
 
 @pytest.mark.parametrize(
-    "variant,actions", [("red", 87), ("mjsoul", 87), ("mleague", 86), ("no-red", 79), ("wrc", 79)]
+    "variant,actions",
+    [("red", 87), ("mjsoul", 87), ("mleague", 86), ("no-red", 79), ("wrc", 79), ("sanma", 82)],
 )
 def test_shapes_and_dtypes(variant, actions):
     env = rinshan.make(
@@ -396,3 +397,39 @@ def test_packed_planes_unpack_to_the_planes():
         rinshan.unpack_planes(
             {"bits": every["bits"], "counts": every["counts"][..., :27, :], "scalars": None}
         )
+
+
+def test_three_player_games_end_with_three_places():
+    env = rinshan.make("sanma", num_envs=16, seed=5, num_threads=1)
+    assert env.spec.num_players == 3 and "kita" in env.spec.action_names
+    assert not any(n.startswith("chi") for n in env.spec.action_names)
+    ts = env.reset()
+    rng = np.random.default_rng(1)
+    sums = np.zeros((16, 4))
+    ended = 0
+    while ended < 24:
+        assert set(ts.current_player) <= {0, 1, 2}
+        ts = env.step(random_actions(ts, rng))
+        sums += ts.rewards * ~ts.info["illegal"][:, None]
+        for i in np.nonzero(ts.terminated)[0]:
+            scores, rank = ts.info["final_scores"][i], ts.info["final_rank"][i]
+            # The fourth seat of the state holds the place no one does, and no points.
+            assert sorted(rank[:3]) == [0, 1, 2] and rank[3] == 3 and scores[3] == 0
+            assert (scores[:3] == 35000 + np.round(sums[i, :3] * 100)).all()
+            assert sums[i, 3] == 0
+            sums[i] = 0
+            ended += 1
+    assert env.observe_all()["hand"].shape[:2] == (16, 3)
+    with pytest.raises(ValueError, match="seats are 0..2"):
+        env.observe(3)
+    with pytest.raises(ValueError, match="three-player"):
+        env.render(0)
+
+
+def test_evaluate_rotates_over_three_seats_in_sanma():
+    r = rinshan.evaluate(
+        "rule", opponents="random", games=30, seed=1, variant="sanma", num_threads=1
+    )
+    assert r.games == 30 and len(r.rank_counts) == 3 and sum(r.rank_counts) == 30
+    assert r.average_rank < 1.6 and r.illegal == 0
+

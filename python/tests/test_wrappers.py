@@ -47,3 +47,24 @@ def test_pettingzoo_plays_a_whole_game():
     # Points move between players: the game's rewards (uma included) sum to zero.
     assert abs(sum(total.values())) < 1e-3
     assert len(set(total.values())) > 1
+
+
+def test_pettingzoo_three_player_game():
+    env = RinshanAECEnv("sanma", mode="east")
+    assert env.possible_agents == ["player_0", "player_1", "player_2"]
+    api_test(RinshanAECEnv("sanma", mode="single"), num_cycles=300)
+    env.reset(seed=4)
+    total = {a: 0.0 for a in env.possible_agents}
+    acted = set()
+    for agent in env.agent_iter(20_000):
+        obs, reward, term, trunc, info = env.last()
+        total[agent] += reward
+        if term or trunc:
+            action = None
+        else:
+            acted.add(agent)
+            action = int(np.flatnonzero(obs["action_mask"])[-1])
+        env.step(action)
+    assert not env.agents and acted == set(env.possible_agents)
+    # Three players' points move among the three of them.
+    assert abs(sum(total.values())) < 1e-3

@@ -361,6 +361,10 @@ pub fn agent_act(agent: u32, o: &mut ObsPlanes, mask: [u32; 3], seed: [u32; 2], 
         if mask_has(mask, ACTION_KYUUSHU) && (agent == AGENT_RULE || sh >= 3i32) {
             return ACTION_KYUUSHU;
         }
+        // Three players: a North set aside is a dora and a fresh tile.
+        if mask_has(mask, ACTION_KITA) {
+            return ACTION_KITA;
+        }
         if !fold && mask_has(mask, ACTION_RIICHI) {
             return ACTION_RIICHI;
         }

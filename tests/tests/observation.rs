@@ -95,7 +95,7 @@ fn hidden_resampling(k: Kernels) {
         }
         let mut policy = Rng::new(5000 + game);
         while s.terminated == 0 {
-            let observer = rng.below(4);
+            let observer = rng.below(variant.seats());
             let (p, t) = both(&k, &s, observer);
             let r = resample_hidden(variant, &s, observer, &draws[observer as usize].positions, &mut rng);
             let (rp, rt) = both(&k, &r, observer);
@@ -138,22 +138,23 @@ fn seat_rotation(k: Kernels) {
         let first = (k.new)(reset_input(300 + game, 4, None));
         let wall: [u32; 136] = std::array::from_fn(|i| kernel::wall_tile(&mut first.clone(), i as u32));
         let dealer = first.dealer;
-        let shift = 1 + (game % 3) as u32;
+        let seats = variant.seats();
+        let shift = 1 + (game as u32) % (seats - 1);
         let mut a = (k.new)(reset_input(300 + game, dealer, Some(wall)));
-        let mut b = (k.new)(reset_input(300 + game, (dealer + shift) % 4, Some(wall)));
+        let mut b = (k.new)(reset_input(300 + game, (dealer + shift) % seats, Some(wall)));
         let mut policy = Rng::new(9000 + game);
         while a.terminated == 0 {
             assert_eq!(
-                (a.current + shift) % 4,
+                (a.current + shift) % seats,
                 b.current,
                 "{variant}: game {game}: the relabelled game went another way"
             );
-            for q in 0..4 {
+            for q in 0..seats {
                 assert!(
-                    both(&k, &a, q) == both(&k, &b, (q + shift) % 4),
+                    both(&k, &a, q) == both(&k, &b, (q + shift) % seats),
                     "{variant}: game {game}, step {}: seat {q} and its relabelled seat {} see different things",
                     a.steps,
-                    (q + shift) % 4
+                    (q + shift) % seats
                 );
             }
             checked += 1;
@@ -163,7 +164,7 @@ fn seat_rotation(k: Kernels) {
         }
         assert_eq!(b.terminated, 1);
     }
-    eprintln!("{variant}: {checked} positions x 4 seats equal under seat relabelling");
+    eprintln!("{variant}: {checked} positions x {} seats equal under seat relabelling", variant.seats());
 }
 
 /// Both checks for each rule set, one test each, so that they run side by side.
@@ -187,6 +188,7 @@ each_rule_set! {
     Mjsoul: mjsoul_observations_do_not_depend_on_hidden_tiles, mjsoul_observations_are_the_same_from_relabelled_seats;
     Mleague: mleague_observations_do_not_depend_on_hidden_tiles, mleague_observations_are_the_same_from_relabelled_seats;
     Wrc: wrc_observations_do_not_depend_on_hidden_tiles, wrc_observations_are_the_same_from_relabelled_seats;
+    Sanma: sanma_observations_do_not_depend_on_hidden_tiles, sanma_observations_are_the_same_from_relabelled_seats;
 }
 
 fn token_byte(t: &ObsTokens, at: u32) -> u8 {

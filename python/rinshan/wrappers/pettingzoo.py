@@ -1,4 +1,5 @@
-"""A PettingZoo AEC env: one game, agents `player_0`..`player_3` (absolute seats), each observing
+"""A PettingZoo AEC env: one game, agents `player_0`..`player_3` (absolute seats; `player_2` the
+last in a three-player variant), each observing
 the planes form from its own seat with its legal mask inside the observation (`action_mask`, all
 zeros when it is not that player's decision). Rewards are each step's score changes."""
 
@@ -23,7 +24,7 @@ class RinshanAECEnv(AECEnv):
             variant, mode=mode, num_envs=1, observation=("planes",), auto_reset=False, num_threads=1
         )
         n = self._env.spec.num_actions
-        self.possible_agents = [f"player_{i}" for i in range(4)]
+        self.possible_agents = [f"player_{i}" for i in range(self._env.spec.num_players)]
         self.agents = []
         self._obs_space = planes_space(n)
         self._act_space = spaces.Discrete(n)

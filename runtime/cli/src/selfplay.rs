@@ -323,7 +323,8 @@ pub fn run(args: Args) -> Result<(), CliError> {
                 // Games are counted in env order within a step, so the same seed counts the same games.
                 if games < args.games {
                     if let Some(players) = &players {
-                        for p in 0..4 {
+                        // Three players: the agent the rotation puts in seat 3 sits this game out.
+                        for p in 0..variant.seats() as usize {
                             // Env i seats entry (p + i) mod 4 of --agents at seat p.
                             let name = players[(p + i) % 4].to_string();
                             if let Some(k) = agent_names.iter().position(|n| *n == name) {
@@ -432,7 +433,7 @@ fn summary(
         .zip(per_agent)
         .map(|(name, a)| {
             json!({
-                "agent": name, "games": a.games, "mean_rank": a.mean_rank(), "ranks": a.ranks,
+                "agent": name, "games": a.games, "mean_rank": a.mean_rank(), "ranks": a.ranks[..variant.seats() as usize],
                 "mean_score": a.score / a.games.max(1) as f64, "rounds": a.rounds,
                 "win_rate": ratio(a.wins, a.rounds), "deal_in_rate": ratio(a.deal_ins, a.rounds),
             })
@@ -459,7 +460,7 @@ fn summary(
             "exhaustive_draw_rate": ratio(t.exhaustive, t.rounds),
             "abortive_draw_rate": ratio(t.abortive, t.rounds),
             "nagashi": t.nagashi,
-            "avg_final_score": scores,
+            "avg_final_score": scores[..variant.seats() as usize],
             "per_agent": agents_json,
             "yaku": yaku.iter().map(|(name, n)| json!({"name": name, "count": n, "per_win": ratio(*n, wins)})).collect::<Vec<_>>(),
             "bot_faults": faults,
@@ -510,18 +511,31 @@ fn summary(
         pct(t.abortive, t.rounds),
         t.nagashi
     );
+    let seats = variant.seats() as usize;
+    let per_seat: Vec<String> = (0..seats).map(|p| format!("seat {p}: {:.0}", scores[p])).collect();
     println!(
-        "  average final score   seat 0: {:.0}  seat 1: {:.0}  seat 2: {:.0}  seat 3: {:.0}  (points, uma included)",
-        scores[0], scores[1], scores[2], scores[3]
+        "  average final score   {}  (points, uma included)",
+        per_seat.join("  ")
     );
     if !agent_names.is_empty() {
-        println!("  per agent (each plays every seat in turn; win and deal-in rates per round):");
+        let places = ["1st", "2nd", "3rd", "4th"][..seats].join("/");
+        if seats == 4 {
+            println!("  per agent (each plays every seat in turn; win and deal-in rates per round):");
+        } else {
+            println!(
+                "  per agent (each plays every seat in turn, sitting out one game in four; win and deal-in rates per round):"
+            );
+        }
         println!(
             "    {:<10} {:>6} {:>8} {:>19} {:>8} {:>6} {:>7}",
-            "agent", "games", "avg rank", "1st/2nd/3rd/4th", "score", "win", "deal-in"
+            "agent", "games", "avg rank", places, "score", "win", "deal-in"
         );
         for (name, a) in agent_names.iter().zip(per_agent) {
-            let hist = a.ranks.map(|r| format!("{:.0}%", pct(r, a.games))).join("/");
+            let hist = a.ranks[..seats]
+                .iter()
+                .map(|&r| format!("{:.0}%", pct(r, a.games)))
+                .collect::<Vec<_>>()
+                .join("/");
             println!(
                 "    {:<10} {:>6} {:>8.3} {:>19} {:>8.0} {:>5.1}% {:>6.1}%",
                 name,

@@ -253,6 +253,46 @@ fn selfplay_reports_each_agent_over_the_seats_it_played() {
     assert!(text.contains("per agent") && text.contains("greedy"), "{text}");
 }
 
+/// Three players: the rotation of four agents sits one out of each game; each game hands out
+/// three places, and the points stay with the three seats.
+#[test]
+fn selfplay_plays_three_player_games() {
+    let v = json(&rinshan(&[
+        "selfplay", "--variant", "sanma", "--mode", "east", "--games", "24", "--batch", "8", "--json", "--seed", "5",
+        "--agents", "rule,greedy,defensive,random",
+    ]));
+    assert_eq!(v["variant"], "sanma", "{v}");
+    let agents = v["per_agent"].as_array().expect("per_agent");
+    // Each agent plays three games in four.
+    let games: Vec<u64> = agents.iter().map(|a| a["games"].as_u64().unwrap()).collect();
+    assert_eq!(games, [18, 18, 18, 18], "{v}");
+    for place in 0..3 {
+        let n: u64 = agents.iter().map(|a| a["ranks"][place].as_u64().unwrap()).sum();
+        assert_eq!(n, 24, "place {place}: {v}");
+    }
+    assert!(agents.iter().all(|a| a["ranks"].as_array().is_some_and(|r| r.len() == 3)), "{v}");
+    // Three seats of 35,000: the average final scores (uma included) share 105,000.
+    let scores: Vec<f64> = v["avg_final_score"].as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect();
+    assert_eq!(scores.len(), 3, "{v}");
+    assert!((scores.iter().sum::<f64>() - 105_000.0).abs() < 1e-6, "{v}");
+    assert!(v["win_rate"].as_f64().unwrap() > 0.3, "{v}");
+    // What does not take three players yet says so.
+    let dir = std::env::temp_dir().join(format!("rinshan-sanma-export-{}", std::process::id()));
+    for (args, words) in [
+        (
+            vec!["selfplay", "--variant", "sanma", "--games", "4", "--export", dir.to_str().unwrap()],
+            "three-player game",
+        ),
+        (vec!["render", "--variant", "sanma", "--seed", "3"], "three-player table"),
+        (vec!["arena", "--variant", "sanma", "--games", "4"], "three-player"),
+    ] {
+        let out = rinshan(&args);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert!(err.contains(words), "{args:?}: {err}");
+    }
+}
+
 #[test]
 fn selfplay_help_says_who_plays() {
     for args in [&["--help"][..], &["selfplay", "--help"]] {
