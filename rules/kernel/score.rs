@@ -51,13 +51,14 @@ pub fn score_hand(inp: ScoreInput) -> ScoreOutput {
     let pays: [u32; 3] = hand_payments(best.base, dealer);
     if flag(inp, FLAG_TSUMO) {
         let honba: u32 = inp.honba * HONBA_TSUMO_POINTS;
+        // Every other seat pays: three players lose the absent seat's share (tsumo loss).
         if dealer {
             out.others_pay = pays[2] + honba;
-            out.gain = out.others_pay * 3u32 + sticks;
+            out.gain = out.others_pay * (SEATS - 1u32) + sticks;
         } else {
             out.dealer_pays = pays[1] + honba;
             out.others_pay = pays[2] + honba;
-            out.gain = out.dealer_pays + out.others_pay * 2u32 + sticks;
+            out.gain = out.dealer_pays + out.others_pay * (SEATS - 2u32) + sticks;
         }
     } else {
         out.ron = pays[0] + inp.honba * HONBA_RON_POINTS;
