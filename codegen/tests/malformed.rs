@@ -718,7 +718,11 @@ fn seats_are_four_or_three() {
 #[test]
 fn uma_has_one_entry_per_seat() {
     let (v, ..) = sources("sanma");
-    let d = single_error(load_variant_edit("sanma", "uma = [15, 0, -15]", "uma = [15, 5, -5, -15]"));
+    let d = single_error(load_variant_edit(
+        "sanma",
+        "uma = [15, 0, -15]",
+        "uma = [15, 5, -5, -15]",
+    ));
     assert_diag(
         &d,
         &variant_path("sanma"),
@@ -751,10 +755,16 @@ fn three_seats_have_no_chi_and_four_no_kita() {
     assert!(d.message.contains("`kita` sets North aside"), "{}", d.message);
     assert_eq!(d.line, line_of(&v, "{ kind = \"pass\" }"));
     // A three-player layout without kita is reported at the layout.
-    let r = load_variant_edit("sanma", "    { kind = \"kita\" },                 # 78: set a North aside for a replacement tile\n", "");
+    let r = load_variant_edit(
+        "sanma",
+        "    { kind = \"kita\" },                 # 78: set a North aside for a replacement tile\n",
+        "",
+    );
     let Err(diags) = r else { panic!("loaded") };
     assert!(
-        diags.iter().any(|d| d.message.contains("lacks `kita` (seats = 3 needs it)")),
+        diags
+            .iter()
+            .any(|d| d.message.contains("lacks `kita` (seats = 3 needs it)")),
         "{diags:?}"
     );
 }

@@ -319,7 +319,10 @@ fn variant_options() {
     );
     assert_eq!((sanma.seats, sanma.uma), (3, [15, 0, -15, 0]));
     let kinds: Vec<&str> = sanma.actions.iter().map(|a| a.kind.as_str()).collect();
-    assert!(kinds.contains(&"kita") && !kinds.iter().any(|k| k.starts_with("chi")), "{kinds:?}");
+    assert!(
+        kinds.contains(&"kita") && !kinds.iter().any(|k| k.starts_with("chi")),
+        "{kinds:?}"
+    );
     // 25,000 start, 30,000 return, uma +30/+10/-10/-30: measured from the start, first place
     // also takes the 20,000 oka and everyone gives back 5,000.
     let oka_and_return = [20 - 5, -5, -5, -5];

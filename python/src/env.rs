@@ -159,6 +159,15 @@ struct Games {
     /// The final rows hold a finished game's (to clear at the next step).
     shown: Vec<bool>,
     start: f64,
+    /// Seats at the table (4, or 3): a seat past them ends every game with no points.
+    seats: usize,
+}
+
+impl Games {
+    /// Each seat's points at the start: none for a seat past the table's (three players).
+    fn start_points(&self) -> [f64; 4] {
+        std::array::from_fn(|p| if p < self.seats { self.start } else { 0.0 })
+    }
 }
 
 /// A batch of games (see `rinshan.make`).
@@ -250,8 +259,9 @@ impl PyEnv {
                 Begin::Restored => {
                     // A restored game's points so far are its score changes (rewards add up
                     // to them, step by step).
+                    let start = games.start_points();
                     for (p, t) in games.points.iter_mut().zip(env.tables()?) {
-                        *p = t.scores.map(|s| (f64::from(s) - games.start) / 100.0);
+                        *p = std::array::from_fn(|q| (f64::from(t.scores[q]) - start[q]) / 100.0);
                     }
                 }
             }
@@ -260,6 +270,7 @@ impl PyEnv {
                 games.shown.iter_mut().for_each(|f| *f = true);
             }
             let auto_reset = env.config().auto_reset;
+            let start = games.start_points();
             let step = env.last();
             let parts = out
                 .split(FILL_ROWS, (na, ny))
@@ -283,7 +294,6 @@ impl PyEnv {
                         .map_or(&[][..], |c| &c[..c.len().min(FILL_ROWS)]),
                 })
                 .collect();
-            let start = games.start;
             env.for_each_part(parts, |part| fill(step, part, (na, ny), start, auto_reset));
             if auto_reset {
                 // Ids count games in the order they start: numbered here, after the parallel
@@ -332,7 +342,7 @@ struct GameRows<'a> {
 /// streaming loop, rather than one pass over envs touching twenty arrays at once. The parts run
 /// on the env's threads: serial, the fill took about a tenth of a one-thread step and a fifth of
 /// a two-thread one (measured inside `run`, batch 4096 and 2048).
-fn fill(step: &Step, part: Part, sizes: (usize, usize), start: f64, auto_reset: bool) {
+fn fill(step: &Step, part: Part, sizes: (usize, usize), start: [f64; 4], auto_reset: bool) {
     let (na, ny) = sizes;
     let Part {
         first,
@@ -387,7 +397,7 @@ fn fill(step: &Step, part: Part, sizes: (usize, usize), start: f64, auto_reset: 
         );
         if step.terminated[i] {
             for p in 0..4 {
-                scores[p] = (start + games.points[j][p] * 100.0).round() as i32;
+                scores[p] = (start[p] + games.points[j][p] * 100.0).round() as i32;
                 // Places are a permutation of 0..3: all zeros means none were reported (a game
                 // ended by an illegal action, or a finished game restored by set_state).
                 ranks[p] = if step.ranks[i] == [0; 4] {
@@ -562,6 +572,7 @@ impl PyEnv {
                 finished: vec![false; b],
                 shown: vec![true; b],
                 start: f64::from(variant.starting_points()),
+                seats: variant.seats() as usize,
             },
             actions: vec![0; b],
             caller_seats,

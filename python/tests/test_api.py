@@ -419,7 +419,7 @@ def test_three_player_games_end_with_three_places():
             assert sums[i, 3] == 0
             sums[i] = 0
             ended += 1
-    assert env.observe_all()["hand"].shape[:2] == (16, 3)
+    assert env.observe_all()["planes"].shape == (16, 3, 64, 34)
     with pytest.raises(ValueError, match="seats are 0..2"):
         env.observe(3)
     with pytest.raises(ValueError, match="three-player"):
@@ -432,4 +432,3 @@ def test_evaluate_rotates_over_three_seats_in_sanma():
     )
     assert r.games == 30 and len(r.rank_counts) == 3 and sum(r.rank_counts) == 30
     assert r.average_rank < 1.6 and r.illegal == 0
-

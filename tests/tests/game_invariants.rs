@@ -41,7 +41,11 @@ macro_rules! invariant_suite {
                 let mut reward_sum = [0f64; 4];
                 let mut steps = 0u32;
                 loop {
-                    check_state(&s, g, rinshan_engine::Variant::from_name(stringify!($v)).expect("a variant"));
+                    check_state(
+                        &s,
+                        g,
+                        rinshan_engine::Variant::from_name(stringify!($v)).expect("a variant"),
+                    );
                     let view = variant::game_view(s);
                     if view.terminated != 0 {
                         break;

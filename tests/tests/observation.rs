@@ -164,7 +164,10 @@ fn seat_rotation(k: Kernels) {
         }
         assert_eq!(b.terminated, 1);
     }
-    eprintln!("{variant}: {checked} positions x {} seats equal under seat relabelling", variant.seats());
+    eprintln!(
+        "{variant}: {checked} positions x {} seats equal under seat relabelling",
+        variant.seats()
+    );
 }
 
 /// Both checks for each rule set, one test each, so that they run side by side.

@@ -312,7 +312,9 @@ fn run(sc: &Scenario) -> Result<(), String> {
         "mleague" => run_mleague(sc),
         "wrc" => run_wrc(sc),
         "sanma" => run_sanma(sc),
-        v => Err(format!("unknown variant `{v}` (red, no_red, mjsoul, mleague, wrc, sanma)")),
+        v => Err(format!(
+            "unknown variant `{v}` (red, no_red, mjsoul, mleague, wrc, sanma)"
+        )),
     }
 }
 

@@ -67,7 +67,16 @@ fn score_tsumo_json_has_yaku_and_payments() {
 fn score_in_sanma_pays_a_tsumo_from_two_seats() {
     // riichi, menzen tsumo, pinfu + dora 99m (indicator 1m, so 9m): 5 han mangan, 2000/4000.
     let v = json(&rinshan(&[
-        "score", "123p456p789s23s99m", "--win", "4s", "--tsumo", "--riichi", "--dora", "1m", "--variant", "sanma",
+        "score",
+        "123p456p789s23s99m",
+        "--win",
+        "4s",
+        "--tsumo",
+        "--riichi",
+        "--dora",
+        "1m",
+        "--variant",
+        "sanma",
         "--json",
     ]));
     assert_eq!((v["han"].as_u64(), v["fu"].as_u64()), (Some(5), Some(20)), "{v}");
@@ -77,7 +86,15 @@ fn score_in_sanma_pays_a_tsumo_from_two_seats() {
     );
     // The same hand with four players: 2m is the dora, 8,000 in all.
     let v = json(&rinshan(&[
-        "score", "123p456p789s23s99m", "--win", "4s", "--tsumo", "--riichi", "--dora", "1m", "--json",
+        "score",
+        "123p456p789s23s99m",
+        "--win",
+        "4s",
+        "--tsumo",
+        "--riichi",
+        "--dora",
+        "1m",
+        "--json",
     ]));
     assert_eq!(v["han"].as_u64(), Some(3), "{v}");
 }
@@ -278,21 +295,46 @@ fn selfplay_reports_each_agent_over_the_seats_it_played() {
 #[test]
 fn selfplay_plays_three_player_games() {
     let v = json(&rinshan(&[
-        "selfplay", "--variant", "sanma", "--mode", "east", "--games", "24", "--batch", "8", "--json", "--seed", "5",
-        "--agents", "rule,greedy,defensive,random",
+        "selfplay",
+        "--variant",
+        "sanma",
+        "--mode",
+        "east",
+        "--games",
+        "24",
+        "--batch",
+        "8",
+        "--json",
+        "--seed",
+        "5",
+        "--agents",
+        "rule,greedy,defensive,random",
     ]));
     assert_eq!(v["variant"], "sanma", "{v}");
     let agents = v["per_agent"].as_array().expect("per_agent");
     // Three of the four agents play each game.
     let games: Vec<u64> = agents.iter().map(|a| a["games"].as_u64().unwrap()).collect();
-    assert!(games.len() == 4 && games.iter().sum::<u64>() == 72 && games.iter().all(|&n| n > 0), "{v}");
+    assert!(
+        games.len() == 4 && games.iter().sum::<u64>() == 72 && games.iter().all(|&n| n > 0),
+        "{v}"
+    );
     for place in 0..3 {
         let n: u64 = agents.iter().map(|a| a["ranks"][place].as_u64().unwrap()).sum();
         assert_eq!(n, 24, "place {place}: {v}");
     }
-    assert!(agents.iter().all(|a| a["ranks"].as_array().is_some_and(|r| r.len() == 3)), "{v}");
+    assert!(
+        agents
+            .iter()
+            .all(|a| a["ranks"].as_array().is_some_and(|r| r.len() == 3)),
+        "{v}"
+    );
     // Three seats of 35,000: the average final scores (uma included) share 105,000.
-    let scores: Vec<f64> = v["avg_final_score"].as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect();
+    let scores: Vec<f64> = v["avg_final_score"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect();
     assert_eq!(scores.len(), 3, "{v}");
     assert!((scores.iter().sum::<f64>() - 105_000.0).abs() < 1e-6, "{v}");
     assert!(v["win_rate"].as_f64().unwrap() > 0.3, "{v}");
@@ -300,10 +342,21 @@ fn selfplay_plays_three_player_games() {
     let dir = std::env::temp_dir().join(format!("rinshan-sanma-export-{}", std::process::id()));
     for (args, words) in [
         (
-            vec!["selfplay", "--variant", "sanma", "--games", "4", "--export", dir.to_str().unwrap()],
+            vec![
+                "selfplay",
+                "--variant",
+                "sanma",
+                "--games",
+                "4",
+                "--export",
+                dir.to_str().unwrap(),
+            ],
             "three-player game",
         ),
-        (vec!["render", "--variant", "sanma", "--seed", "3"], "three-player table"),
+        (
+            vec!["render", "--variant", "sanma", "--seed", "3"],
+            "three-player table",
+        ),
         (vec!["arena", "--variant", "sanma", "--games", "4"], "three-player"),
     ] {
         let out = rinshan(&args);

@@ -49,6 +49,6 @@ mod variant;
 pub mod win_input;
 
 pub use generated::Variant;
-pub use variant::WallLayout;
 pub use names::UnknownName;
 pub use tile::{Tile, TileType};
+pub use variant::WallLayout;

@@ -76,7 +76,11 @@ pub(super) fn app_with_store(limits: Limits) -> (Router, Store) {
 
 /// The rule sets the page plays: the four-player ones (its board has four seats).
 fn four_player() -> Vec<String> {
-    Variant::ALL.iter().filter(|v| v.seats() == 4).map(|v| v.to_string()).collect()
+    Variant::ALL
+        .iter()
+        .filter(|v| v.seats() == 4)
+        .map(|v| v.to_string())
+        .collect()
 }
 
 /// `GET /api/agents`: what a new game may choose; the server's MJAI bots are agents named

@@ -58,7 +58,9 @@ pub fn resample_hidden(variant: Variant, s: &GameState, observer: u32, own_draws
     let mut r = *s;
     let wall = variant.wall();
     let seats = variant.seats();
-    let drawn_replacements: Vec<u32> = (0..replacements(variant, s)).map(|k| variant.replacement_index(k)).collect();
+    let drawn_replacements: Vec<u32> = (0..replacements(variant, s))
+        .map(|k| variant.replacement_index(k))
+        .collect();
     let mut pool: Vec<u32> = Vec::new();
     let mut hidden_positions: Vec<u32> = Vec::new();
     // The live wall's end is where three players' replacement tiles past the fourth come from.
