@@ -268,15 +268,17 @@ fn variant_options() {
     );
     // M-League differs from Tenhou in the rules its spec's header names, and nothing else.
     let mleague = load_real("mleague").variant;
-    let differ: Vec<(&str, String)> = red
-        .options
-        .iter()
-        .zip(&mleague.options)
-        .filter(|(a, b)| a.name != b.name || a.value != b.value)
-        .map(|(a, b)| (a.name.as_str(), b.value.to_string()))
-        .collect();
+    // The options (name, value in `other`) where `other` differs from red.
+    let differ_from_red = |other: &rinshan_codegen::spec::Variant| -> Vec<(String, String)> {
+        red.options
+            .iter()
+            .zip(&other.options)
+            .filter(|(a, b)| a.name != b.name || a.value != b.value)
+            .map(|(a, b)| (a.name.clone(), b.value.to_string()))
+            .collect()
+    };
     assert_eq!(
-        differ,
+        differ_from_red(&mleague),
         [
             ("kiriage_mangan", "true"),
             ("kan_dora_at_once", "true"),
@@ -293,21 +295,14 @@ fn variant_options() {
             ("dealer_top_stop", "false"),
             ("tied_seats_share_uma", "true"),
         ]
-        .map(|(n, v)| (n, v.to_string()))
+        .map(|(n, v)| (n.to_string(), v.to_string()))
     );
     // Sanma differs from Tenhou's four-player rules in the options its spec's header names: the
     // seats (which bring the tile set, kita, no chi and tsumo loss), its honba, its noten pool, its
     // points and its three-entry uma.
     let sanma = load_real("sanma").variant;
-    let differ: Vec<(&str, String)> = red
-        .options
-        .iter()
-        .zip(&sanma.options)
-        .filter(|(a, b)| a.name != b.name || a.value != b.value)
-        .map(|(a, b)| (a.name.as_str(), b.value.to_string()))
-        .collect();
     assert_eq!(
-        differ,
+        differ_from_red(&sanma),
         [
             ("honba_ron_points", "200"),
             ("noten_pool_points", "2000"),
@@ -315,7 +310,7 @@ fn variant_options() {
             ("starting_points", "35000"),
             ("target_points", "40000"),
         ]
-        .map(|(n, v)| (n, v.to_string()))
+        .map(|(n, v)| (n.to_string(), v.to_string()))
     );
     assert_eq!((sanma.seats, sanma.uma), (3, [15, 0, -15, 0]));
     let kinds: Vec<&str> = sanma.actions.iter().map(|a| a.kind.as_str()).collect();

@@ -50,11 +50,14 @@ fn is_discard(a: u32) -> bool {
     a == ACTION_TSUMOGIRI || (a >= ACTION_DISCARD && a < ACTION_DISCARD + ACTION_DISCARD_COUNT)
 }
 
-// Unseen copies of each type from this seat: what may still be drawn.
+// Unseen copies of each type from this seat: what may still be drawn (three players draw no
+// 2m-8m).
 fn unseen_of(o: &mut ObsPlanes) -> [u32; 34] {
     let mut u: [u32; 34] = [0u32; 34];
     for t in 0u32..34u32 {
-        u[t as usize] = 4u32 - pl(o, P_SEEN, t).min(4u32);
+        if tile_in_play(t) {
+            u[t as usize] = 4u32 - pl(o, P_SEEN, t).min(4u32);
+        }
     }
     u
 }

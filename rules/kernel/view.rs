@@ -65,11 +65,12 @@ fn gather(s: &mut GameState, seat: u32) -> Seen {
 }
 
 // The tiles on the table: every river tile not called away (those are counted in the caller's
-// meld) and every meld's.
+// meld), every meld's, and the Norths set aside (three players).
 fn table_tiles(s: &mut GameState) -> TableTiles {
     let mut seen: [u32; 34] = [0u32; 34];
     let mut red_seen: u32 = 0u32;
     for q in 0u32..4u32 {
+        seen[NORTH as usize] += kita_count(s, q);
         for i in 0u32..byte_of(s.river_lens, q) {
             let e: u32 = river_entry(s, q, i);
             let v: u32 = e & 63u32;
@@ -104,7 +105,7 @@ fn gather_with(s: &mut GameState, seat: u32, table: TableTiles) -> Seen {
         let v: u32 = wall_tile(s, WALL_DORA + i);
         let t: u32 = value_type(v);
         seen[t as usize] += 1u32;
-        dora[dora_of(t) as usize] += 1u32;
+        dora[dora_shown(t) as usize] += 1u32;
         if v >= 34u32 {
             red_seen |= 1u32 << (v - 34u32);
         }
@@ -230,6 +231,8 @@ fn view_scalars(s: &mut GameState, v: Seen) -> [u32; 24] {
     for t in 0u32..34u32 {
         dora += own[t as usize] * v.dora[t as usize];
     }
+    // Each North set aside (three players) is a dora, and one more per indicator showing North.
+    dora += kita_count(s, seat) * (1u32 + v.dora[NORTH as usize]);
     put_scalar(&mut sc, S_OWN_DORA, dora as i32);
     put_scalar(&mut sc, S_OWN_RED, reds as i32);
     put_scalar(&mut sc, S_EVENTS, log_count(s) as i32);

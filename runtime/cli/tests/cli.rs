@@ -65,37 +65,30 @@ fn score_tsumo_json_has_yaku_and_payments() {
 /// Three players: a tsumo is paid by two (tsumo loss), and the 1m indicator shows 9m.
 #[test]
 fn score_in_sanma_pays_a_tsumo_from_two_seats() {
+    let hand = |variant: &str| {
+        json(&rinshan(&[
+            "score",
+            "123p456p789s23s99m",
+            "--win",
+            "4s",
+            "--tsumo",
+            "--riichi",
+            "--dora",
+            "1m",
+            "--variant",
+            variant,
+            "--json",
+        ]))
+    };
     // riichi, menzen tsumo, pinfu + dora 99m (indicator 1m, so 9m): 5 han mangan, 2000/4000.
-    let v = json(&rinshan(&[
-        "score",
-        "123p456p789s23s99m",
-        "--win",
-        "4s",
-        "--tsumo",
-        "--riichi",
-        "--dora",
-        "1m",
-        "--variant",
-        "sanma",
-        "--json",
-    ]));
+    let v = hand("sanma");
     assert_eq!((v["han"].as_u64(), v["fu"].as_u64()), (Some(5), Some(20)), "{v}");
     assert_eq!(
         v["points"],
         serde_json::json!({"dealer_pays": 4000, "others_pay": 2000, "total": 6000})
     );
-    // The same hand with four players: 2m is the dora, 8,000 in all.
-    let v = json(&rinshan(&[
-        "score",
-        "123p456p789s23s99m",
-        "--win",
-        "4s",
-        "--tsumo",
-        "--riichi",
-        "--dora",
-        "1m",
-        "--json",
-    ]));
+    // The same hand with four players: 2m is the dora, 8,000 in all for a mangan.
+    let v = hand("red");
     assert_eq!(v["han"].as_u64(), Some(3), "{v}");
 }
 

@@ -10,7 +10,7 @@ pub fn tiles_held_and_drawn(state: &GameState, variant: Variant) -> ([u32; 34], 
     let mut s = *state;
     let mut held = [0u32; 34];
     for seat in 0..4u32 {
-        held[30] += (s.seat_flags[seat as usize] >> k::SEAT_KITA_SHIFT) & 7;
+        held[30] += with_variant!(variant, v => v::kita_count(&mut s, seat));
         for (h, n) in held.iter_mut().zip(k::hand_counts(&mut s, seat)) {
             *h += n;
         }
