@@ -514,7 +514,7 @@ pub static SCALARS: [Scalar; 27] = [
 ];
 
 /// The `kind` of a row of the tokens' `events`, with its flags.
-pub static EVENT_KINDS: [(u32, &str, &str); 10] = [
+pub static EVENT_KINDS: [(u32, &str, &str); 11] = [
     (k::EV_DRAW, "draw", "tile shown to the drawer only"),
     (k::EV_DISCARD, "discard", "flags: 1 tsumogiri, 2 riichi declaration tile, 4 later called"),
     (k::EV_CHI, "chi", "tile: the called tile; flags: its place in the run (0 lowest, 1 middle, 2 highest) + 4 with a red five from the hand"),
@@ -525,4 +525,5 @@ pub static EVENT_KINDS: [(u32, &str, &str); 10] = [
     (k::EV_RIICHI, "riichi", "declared (the next discard is its tile)"),
     (k::EV_RIICHI_ACCEPTED, "riichi_accepted", "the stick is paid"),
     (k::EV_DORA, "dora", "tile: the new indicator"),
+    (k::EV_KITA, "kita", "three players: a North set aside (tile: North); a replacement draw follows"),
 ];
