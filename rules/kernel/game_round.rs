@@ -168,13 +168,10 @@ pub fn kita_count(s: &mut GameState, seat: u32) -> u32 {
     (s.seat_flags[seat as usize] >> SEAT_KITA_SHIFT) & 7u32
 }
 
-// North tiles set aside this round, all seats.
-fn kita_total(s: &mut GameState) -> u32 {
-    let mut n: u32 = 0u32;
-    for p in 0u32..SEATS {
-        n += kita_count(s, p);
-    }
-    n
+// Replacement tiles drawn this round (after kans and kita): each moved the live wall's end down
+// by one. `pub`: hosts find the drawn ones' places with `replacement_index`.
+pub fn replacements_drawn(s: &mut GameState) -> u32 {
+    WALL_LIVE_END - s.live_end
 }
 
 // The replacement draw after a kan or a kita: the dead wall gives one tile and the live wall
@@ -185,8 +182,7 @@ fn draw_replacement(s: &mut GameState, seat: u32, kita: bool) {
         // replacement tile is drawn, so a rinshan win already counts it.
         reveal_pending_dora(s);
     }
-    // A kita counts from its declaration (`do_kita`), a kan from its replacement tile.
-    let k: u32 = s.kans + kita_total(s) - kita as u32;
+    let k: u32 = replacements_drawn(s);
     let v: u32 = wall_tile(s, replacement_index(k));
     if !kita {
         s.kans += 1u32;

@@ -55,19 +55,32 @@ fn has_yaku(lo: u32, hi: u32, i: u32) -> bool {
     ((hi >> (i - 32u32)) & 1u32) != 0u32
 }
 
-// The dora an indicator shows: three players have no 2m-8m, so 1m shows 9m (and 9m 1m).
-fn dora_shown(indicator: u32) -> u32 {
+// The dora is the tile after its indicator, wrapping within its own group; three players have
+// no 2m-8m, so 1m shows 9m (and 9m 1m).
+fn dora_of(indicator: u32) -> u32 {
+    let mut next: u32 = indicator + 1u32;
     if SEATS == 3u32 && indicator == 0u32 {
-        return 8u32;
+        next = 8u32;
     }
-    dora_of(indicator)
+    if indicator < FIRST_HONOR {
+        if indicator % 9u32 == 8u32 {
+            next = indicator - 8u32;
+        }
+    } else if indicator < FIRST_DRAGON {
+        if indicator == 30u32 {
+            next = EAST;
+        }
+    } else if indicator == 33u32 {
+        next = FIRST_DRAGON;
+    }
+    next
 }
 
 // Dora in the hand for `n` indicators; the North tiles set aside count as held Norths.
 fn dora_count(h: HandInfo, indicators: [u32; 5], n: u32, kita: u32) -> u32 {
     let mut count: u32 = 0u32;
     for i in 0u32..n {
-        let d: u32 = dora_shown(indicators[i as usize]);
+        let d: u32 = dora_of(indicators[i as usize]);
         count += h.full[d as usize];
         if d == NORTH {
             count += kita;

@@ -28,22 +28,6 @@ fn is_green(t: u32) -> bool {
     t == 19u32 || t == 20u32 || t == 21u32 || t == 23u32 || t == 25u32 || t == 32u32
 }
 
-// The dora is the tile after its indicator, wrapping within its own group.
-fn dora_of(indicator: u32) -> u32 {
-    let mut next: u32 = indicator + 1u32;
-    if indicator < FIRST_HONOR {
-        if indicator % 9u32 == 8u32 {
-            next = indicator - 8u32;
-        }
-    } else if indicator < FIRST_DRAGON {
-        if indicator == 30u32 {
-            next = EAST;
-        }
-    } else if indicator == 33u32 {
-        next = FIRST_DRAGON;
-    }
-    next
-}
 
 // Base-5 code of one suit's nine counts, 1 as the most significant digit (the tables' key).
 fn suit_code(counts: [u32; 34], suit: u32) -> u32 {

@@ -105,7 +105,7 @@ fn gather_with(s: &mut GameState, seat: u32, table: TableTiles) -> Seen {
         let v: u32 = wall_tile(s, WALL_DORA + i);
         let t: u32 = value_type(v);
         seen[t as usize] += 1u32;
-        dora[dora_shown(t) as usize] += 1u32;
+        dora[dora_of(t) as usize] += 1u32;
         if v >= 34u32 {
             red_seen |= 1u32 << (v - 34u32);
         }

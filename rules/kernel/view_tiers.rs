@@ -106,7 +106,7 @@ fn oracle_of(s: &mut GameState, arg: u32) -> ObsOracle {
     // The dead wall's replacement tiles not drawn yet (each draw moved the live wall's end down).
     for k in 0u32..4u32 {
         let mut v: u32 = NO_TILE_BYTE;
-        if k >= WALL_LIVE_END - s.live_end {
+        if k >= replacements_drawn(s) {
             v = wall_tile(s, WALL_RINSHAN + k);
         }
         put_oracle_byte(&mut out, O_RINSHAN + k, v);

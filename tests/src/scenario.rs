@@ -188,8 +188,7 @@ pub fn build_wall(sc: &Scenario, variant: Variant) -> Result<[u32; 136], String>
     let red = variant.red_fives();
     let seats = variant.seats();
     let layout = variant.wall();
-    // Three players play without 2m-8m.
-    let in_play = |t: usize| seats == 4 || t == 0 || t >= 8;
+    let in_play = |t: usize| variant.tile_in_play(t as u32);
     let mut left = [0u32; 37];
     for (t, n) in left.iter_mut().enumerate().take(34) {
         *n = match (in_play(t), red && t < 27 && t % 9 == 4) {

@@ -35,10 +35,7 @@ pub fn tiles_held_and_drawn(state: &GameState, variant: Variant) -> ([u32; 34], 
     for i in 0..s.next_draw.min(136) {
         drawn[(k::value_type(k::wall_tile(&mut s, i)) as usize).min(33)] += 1;
     }
-    // Each replacement tile drawn (after a kan or a kita) moved the live wall's end down by one.
-    let replacements = variant.wall().live_end.saturating_sub(s.live_end).min(8);
-    for n in 0..replacements {
-        let i = variant.replacement_index(n);
+    for i in variant.drawn_replacements(&s).into_iter().take(8) {
         drawn[(k::value_type(k::wall_tile(&mut s, i)) as usize).min(33)] += 1;
     }
     (held, drawn)

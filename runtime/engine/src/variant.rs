@@ -81,6 +81,17 @@ impl Variant {
     pub fn replacement_index(self, k: u32) -> u32 {
         with_variant!(self, v => v::replacement_index(k))
     }
+
+    /// The wall indices of the replacement tiles `state` has drawn this round, in order.
+    pub fn drawn_replacements(self, state: &crate::generated::kernel::GameState) -> Vec<u32> {
+        let n = with_variant!(self, v => v::replacements_drawn(&mut state.clone()));
+        (0..n).map(|k| self.replacement_index(k)).collect()
+    }
+
+    /// Whether tile type `t` (0..33) is in the set: three players have no 2m-8m.
+    pub fn tile_in_play(self, t: u32) -> bool {
+        with_variant!(self, v => v::tile_in_play(t))
+    }
 }
 
 /// Where the parts of a variant's wall lie, as indices into the dealing order: 13 tiles per seat

@@ -34,7 +34,7 @@ fn uma_of(config: &Config) -> [i32; 4] {
 pub(crate) fn check_wall(variant: Variant, wall: &[Tile; 136]) -> Result<(), String> {
     let red_fives = with_variant!(variant, v => v::RED_FIVES);
     // Three players play 108 tiles, without 2m-8m; the array's last 28 places are not read.
-    let in_play = |t: usize| variant.seats() == 4 || t == 0 || t >= 8;
+    let in_play = |t: usize| variant.tile_in_play(t as u32);
     let mut counts = [0u32; 34];
     let mut reds = [0u32; 3];
     for (i, &t) in wall.iter().enumerate().take(variant.wall().tiles as usize) {

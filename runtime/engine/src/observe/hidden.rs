@@ -6,12 +6,6 @@ use crate::generated::kernel::{self, GameState, SEAT_FURITEN_RIICHI, SEAT_FURITE
 use crate::random::Rng;
 use crate::Variant;
 
-/// Replacement tiles drawn this round (after a kan or a kita): each moved the live wall's end
-/// down by one.
-fn replacements(variant: Variant, s: &GameState) -> u32 {
-    variant.wall().live_end - s.live_end
-}
-
 fn wall_set(s: &mut GameState, i: u32, v: u32) {
     let w = &mut s.wall[(i / 4) as usize];
     *w = (*w & !(255 << ((i % 4) * 8))) | (v << ((i % 4) * 8));
@@ -42,9 +36,9 @@ impl OwnDraws {
         if after.next_draw == before.next_draw + 1 && drew_now {
             self.positions.push(after.next_draw - 1);
         }
-        let k = replacements(variant, after);
-        if k == replacements(variant, before) + 1 && drew_now && after.rinshan == 1 {
-            self.positions.push(variant.replacement_index(k - 1));
+        let (now, then) = (variant.drawn_replacements(after), variant.drawn_replacements(before));
+        if now.len() == then.len() + 1 && drew_now && after.rinshan == 1 {
+            self.positions.extend(now.last());
         }
     }
 }
@@ -58,9 +52,7 @@ pub fn resample_hidden(variant: Variant, s: &GameState, observer: u32, own_draws
     let mut r = *s;
     let wall = variant.wall();
     let seats = variant.seats();
-    let drawn_replacements: Vec<u32> = (0..replacements(variant, s))
-        .map(|k| variant.replacement_index(k))
-        .collect();
+    let drawn_replacements = variant.drawn_replacements(s);
     let mut pool: Vec<u32> = Vec::new();
     let mut hidden_positions: Vec<u32> = Vec::new();
     // The live wall's end is where three players' replacement tiles past the fourth come from.

@@ -13,6 +13,10 @@
 //! caller has to tell it when a game changed.
 
 use crate::generated::kernel as k;
+// Where a four-player round's draws come from (every four-player variant's layout is red's):
+// the views follow four-player games only, three players' observations are the kernel's own
+// (`observe_cpu`).
+use crate::generated::red::{WALL_LIVE_START, WALL_RINSHAN};
 
 // The planes are written as bytes into the kernel's `u32` words: cell `i` is byte `i % 4` of word
 // `i / 4` counting from the least significant, which is its address only on little-endian hosts.
@@ -143,17 +147,6 @@ impl Default for TableView {
     }
 }
 
-/// The views follow four-player games only: three players' observations are the kernel's own
-/// (`observe_cpu`).
-const FOUR_SEAT_WALL: crate::WallLayout = crate::WallLayout {
-    tiles: 136,
-    live_start: 52,
-    live_end: 122,
-    dora: 122,
-    ura: 127,
-    rinshan: 132,
-};
-
 fn entry_of(log: &[u32; LOG_WORDS], i: u32) -> u32 {
     (log[(i / 2) as usize] >> ((i % 2) * 16)) & 0xffff
 }
@@ -244,10 +237,10 @@ impl TableView {
         if (f & k::LOG_DREW) != 0 {
             let at = if self.after_kan {
                 self.replacement_draws += 1;
-                FOUR_SEAT_WALL.rinshan + self.replacement_draws - 1
+                WALL_RINSHAN + self.replacement_draws - 1
             } else {
                 self.live_draws += 1;
-                FOUR_SEAT_WALL.live_start + self.live_draws - 1
+                WALL_LIVE_START + self.live_draws - 1
             };
             let i = self.events_len as usize;
             if i < EVENTS {
