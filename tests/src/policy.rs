@@ -74,11 +74,14 @@ impl Policy {
 }
 
 /// [`Policy`] for a game of any variant: the same choices, read and made in red's layout (every
-/// variant's actions are red's kinds, [`ActionMap`]).
+/// variant's actions are red's kinds, [`ActionMap`]), and three players' kita, which red has
+/// not, taken most times it is legal and no tsumo is.
 pub struct VariantPolicy {
     policy: Policy,
     to_red: ActionMap,
     from_red: ActionMap,
+    /// The variant's kita (`ACTION_ABSENT` for four players, never legal).
+    kita: u32,
 }
 
 impl VariantPolicy {
@@ -87,10 +90,19 @@ impl VariantPolicy {
             policy: Policy(rng),
             to_red: ActionMap::new(variant, Variant::Red),
             from_red: ActionMap::new(Variant::Red, variant),
+            kita: rinshan_engine::with_variant!(variant, v => v::ACTION_KITA),
         }
     }
 
     pub fn act(&mut self, s: &GameState, mask: &[u32; 3]) -> u32 {
+        let kita = self.kita < 96 && legal(mask, self.kita);
+        // Only a legal kita draws from the stream: four-player games stay as they were.
+        if kita && self.policy.0.chance(80) {
+            let tsumo = self.from_red.get(k::ACTION_TSUMO);
+            if !tsumo.is_some_and(|t| legal(mask, t)) {
+                return self.kita;
+            }
+        }
         let mut red = [0u32; 3];
         for a in (0..96).filter(|&a| legal(mask, a)) {
             if let Some(r) = self.to_red.get(a) {

@@ -30,6 +30,9 @@ impl TileType {
     /// How many types there are.
     pub const COUNT: usize = 34;
 
+    /// North, the tile three players set aside (kita).
+    pub const NORTH: TileType = TileType(30);
+
     /// The type of index `index`, `None` past 33.
     pub const fn new(index: u8) -> Option<TileType> {
         if (index as usize) < TileType::COUNT {

@@ -2,6 +2,9 @@
 //! in the schema of Mortal's libriichi, with the optional extras real logs carry (the original
 //! mjai server's and akochan's). Fields are written in the order the engines write them; a
 //! reader ignores fields it does not know, as libriichi does.
+//!
+//! The per-seat lists hold four seats here; a three-player log lists three
+//! ([`super::write::game_text`] cuts them) and sets North aside with `kita`.
 
 use serde::{Deserialize, Serialize};
 
@@ -115,6 +118,13 @@ pub enum Event {
         /// The four tiles.
         consumed: [Pai; 4],
     },
+    /// A North set aside (three players); the seat's next event is its replacement draw.
+    Kita {
+        /// The seat.
+        actor: u8,
+        /// The tile, always `N`.
+        pai: Pai,
+    },
     /// A new dora indicator after a kan.
     Dora {
         /// The indicator.
@@ -204,6 +214,7 @@ impl Event {
             Event::Daiminkan { .. } => "daiminkan",
             Event::Kakan { .. } => "kakan",
             Event::Ankan { .. } => "ankan",
+            Event::Kita { .. } => "kita",
             Event::Dora { .. } => "dora",
             Event::Reach { .. } => "reach",
             Event::ReachAccepted { .. } => "reach_accepted",

@@ -94,7 +94,13 @@ impl GameBuilder {
             // A round holds to the rules of a tenhou.net/6 round (a draw before each discard,
             // calls of real melds, a han count the yaku add up to), checked by that reader.
             let game = &self.reader.game;
-            let back = parse_round_value(&game.path, done.line, &round_value(&done), game.red_fives)?;
+            let back = parse_round_value(
+                &game.path,
+                done.line,
+                &round_value(&done),
+                game.red_fives,
+                done.seats,
+            )?;
             if back != done {
                 let message = "the round's events do not read back as one round".into();
                 return Err(self.error(line, message, Some(done.to_string())));
@@ -205,6 +211,8 @@ impl Reader {
                 }
                 self.round = Some(Open::new(Round {
                     line,
+                    // Three-player MJAI logs are refused at `start_game` until they are read.
+                    seats: 4,
                     kyoku: k,
                     honba,
                     sticks: kyotaku,

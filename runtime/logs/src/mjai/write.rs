@@ -63,15 +63,32 @@ pub fn game_events(game: &Game) -> Result<Vec<Event>, LogError> {
     Ok(events)
 }
 
-/// The game as an MJAI log: one event per line.
+/// The game as an MJAI log: one event per line; a three-player game's per-seat lists hold three
+/// seats.
 pub fn game_text(game: &Game) -> Result<String, LogError> {
+    let seats = game.variant.seats() as usize;
     let mut text = String::new();
     for event in game_events(game)? {
         // An event is plain data (strings, numbers, lists): serialising it cannot fail.
-        text.push_str(&serde_json::to_string(&event).unwrap_or_default());
+        let mut value = serde_json::to_value(&event).unwrap_or_default();
+        if seats < 4 {
+            cut_to_seats(&mut value, seats);
+        }
+        text.push_str(&serde_json::to_string(&value).unwrap_or_default());
         text.push('\n');
     }
     Ok(text)
+}
+
+/// The fields that list one entry per seat.
+const PER_SEAT: [&str; 5] = ["names", "scores", "tehais", "deltas", "tenpais"];
+
+fn cut_to_seats(event: &mut serde_json::Value, seats: usize) {
+    for key in PER_SEAT {
+        if let Some(serde_json::Value::Array(list)) = event.get_mut(key) {
+            list.truncate(seats);
+        }
+    }
 }
 
 fn seat(s: usize) -> u8 {
@@ -142,6 +159,8 @@ pub(crate) fn round_so_far(
 }
 
 struct Walk<'r> {
+    /// Players at the table.
+    seats: usize,
     doras: std::slice::Iter<'r, Tile>,
     /// An open or added kan's dora waits for the kanner's discard (or the next kan).
     reveal_at_discard: bool,
@@ -169,6 +188,7 @@ impl<'r> Walk<'r> {
             tehais: std::array::from_fn(|s| pais(&round.hands[s])),
         });
         Ok(Walk {
+            seats: round.seats,
             doras: round.dora[1..].iter(),
             reveal_at_discard: false,
             reveal_at_tsumo: false,
@@ -215,7 +235,7 @@ impl<'r> Walk<'r> {
                     }),
                     Draw::Pon { called, own, from } => out.push(Event::Pon {
                         actor,
-                        target: seat(from.seat_of(s)),
+                        target: seat(from.seat_of(s, self.seats)),
                         pai: Pai::known(called),
                         consumed: own.map(Pai::known),
                     }),
@@ -223,7 +243,7 @@ impl<'r> Walk<'r> {
                         self.open_kan();
                         out.push(Event::Daiminkan {
                             actor,
-                            target: seat(from.seat_of(s)),
+                            target: seat(from.seat_of(s, self.seats)),
                             pai: Pai::known(called),
                             consumed: own.map(Pai::known),
                         });
@@ -280,6 +300,10 @@ impl<'r> Walk<'r> {
                         });
                         self.reveal(out);
                     }
+                    Discard::Kita => out.push(Event::Kita {
+                        actor,
+                        pai: Pai::known(Tile::plain(TileType::NORTH)),
+                    }),
                     Discard::Nothing => {}
                 }
             }

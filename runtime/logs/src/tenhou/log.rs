@@ -11,7 +11,9 @@
 //! * `[0]` `[kyoku, honba, sticks]` (kyoku 0 = East 1, 4 = South 1, 8 = West 1), `[1]` the scores
 //!   at the start, `[2]` dora indicators, `[3]` ura indicators;
 //! * for seat 0..3 (absolute, seat 0 deals East 1): `[4+3s]` the 13-tile starting hand, `[5+3s]`
-//!   draws (tiles and calls), `[6+3s]` discards (tiles and kans);
+//!   draws (tiles and calls), `[6+3s]` discards (tiles and kans); a three-player game (sanma,
+//!   its rule named `三鳳南喰赤` or `"variant":"sanma"`) leaves seat 3's lists empty and its
+//!   score 0, and numbers its rounds as Tenhou does: East 1-3 are kyoku 0-2, South 1 is 4;
 //! * `[16]` the result (see [`Outcome`]).
 //!
 //! Tiles are two-digit codes (see [`Tile::from_tenhou_code`]). Calls and kans are strings of tile codes with one
@@ -26,6 +28,7 @@
 //! | `k23232323` | added kan (discards)      | 0, 2, 4, as in its pon                    |
 //! | `424242a42` | closed kan (discards)     | 6 (any is read), no direction             |
 //! | `r24`       | riichi with that discard  | 0; `r60` with the drawn tile              |
+//! | `f44`       | kita (discards, sanma)    | a North set aside; a replacement draw follows |
 //!
 //! In an added kan the added tile follows the letter, then the pon's called tile.
 //!
@@ -45,6 +48,7 @@ mod tests;
 mod value;
 
 pub use moves::{Discard, Draw, Rel};
+pub(crate) use moves::KITA;
 pub(crate) use result::{
     check_yaku, our_yaku, points_total, tenhou_yaku, yaku_name as tenhou_yaku_name, MOST_YAKU_HAN,
 };
@@ -61,7 +65,9 @@ use value::{numbers, show};
 pub struct Round {
     /// 1-based line of the record in the file.
     pub line: usize,
-    /// 0 = East 1, 4 = South 1, 8 = West 1.
+    /// Players at the table: 4, or 3 (seat 3 takes no part: its lists are empty, its score 0).
+    pub seats: usize,
+    /// 0 = East 1, 4 = South 1, 8 = West 1 (three players too: their East 3 is 2, South 1 is 4).
     pub kyoku: u32,
     /// Repeat counters at the start.
     pub honba: u32,
@@ -88,6 +94,21 @@ impl Round {
     pub fn dealer(&self) -> usize {
         (self.kyoku % 4) as usize
     }
+
+    /// The engine's number of the round (`GameState::round`): `SEATS` rounds per wind.
+    pub fn table_round(&self) -> u32 {
+        table_round(self.kyoku, self.seats)
+    }
+}
+
+/// The engine's round number of Tenhou's `kyoku` at a table of `seats`.
+pub(crate) fn table_round(kyoku: u32, seats: usize) -> u32 {
+    kyoku / 4 * seats as u32 + kyoku % 4
+}
+
+/// Tenhou's `kyoku` of the engine's round number at a table of `seats`.
+pub(crate) fn tenhou_kyoku(round: u32, seats: usize) -> u32 {
+    round / seats as u32 * 4 + round % seats as u32
 }
 
 impl fmt::Display for Round {
@@ -127,10 +148,12 @@ impl Game {
     /// theirs, such as Mahjong Soul games converted to tenhou.net/6); a game with red fives
     /// cannot be played under a rule set without them.
     pub fn play_under(&mut self, variant: Variant) -> Result<(), String> {
-        if variant.seats() != 4 {
+        if variant.seats() != self.variant.seats() {
             return Err(format!(
-                "{}: a four-player log cannot be played under {variant}, a three-player game",
-                self.path
+                "{}: a {}-player log cannot be played under {variant}, a {}-player game",
+                self.path,
+                self.variant.seats(),
+                variant.seats()
             ));
         }
         if self.red_fives && !variant.red_fives() {
@@ -326,7 +349,7 @@ pub fn parse_game(path: &str, text: &str) -> Result<Game, LogError> {
         };
         for (index, round) in rounds.iter().enumerate() {
             let index = (rounds.len() > 1).then_some(index);
-            let round = parse_round(&mut ctx, index, round)?;
+            let round = parse_round(&mut ctx, index, round, variant.seats() as usize)?;
             if !red_fives {
                 check_no_red(&ctx, &round)?;
             }
@@ -341,13 +364,19 @@ pub fn parse_game(path: &str, text: &str) -> Result<Game, LogError> {
 
 /// Reads one round's 17-element array as found at `line` of `file` (how a reader of another
 /// format holds its rounds to this format's rules: what reads here is a round).
-pub(crate) fn parse_round_value(file: &str, line: usize, v: &Value, red_fives: bool) -> Result<Round, LogError> {
+pub(crate) fn parse_round_value(
+    file: &str,
+    line: usize,
+    v: &Value,
+    red_fives: bool,
+    seats: usize,
+) -> Result<Round, LogError> {
     let mut ctx = Ctx {
         file,
         line,
         round: None,
     };
-    let round = parse_round(&mut ctx, None, v)?;
+    let round = parse_round(&mut ctx, None, v, seats)?;
     if !red_fives {
         check_no_red(&ctx, &round)?;
     }
@@ -386,6 +415,8 @@ fn parse_rule(record: &Value) -> Result<(String, bool, Variant), String> {
         None => disp.contains('赤'),
     };
     let variant = match rule.get("variant") {
+        // Tenhou names its three-player rules 三.. (`三鳳南喰赤`).
+        None if disp.starts_with('三') => Variant::Sanma,
         None => Variant::Red,
         Some(v) => {
             let name = v
@@ -427,7 +458,7 @@ fn tiles(v: &Value, counts: std::ops::RangeInclusive<usize>) -> Result<Vec<Tile>
     parsed.map_err(|m| format!("{m} in {}", show(v)))
 }
 
-fn parse_round(ctx: &mut Ctx, index: Option<usize>, v: &Value) -> Result<Round, LogError> {
+fn parse_round(ctx: &mut Ctx, index: Option<usize>, v: &Value, seats: usize) -> Result<Round, LogError> {
     const LEN: usize = 17;
     ctx.round = index.map(|i| format!("log[{i}]"));
     let items = match v.as_array() {
@@ -441,7 +472,10 @@ fn parse_round(ctx: &mut Ctx, index: Option<usize>, v: &Value) -> Result<Round, 
         .and_then(numbers::<3>)
         .and_then(
             |[k, h, s]| match (u32::try_from(k), u32::try_from(h), u32::try_from(s)) {
-                (Ok(k @ 0..16), Ok(h), Ok(s)) => Ok([k, h, s]),
+                (Ok(k @ 0..16), Ok(h), Ok(s)) if (k % 4) < seats as u32 => Ok([k, h, s]),
+                _ if seats == 3 => Err(format!(
+                    "[{k}, {h}, {s}] is not [kyoku, honba, sticks] of three players (kyoku 0-2, 4-6, 8-10, 12-14)"
+                )),
                 _ => Err(format!("[{k}, {h}, {s}] is not [kyoku 0-15, honba, sticks]")),
             },
         )
@@ -456,6 +490,9 @@ fn parse_round(ctx: &mut Ctx, index: Option<usize>, v: &Value) -> Result<Round, 
     }
     let item = |i: usize| items.get(i).unwrap_or(&Value::Null);
     let scores = numbers::<4>(item(1)).map_err(|m| ctx.err("scores", m))?;
+    if seats == 3 && scores[3] != 0 {
+        return Err(ctx.err("scores", format!("{scores:?}: three players leave the fourth score 0")));
+    }
     // What the replay deals from: a table no round could be dealt from is refused here, by name.
     check_table(kyoku, honba, sticks, &scores).map_err(|m| ctx.err("[kyoku, honba, sticks] and scores", m))?;
     let dora = tiles(item(2), 1..=5).map_err(|m| ctx.err("dora", m))?;
@@ -465,6 +502,13 @@ fn parse_round(ctx: &mut Ctx, index: Option<usize>, v: &Value) -> Result<Round, 
     let mut discards: [Vec<Discard>; 4] = Default::default();
     for seat in 0..4 {
         let base = 4 + 3 * seat;
+        if seat >= seats {
+            let empty = (0..3).all(|i| item(base + i).as_array().is_some_and(Vec::is_empty));
+            if !empty {
+                return Err(ctx.err(format!("seat {seat}"), "three players leave seat 3's hand, draws and discards empty"));
+            }
+            continue;
+        }
         hands[seat] = tiles(item(base), 13..=13).map_err(|m| ctx.err(format!("hand of seat {seat}"), m))?;
         draws[seat] = entries(ctx, item(base + 1), &format!("draws of seat {seat}"), parse_draw)?;
         discards[seat] = entries(ctx, item(base + 2), &format!("discards of seat {seat}"), parse_discard)?;
@@ -481,6 +525,7 @@ fn parse_round(ctx: &mut Ctx, index: Option<usize>, v: &Value) -> Result<Round, 
     let kans = (0..4)
         .map(|s| {
             let open = draws[s].iter().filter(|d| matches!(d, Draw::OpenKan { .. })).count();
+            // A kita reveals no indicator.
             let own = discards[s]
                 .iter()
                 .filter(|d| matches!(d, Discard::AddedKan { .. } | Discard::ClosedKan { .. }));
@@ -497,6 +542,7 @@ fn parse_round(ctx: &mut Ctx, index: Option<usize>, v: &Value) -> Result<Round, 
     let outcome = result::parse_result(item(16)).map_err(|m| ctx.err("result", m))?;
     Ok(Round {
         line: ctx.line,
+        seats,
         kyoku,
         honba,
         sticks,

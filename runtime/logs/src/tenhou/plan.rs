@@ -22,12 +22,41 @@ pub(crate) mod wall;
 
 use wall::build_wall;
 
+/// The plan's id of kita, which red's layout (four players) has no place for: one past its ids.
+pub const KITA: u32 = k::NUM_ACTIONS;
+
+/// The plan's action ids (red's, and [`KITA`]) in a variant's layout.
+#[derive(Debug, Clone)]
+pub struct MoveIds {
+    from_red: rinshan_engine::env::ActionMap,
+    /// The variant's kita, `ACTION_ABSENT` for four players.
+    kita: u32,
+}
+
+impl MoveIds {
+    /// The ids of `variant`.
+    pub fn new(variant: Variant) -> MoveIds {
+        MoveIds {
+            from_red: rinshan_engine::env::ActionMap::new(Variant::Red, variant),
+            kita: rinshan_engine::with_variant!(variant, v => v::ACTION_KITA),
+        }
+    }
+
+    /// The variant's id of the plan's `action`; `None` where the variant has no such action.
+    pub fn get(&self, action: u32) -> Option<u32> {
+        match action {
+            KITA => (self.kita != k::ACTION_ABSENT).then_some(self.kita),
+            _ => self.from_red.get(action),
+        }
+    }
+}
+
 /// One decision of the logged game.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Move {
     /// The seat deciding.
     pub seat: usize,
-    /// Action id of the red variant.
+    /// Action id of the red variant, or [`KITA`].
     pub action: u32,
     /// A claim on a discard (or on a kan tile): the engine may ask other seats first.
     pub claim: bool,
@@ -48,7 +77,7 @@ pub enum Played {
         /// A replacement draw after a kan.
         replacement: bool,
     },
-    /// Seat's discard entry (a discard, riichi, a kan, or the `0` after an open kan).
+    /// Seat's discard entry (a discard, riichi, a kan, a kita, or the `0` after an open kan).
     Discard {
         /// The seat.
         seat: usize,
@@ -60,7 +89,8 @@ pub enum Played {
 /// A round ready to replay.
 #[derive(Debug, Clone)]
 pub struct Plan {
-    /// The tiles in the engine's dealing order (`WALL_*` in rules/kernel/game_state.rs).
+    /// The tiles in the engine's dealing order (`WALL_*` in rules/kernel/game_round.rs; three
+    /// players fill the first 108).
     pub wall: [Tile; 136],
     /// The logged decisions in the order of play.
     pub moves: Vec<Move>,
@@ -76,8 +106,9 @@ impl Plan {
     /// (the logged ones are, [`crate::tenhou::log`] checks); with them, a round that shows four
     /// black copies of a five cannot be dealt.
     pub fn deal(&self, round: &Round, variant: Variant) -> Result<rinshan_engine::env::Deal, String> {
+        let in_play = |t: Tile| variant.tile_in_play(u32::from(t.kind().index() as u8));
         let wall = if variant.red_fives() {
-            for red in (34..37).filter_map(Tile::from_value) {
+            for red in (34..37).filter_map(Tile::from_value).filter(|&t| in_play(t)) {
                 if !self.wall.contains(&red) {
                     let black = Tile::plain(red.kind());
                     return Err(format!(
@@ -90,7 +121,7 @@ impl Plan {
             self.wall.map(|t| Tile::plain(t.kind()))
         };
         Ok(rinshan_engine::env::Deal {
-            round: round.kyoku,
+            round: round.table_round(),
             dealer: round.dealer() as u32,
             honba: round.honba,
             sticks: round.sticks,
@@ -158,18 +189,19 @@ impl<'a> Walker<'a> {
 
     /// The rons on the tile seat `p` just gave up (its last discard or kan), if the round ended so.
     fn rons_on(&self, p: usize) -> Vec<usize> {
+        let seats = self.round.seats;
         if self.discarded[p] != self.round.discards[p].len() {
             return Vec::new();
         }
         match &self.round.outcome {
             Outcome::Wins(wins) => {
-                let mut seats: Vec<usize> = wins
+                let mut winners: Vec<usize> = wins
                     .iter()
                     .filter(|w| !w.tsumo && w.from == p)
                     .map(|w| w.winner)
                     .collect();
-                seats.sort_by_key(|&q| (q + 4 - p) % 4);
-                seats
+                winners.sort_by_key(|&q| (q + seats - p) % seats);
+                winners
             }
             // The log of a triple ron names no discarder: the ronned tile is the round's last
             // one, so every other seat's entries are used up by then (a seat's last discard
@@ -191,16 +223,17 @@ impl<'a> Walker<'a> {
     /// The seat that calls tile `t` discarded by `p`, if any: the seats whose next draw entry
     /// calls it (pon and kan first, then chi) and nobody are the options of a decision.
     fn caller(&mut self, p: usize, t: Tile) -> Option<(usize, Draw)> {
+        let seats = self.round.seats;
         let mut callers = Vec::new();
         let mut chi = None;
-        for j in 1..4 {
-            let q = (p + j) % 4;
+        for j in 1..seats {
+            let q = (p + j) % seats;
             let Some(d) = self.round.draws[q].get(self.drawn[q]) else {
                 continue;
             };
             match d {
                 Draw::Pon { called, from, .. } | Draw::OpenKan { called, from, .. }
-                    if from.seat_of(q) == p && *called == t =>
+                    if from.seat_of(q, seats) == p && *called == t =>
                 {
                     callers.push((q, *d));
                 }
@@ -261,6 +294,18 @@ impl<'a> Walker<'a> {
                     }
                     return Ok(Some((p, true)));
                 }
+                Discard::Kita => {
+                    self.push(p, KITA, false, "kita".into());
+                    let rons = self.rons_on(p);
+                    if !rons.is_empty() {
+                        self.ronned = Some(p);
+                        for q in rons {
+                            self.push(q, k::ACTION_RON, true, "ron on a kita".into());
+                        }
+                        return Ok(None);
+                    }
+                    return Ok(Some((p, true)));
+                }
                 Discard::Nothing => {
                     return Err(format!(
                         "discards of seat {p}, entry {at}: `0` stands only after an open kan"
@@ -298,7 +343,7 @@ impl<'a> Walker<'a> {
                 return Ok(None);
             }
             let Some((q, call)) = self.caller(p, discarded) else {
-                return Ok(Some(((p + 1) % 4, false)));
+                return Ok(Some(((p + 1) % self.round.seats, false)));
             };
             self.drawn[q] += 1;
             self.order.push(Played::Draw {

@@ -4,8 +4,8 @@
 //! round is played under the game's own rules ([`Game::variant`]), and actions are its ids.
 
 use super::log::{round_name, Game};
-use super::plan::plan;
-use rinshan_engine::env::{ActionMap, Config, Env};
+use super::plan::{plan, MoveIds};
+use rinshan_engine::env::{Config, Env};
 use rinshan_engine::generated::kernel::GameState;
 use rinshan_engine::{with_variant, Variant};
 
@@ -61,7 +61,7 @@ pub fn round_replay(game: &Game, round: usize) -> Result<(Vec<Position>, Option<
         ..Config::new(game.variant, 1)
     })
     .map_err(|e| e.to_string())?;
-    let from_red = ActionMap::new(Variant::Red, game.variant);
+    let from_red = MoveIds::new(game.variant);
     let pass = with_variant!(game.variant, v => v::ACTION_PASS);
     env.reset().map_err(|e| e.to_string())?;
     let deal = p.deal(r, game.variant).map_err(|e| format!("{where_}: {e}"))?;

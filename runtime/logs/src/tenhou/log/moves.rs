@@ -4,7 +4,7 @@
 use serde_json::Value;
 
 use super::value::show;
-use rinshan_engine::tile::Tile;
+use rinshan_engine::tile::{Tile, TileType};
 
 /// Where a called tile came from, relative to the caller.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -18,12 +18,22 @@ pub enum Rel {
 }
 
 impl Rel {
-    /// The absolute seat this direction points at, seen from seat `me`.
-    pub fn seat_of(self, me: usize) -> usize {
+    /// The absolute seat this direction points at, seen from seat `me` at a table of `seats`
+    /// (three players have no one across).
+    pub fn seat_of(self, me: usize, seats: usize) -> usize {
         match self {
-            Rel::Left => (me + 3) % 4,
-            Rel::Across => (me + 2) % 4,
-            Rel::Right => (me + 1) % 4,
+            Rel::Left => (me + seats - 1) % seats,
+            Rel::Across => (me + 2) % seats,
+            Rel::Right => (me + 1) % seats,
+        }
+    }
+
+    /// The direction of seat `other` seen from seat `me` at a table of `seats`.
+    pub fn between(me: usize, other: usize, seats: usize) -> Rel {
+        match (other + seats - me) % seats {
+            1 => Rel::Right,
+            2 if seats == 4 => Rel::Across,
+            _ => Rel::Left,
         }
     }
 }
@@ -97,19 +107,26 @@ pub enum Discard {
     },
     /// The `0` that stands for the missing discard after an open kan.
     Nothing,
+    /// Kita: a North set aside (three players), written `f44`; the next draw is the replacement.
+    Kita,
 }
 
 impl Discard {
-    /// Every tile the entry names (none for [`Discard::Tsumogiri`], `r60` and [`Discard::Nothing`]).
+    /// Every tile the entry names (none for [`Discard::Tsumogiri`], `r60` and [`Discard::Nothing`];
+    /// the North of [`Discard::Kita`]).
     pub fn tiles(&self) -> Vec<Tile> {
         match *self {
             Discard::Tile(t) | Discard::Riichi(Some(t)) => vec![t],
             Discard::AddedKan { added, pon, .. } => vec![added, pon[0], pon[1], pon[2]],
             Discard::ClosedKan { tiles } => tiles.to_vec(),
+            Discard::Kita => vec![Tile::plain(TileType::NORTH)],
             Discard::Tsumogiri | Discard::Riichi(None) | Discard::Nothing => Vec::new(),
         }
     }
 }
+
+/// How a kita stands among the discards (the convention of the tenhou.net/6 three-player logs).
+pub(crate) const KITA: &str = "f44";
 
 pub(super) fn tile(v: &Value) -> Result<Tile, String> {
     let tile = v
@@ -273,6 +290,9 @@ fn parse_call(s: &str) -> Result<Draw, String> {
 }
 
 fn parse_kan_or_riichi(s: &str) -> Result<Discard, String> {
+    if s == KITA {
+        return Ok(Discard::Kita);
+    }
     if let Some(rest) = s.strip_prefix('r') {
         if rest == "60" {
             return Ok(Discard::Riichi(None));
@@ -304,7 +324,7 @@ fn parse_kan_or_riichi(s: &str) -> Result<Discard, String> {
             Ok(Discard::ClosedKan { tiles })
         }
         other => Err(format!(
-            "{other:?} is not a discard letter (r riichi, k added kan, a closed kan)"
+            "{other:?} is not a discard letter (r riichi, k added kan, a closed kan, f44 kita)"
         )),
     }
 }

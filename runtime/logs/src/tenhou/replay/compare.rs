@@ -84,11 +84,11 @@ fn compare_win(variant: Variant, w: &LoggedWin, r: &WinRecord) -> Option<(String
     ))
 }
 
-fn draw_matches(log: LoggedDraw, table: &Table) -> bool {
+fn draw_matches(log: LoggedDraw, table: &Table, seats: usize) -> bool {
     let tenpai = table.draw.tenpai.iter().filter(|&&t| t).count();
     match (log, table.draw.kind) {
-        (LoggedDraw::Exhaustive, Some(DrawKind::Exhaustive)) => (1..4).contains(&tenpai),
-        (LoggedDraw::AllTenpai, Some(DrawKind::Exhaustive)) => tenpai == 4,
+        (LoggedDraw::Exhaustive, Some(DrawKind::Exhaustive)) => (1..seats).contains(&tenpai),
+        (LoggedDraw::AllTenpai, Some(DrawKind::Exhaustive)) => tenpai == seats,
         (LoggedDraw::NoTenpai, Some(DrawKind::Exhaustive)) => tenpai == 0,
         (LoggedDraw::Nagashi, Some(DrawKind::Nagashi)) => true,
         (LoggedDraw::Kyuushu, Some(DrawKind::Kyuushu)) => true,
@@ -135,7 +135,7 @@ fn log_change(r: &Round, plan: &Plan, last: bool, stick: u32) -> [i64; 4] {
     if last && !won {
         let sticks = i64::from(r.sticks) + plan.riichi_paid.iter().map(|&x| i64::from(x)).sum::<i64>();
         let scores: [i64; 4] = std::array::from_fn(|p| i64::from(r.scores[p]) + change[p]);
-        let top = (0..4).fold(0, |best, p| if scores[p] > scores[best] { p } else { best });
+        let top = (0..r.seats).fold(0, |best, p| if scores[p] > scores[best] { p } else { best });
         change[top] += stick * sticks;
     }
     change
@@ -183,7 +183,7 @@ pub(super) fn finish_round(run: &mut Run, step: &Step, i: usize, table: &Table, 
         Outcome::Draw { kind, .. } => {
             report.draws += 1;
             let drawn = ev & (events::EXHAUSTIVE_DRAW | events::ABORTIVE_DRAW) != 0;
-            if drawn && draw_matches(*kind, table) {
+            if drawn && draw_matches(*kind, table, r.seats) {
                 report.draws_matching += 1;
             } else {
                 let m = run.mismatch("draw kind", format!("{kind:?}"), engine_outcome(step, i, table));
@@ -217,7 +217,7 @@ pub(super) fn finish_round(run: &mut Run, step: &Step, i: usize, table: &Table, 
     match next {
         Some(n) => {
             report.tables += 1;
-            let log_table = (n.kyoku, n.dealer() as u32, n.honba, n.sticks, n.scores);
+            let log_table = (n.table_round(), n.dealer() as u32, n.honba, n.sticks, n.scores);
             let ours = (table.round, table.dealer, table.honba, table.sticks, table.scores);
             if table.over {
                 let m = run.mismatch(

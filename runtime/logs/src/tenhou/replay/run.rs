@@ -2,8 +2,8 @@
 
 use super::report::{outcome_name, Mismatch, Report};
 use crate::tenhou::log::{round_name, Game, Round};
-use crate::tenhou::plan::{plan, Plan};
-use rinshan_engine::env::{ActionMap, Deal, Step};
+use crate::tenhou::plan::{plan, MoveIds, Plan};
+use rinshan_engine::env::{Deal, Step};
 use rinshan_engine::{with_variant, Variant};
 
 /// Where one game's replay stands.
@@ -19,8 +19,8 @@ pub(super) struct Run<'g> {
     pub(super) finished: bool,
     /// The rules the game is replayed under.
     pub(super) variant: Variant,
-    /// The plan's moves (red's action ids) in the variant's ids.
-    from_red: ActionMap,
+    /// The plan's moves (red's action ids and kita) in the variant's ids.
+    from_red: MoveIds,
     /// The variant's pass.
     pass: u32,
 }
@@ -36,7 +36,7 @@ impl<'g> Run<'g> {
             change: [0; 4],
             finished: false,
             variant,
-            from_red: ActionMap::new(Variant::Red, variant),
+            from_red: MoveIds::new(variant),
             pass: with_variant!(variant, v => v::ACTION_PASS),
         }
     }

@@ -6,18 +6,23 @@
 //! state before; the next round's wall and table from the state after.
 
 use crate::tenhou::log::{round_name, Discard, Game, LoggedDraw, LoggedWin, Outcome, Round};
-use crate::tenhou::plan::wall::{DORA, RINSHAN, URA};
-use crate::tenhou::plan::Played;
+use crate::tenhou::plan::{Played, KITA};
 use rinshan_engine::env::{events, ActionMap, DrawRecord, WinRecord};
 use rinshan_engine::generated::kernel::{self, GameState};
 // Red's ids: the recorder reads every variant's moves in red's layout (`to_red`).
 use rinshan_engine::generated::red as k;
-use rinshan_engine::Variant;
+use rinshan_engine::{with_variant, Variant, WallLayout};
 
 use super::outcome::{draw_outcome, limit_of, outcome_deltas, pao_share, points_text, yaku_list, Scoring};
 use super::round::{meld_count, Current};
 
 use events::ROUND_OVER;
+
+/// Engine seats' `d` in the log's seats (East 1's dealer `first` is the log's seat 0); the seats
+/// past the table's stay 0.
+fn in_log_seats(d: &[i32; 4], first: usize, seats: usize) -> [i32; 4] {
+    std::array::from_fn(|i| if i < seats { d[(i + first) % seats] } else { 0 })
+}
 
 /// The round being played, for a live event stream: seats are the log's (East 1's dealer is 0).
 #[derive(Debug, Clone)]
@@ -47,6 +52,10 @@ pub struct GameRecorder {
     scoring: Scoring,
     /// The variant's action ids in red's layout, in which the log's moves are read.
     to_red: ActionMap,
+    /// The variant's kita, which red's layout has not.
+    kita: u32,
+    /// Where the variant's wall holds the indicators.
+    wall: WallLayout,
 }
 
 impl GameRecorder {
@@ -58,27 +67,32 @@ impl GameRecorder {
 
     /// As [`GameRecorder::new`], for a game of `variant`.
     pub fn for_variant(state: &GameState, variant: Variant) -> Result<GameRecorder, String> {
-        if variant.seats() != 4 {
-            return Err(format!(
-                "{variant} is a three-player game: its logs (kita, three seats) are not written yet; \
-                 four-player rule sets only"
-            ));
-        }
-        let rule = match (state.mode, variant.red_fives()) {
-            (kernel::MODE_HALF, true) => "鳳南喰赤",
-            (kernel::MODE_HALF, false) => "鳳南喰",
-            (kernel::MODE_EAST, true) => "鳳東喰赤",
-            (kernel::MODE_EAST, false) => "鳳東喰",
+        // Tenhou names its three-player rules 三.. (`三鳳南喰赤`).
+        let rule = match (variant.seats(), state.mode, variant.red_fives()) {
+            (4, kernel::MODE_HALF, true) => "鳳南喰赤",
+            (4, kernel::MODE_HALF, false) => "鳳南喰",
+            (4, kernel::MODE_EAST, true) => "鳳東喰赤",
+            (4, kernel::MODE_EAST, false) => "鳳東喰",
+            (_, kernel::MODE_HALF, true) => "三鳳南喰赤",
+            (_, kernel::MODE_HALF, false) => "三鳳南喰",
+            (_, kernel::MODE_EAST, true) => "三鳳東喰赤",
+            (_, kernel::MODE_EAST, false) => "三鳳東喰",
             _ => return Err("Tenhou logs are east or half games: a one-hand game has no Tenhou rule".into()),
         };
+        let names = match variant.seats() {
+            3 => ["A", "B", "C", ""],
+            _ => ["A", "B", "C", "D"],
+        };
         Ok(GameRecorder {
-            names: ["A", "B", "C", "D"].map(String::from),
+            names: names.map(String::from),
             rule,
             rounds: Vec::new(),
-            current: Some(Current::start(state)?),
+            current: Some(Current::start(state, variant.seats())?),
             dropped: 0,
             scoring: Scoring::of(variant),
             to_red: ActionMap::new(variant, Variant::Red),
+            kita: with_variant!(variant, v => v::ACTION_KITA),
+            wall: variant.wall(),
         })
     }
 
@@ -101,7 +115,8 @@ impl GameRecorder {
     pub fn in_play(&self) -> Option<InPlay<'_>> {
         let cur = self.current.as_ref()?;
         let mut round = cur.round.clone();
-        round.dora = (0..cur.dora).filter_map(|i| cur.wall_tile(DORA + i).ok()).collect();
+        let dora = self.wall.dora as usize;
+        round.dora = (0..cur.dora).filter_map(|i| cur.wall_tile(dora + i).ok()).collect();
         Some(InPlay {
             round,
             order: &cur.order,
@@ -139,7 +154,7 @@ impl GameRecorder {
 
     fn next_game(&mut self, after: &GameState) -> Result<(), String> {
         if after.auto_reset != 0 {
-            self.current = Some(Current::start(after)?);
+            self.current = Some(Current::start(after, self.scoring.variant.seats())?);
         }
         Ok(())
     }
@@ -159,9 +174,12 @@ impl GameRecorder {
                 .get(a)
                 .ok_or_else(|| format!("action {a} is not an action of {}", self.scoring.variant))
         };
-        let action = in_red(action)?;
         let p = b.current;
         let seat = cur.at(p);
+        if action == self.kita {
+            cur.kita(seat);
+        }
+        let action = if action == self.kita { KITA } else { in_red(action)? };
         let discards = k::ACTION_DISCARD..k::ACTION_DISCARD + k::ACTION_DISCARD_COUNT;
         let discard = discards.contains(&action) || action == k::ACTION_TSUMOGIRI;
         match action {
@@ -184,8 +202,10 @@ impl GameRecorder {
                     cur.call(b, q, choice)?;
                 }
             }
-            let drawn = if a.kans > b.kans {
-                Some((RINSHAN + b.kans as usize, true))
+            let variant = self.scoring.variant;
+            let (before, after) = (variant.drawn_replacements(b), variant.drawn_replacements(a));
+            let drawn = if after.len() > before.len() {
+                Some((after[before.len()] as usize, true))
             } else {
                 (a.next_draw > b.next_draw).then_some((b.next_draw as usize, false))
             };
@@ -212,7 +232,7 @@ impl GameRecorder {
             self.next_game(a)?;
             return Ok(Some(game));
         }
-        let next = Current::start(a)?;
+        let next = Current::start(a, self.scoring.variant.seats())?;
         self.check_next_table(&next, ronned_riichi)?;
         self.current = Some(next);
         Ok(None)
@@ -225,14 +245,15 @@ impl GameRecorder {
             return Ok(None);
         };
         let dealer = b.dealer as usize;
-        let round_wind = (b.round / 4 % 4) as usize;
+        let seats = cur.seats as usize;
+        let round_wind = (b.round as usize / seats) % 4;
         let mut ronned_riichi = None;
         let outcome = if a.events & (events::RON | events::TSUMO) != 0 {
             let tsumo = a.events & events::TSUMO != 0;
             let from = if tsumo { b.current } else { b.claim_from };
             // Nearest the discarder first: Tenhou's order, and the one who takes honba and sticks.
-            let winners: Vec<u32> = (1..5)
-                .map(|j| (from + j) % 4)
+            let winners: Vec<u32> = (1..=cur.seats)
+                .map(|j| (from + j) % cur.seats)
                 .filter(|&w| a.winners >> w & 1 == 1)
                 .collect();
             let mut wins = Vec::new();
@@ -246,9 +267,9 @@ impl GameRecorder {
                 let table = if n == 0 { (b.honba, b.sticks) } else { (0, 0) };
                 let pao = liable.map(|(seat, yaku)| (seat as usize, pao_share(scoring.variant, &rec, yaku)));
                 let d = scoring.win_deltas(w as usize, Some(from as usize), dealer, pay, table, pao);
-                let seat_wind = (w as usize + 4 - dealer) % 4;
+                let seat_wind = (w as usize + seats - dealer) % seats;
                 wins.push(LoggedWin {
-                    deltas: std::array::from_fn(|i| d[(i + cur.first as usize) % 4]),
+                    deltas: in_log_seats(&d, cur.first as usize, seats),
                     winner: cur.at(w),
                     from: cur.at(from),
                     pao: cur.at(liable.map_or(w, |(seat, _)| seat)),
@@ -266,22 +287,22 @@ impl GameRecorder {
             let riichi = |w: &LoggedWin| w.yaku.iter().any(|y| y.name == "riichi" || y.name == "double_riichi");
             if wins.iter().any(riichi) {
                 cur.round.ura = (0..cur.dora)
-                    .map(|i| cur.wall_tile(URA + i))
+                    .map(|i| cur.wall_tile(self.wall.ura as usize + i))
                     .collect::<Result<_, _>>()?;
             }
             Outcome::Wins(wins)
         } else {
             let rec = DrawRecord::decode(a.draw_kind);
-            let (kind, deltas) =
-                draw_outcome(&rec, dealer).ok_or("the round ended in a draw the state does not name")?;
-            let deltas = deltas.map(|d| std::array::from_fn(|i| d[(i + cur.first as usize) % 4]));
+            let (kind, deltas) = draw_outcome(&rec, dealer, self.scoring.noten_pool, seats)
+                .ok_or("the round ended in a draw the state does not name")?;
+            let deltas = deltas.map(|d| in_log_seats(&d, cur.first as usize, seats));
             if kind == LoggedDraw::TripleRon {
                 ronned_riichi = Some(cur.at(b.claim_from));
             }
             Outcome::Draw { kind, deltas }
         };
         cur.round.dora = (0..cur.dora)
-            .map(|i| cur.wall_tile(DORA + i))
+            .map(|i| cur.wall_tile(self.wall.dora as usize + i))
             .collect::<Result<_, _>>()?;
         cur.round.outcome = outcome;
         cur.round.line = self.rounds.len() + 1;

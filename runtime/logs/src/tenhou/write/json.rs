@@ -103,6 +103,7 @@ pub(super) fn discard_value(d: &Discard) -> Value {
         } => written('k', own_before(from, 2), &[added, called], &[a, b]).into(),
         Discard::ClosedKan { tiles } => written('a', 3, &tiles[3..], &tiles[..3]).into(),
         Discard::Nothing => 0.into(),
+        Discard::Kita => crate::tenhou::log::KITA.into(),
     }
 }
 
@@ -128,7 +129,7 @@ fn outcome_value(r: &Round) -> Value {
 
 /// `[winner, from, pao, "30符4飜7700点", "立直(1飜)", ..]`.
 fn win_info(r: &Round, w: &LoggedWin) -> Value {
-    let seat_wind = (w.winner + 4 - r.dealer()) % 4;
+    let seat_wind = (w.winner + r.seats - r.dealer()) % r.seats;
     let round_wind = (r.kyoku / 4 % 4) as usize;
     let mut items: Vec<Value> = vec![w.winner.into(), w.from.into(), w.pao.into(), w.points.as_str().into()];
     items.extend(w.yaku.iter().map(|y| Value::from(yaku_text(y, seat_wind, round_wind))));

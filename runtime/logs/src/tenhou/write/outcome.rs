@@ -26,6 +26,10 @@ pub(crate) struct Scoring {
     pub(crate) stick: u32,
     /// `[liability] pao_pays_honba`.
     pao_pays_honba: bool,
+    /// `[draws] noten_pool_points`: what the noten seats pay the tenpai ones together.
+    pub(crate) noten_pool: u32,
+    /// Players at the table: a tsumo is paid by the others there are.
+    seats: usize,
 }
 
 impl std::fmt::Debug for Scoring {
@@ -44,6 +48,8 @@ impl Scoring {
             honba_tsumo: v::HONBA_TSUMO_POINTS,
             stick: v::RIICHI_STICK_POINTS,
             pao_pays_honba: v::PAO_PAYS_HONBA,
+            noten_pool: v::NOTEN_POOL_POINTS,
+            seats: v::SEATS as usize,
         })
     }
 
@@ -117,7 +123,7 @@ impl Scoring {
                 }
             }
             (Payment::Tsumo { dealer: share, others }, _) => {
-                for p in (0..4).filter(|&p| p != winner) {
+                for p in (0..self.seats).filter(|&p| p != winner) {
                     let value = match share {
                         Some(d) if p == dealer => d,
                         _ => others,
@@ -209,25 +215,37 @@ pub(super) fn yaku_list(variant: Variant, rec: &WinRecord, seat_wind: usize, rou
     yaku
 }
 
-/// A round without a win, in engine seats (`dealer` too): the name and the payments Tenhou
-/// lists (tenpai payments for 1-3 tenpai seats, nagashi mangan as a mangan tsumo per seat).
-pub(super) fn draw_outcome(rec: &DrawRecord, dealer: usize) -> Option<(LoggedDraw, Option<[i32; 4]>)> {
+/// A round without a win at a table of `seats`, in engine seats (`dealer` too): the name and the
+/// payments Tenhou lists (the noten `pool` shared for some tenpai seats, nagashi mangan as a
+/// mangan tsumo per seat).
+pub(super) fn draw_outcome(
+    rec: &DrawRecord,
+    dealer: usize,
+    pool: u32,
+    seats: usize,
+) -> Option<(LoggedDraw, Option<[i32; 4]>)> {
     let kind = match rec.kind? {
         DrawKind::Exhaustive => {
-            let tenpai = rec.tenpai.iter().filter(|&&t| t).count() as i32;
+            let tenpai = rec.tenpai.iter().filter(|&&t| t).count();
+            let pool = pool as i32;
             return Some(match tenpai {
                 0 => (LoggedDraw::NoTenpai, None),
-                4 => (LoggedDraw::AllTenpai, None),
+                n if n == seats => (LoggedDraw::AllTenpai, None),
                 n => {
-                    let deltas = rec.tenpai.map(|t| if t { 3000 / n } else { -3000 / (4 - n) });
+                    let (won, paid) = (pool / n as i32, -pool / (seats - n) as i32);
+                    let deltas = std::array::from_fn(|p| match (p < seats, rec.tenpai[p]) {
+                        (false, _) => 0,
+                        (true, true) => won,
+                        (true, false) => paid,
+                    });
                     (LoggedDraw::Exhaustive, Some(deltas))
                 }
             });
         }
         DrawKind::Nagashi => {
             let mut deltas = [0i32; 4];
-            for w in (0..4).filter(|&w| rec.nagashi[w]) {
-                for p in (0..4).filter(|&p| p != w) {
+            for w in (0..seats).filter(|&w| rec.nagashi[w]) {
+                for p in (0..seats).filter(|&p| p != w) {
                     let amount = if p == dealer || w == dealer { 4000 } else { 2000 };
                     deltas[p] -= amount;
                     deltas[w] += amount;

@@ -2,8 +2,7 @@
 //! draws, calls, discards and kans Tenhou writes, in Tenhou's seats (East 1's dealer is seat 0)
 //! and tile order.
 
-use crate::tenhou::log::{Discard, Draw, LoggedDraw, Outcome, Rel, Round};
-use crate::tenhou::plan::wall::LIVE_START;
+use crate::tenhou::log::{tenhou_kyoku, Discard, Draw, LoggedDraw, Outcome, Rel, Round};
 use crate::tenhou::plan::Played;
 use rinshan_engine::generated::kernel::{self, GameState};
 use rinshan_engine::generated::red as k;
@@ -18,6 +17,8 @@ pub(super) struct Current {
     pub(super) wall: [u8; 136],
     /// East 1's dealer: the engine's seat `p` is the log's seat `p - first`.
     pub(super) first: u32,
+    /// Players at the table.
+    pub(super) seats: u32,
     /// Declared riichi whose discard has not been made yet, and riichi discards made (log seats).
     pub(super) riichi_next: [bool; 4],
     pub(super) riichi_made: [bool; 4],
@@ -64,29 +65,33 @@ fn sort_tiles(tiles: &mut [Tile]) {
 }
 
 impl Current {
-    /// The round `s` has just dealt (the dealer has drawn its first tile and not acted yet).
-    pub(super) fn start(s: &GameState) -> Result<Current, String> {
+    /// The round `s` has just dealt (the dealer has drawn its first tile and not acted yet), at a
+    /// table of `seats`.
+    pub(super) fn start(s: &GameState, seats: u32) -> Result<Current, String> {
         let wall = wall_of(s);
         let dealer = s.dealer;
-        if s.next_draw != LIVE_START as u32 + 1 || s.drawn != u32::from(wall[LIVE_START]) || s.current != dealer {
+        let live_start = crate::tenhou::plan::wall::layout(seats as usize).live_start as usize;
+        if s.next_draw != live_start as u32 + 1 || s.drawn != u32::from(wall[live_start]) || s.current != dealer {
             return Err("the state is not at the start of a round (record from a reset or a deal)".into());
         }
-        let first = (dealer + 4 - s.round % 4) % 4;
-        let at = |p: u32| ((p + 4 - first) % 4) as usize;
+        let first = (dealer + seats - s.round % seats) % seats;
+        let at = |p: u32| ((p + seats - first) % seats) as usize;
         let mut hands: [Vec<Tile>; 4] = Default::default();
-        for j in 0..4 {
+        for j in 0..seats as usize {
             let mut hand = (0..13)
                 .map(|i| tile(u32::from(wall[j * 13 + i])))
                 .collect::<Result<Vec<_>, _>>()?;
             sort_tiles(&mut hand);
-            hands[at((dealer + j as u32) % 4)] = hand;
+            hands[at((dealer + j as u32) % seats)] = hand;
         }
         let mut draws: [Vec<Draw>; 4] = Default::default();
-        draws[at(dealer)].push(Draw::Tile(tile(u32::from(wall[LIVE_START]))?));
-        let scores = std::array::from_fn(|i| s.scores[(i + first as usize) % 4]);
+        draws[at(dealer)].push(Draw::Tile(tile(u32::from(wall[live_start]))?));
+        let n = seats as usize;
+        let scores = std::array::from_fn(|i| if i < n { s.scores[(i + first as usize) % n] } else { 0 });
         let round = Round {
             line: 0,
-            kyoku: s.round,
+            seats: n,
+            kyoku: tenhou_kyoku(s.round, n),
             honba: s.honba,
             sticks: s.sticks,
             scores,
@@ -105,13 +110,14 @@ impl Current {
             round,
             wall,
             first,
+            seats,
             riichi_next: [false; 4],
             riichi_made: [false; 4],
             pons: Vec::new(),
             dora: s.dora_revealed as usize,
             order: vec![Played::Draw {
                 seat: at(dealer),
-                draw: Draw::Tile(tile(u32::from(wall[LIVE_START]))?),
+                draw: Draw::Tile(tile(u32::from(wall[live_start]))?),
                 replacement: false,
             }],
         })
@@ -119,7 +125,7 @@ impl Current {
 
     /// The log's seat of engine seat `p`.
     pub(super) fn at(&self, p: u32) -> usize {
-        ((p + 4 - self.first) % 4) as usize
+        ((p + self.seats - self.first) % self.seats) as usize
     }
 
     pub(super) fn wall_tile(&self, i: usize) -> Result<Tile, String> {
@@ -165,6 +171,11 @@ impl Current {
         Ok(())
     }
 
+    /// A kita (North set aside) by log seat `p`.
+    pub(super) fn kita(&mut self, p: usize) {
+        self.discard_entry(p, Discard::Kita);
+    }
+
     /// A closed or added kan of type `t` by engine seat `p`.
     pub(super) fn self_kan(&mut self, b: &GameState, p: u32, t: u32) -> Result<(), String> {
         let (black, red) = copies(t)?;
@@ -196,11 +207,7 @@ impl Current {
         let called = tile(b.claim_tile)?;
         let t = u32::from(called.kind());
         let seat = self.at(q);
-        let from = match (b.claim_from + 4 - q) % 4 {
-            1 => Rel::Right,
-            2 => Rel::Across,
-            _ => Rel::Left,
-        };
+        let from = Rel::between(q as usize, b.claim_from as usize, self.seats as usize);
         let (black, red) = copies(t)?;
         let entry = match choice {
             k::ACTION_PON | k::ACTION_PON_RED => {
