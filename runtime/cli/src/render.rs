@@ -122,6 +122,7 @@ fn write(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
 
 fn log_board(path: &Path, round: usize, step: usize) -> Result<Board, CliError> {
     let game = read_log(path).map_err(CliError::input)?;
+    rinshan_render::html::drawable(&game).map_err(CliError::input)?;
     let (positions, end) = round_replay(&game, round).map_err(CliError::input)?;
     let with_names = |mut b: Board| {
         b.names = game.names.clone();

@@ -362,12 +362,6 @@ pub fn run(args: Args) -> Result<(), CliError> {
 
 /// Why games cannot be exported as asked; creates the folder.
 fn check_export(dir: &Path, config: &Config) -> Result<(), CliError> {
-    if config.variant.seats() != 4 {
-        return Err(CliError::input(format!(
-            "--export: {} is a three-player game, whose logs (kita, three seats) are not written yet",
-            config.variant
-        )));
-    }
     if config.mode == Mode::Single {
         return Err(CliError::input(
             "--export needs --mode east or half: Tenhou has no one-hand games",

@@ -34,9 +34,21 @@ struct Data {
     sprites: Vec<(String, String)>,
 }
 
+/// Whether the board can draw `game`'s table: it has four seats.
+pub fn drawable(game: &Game) -> Result<(), String> {
+    match game.variant.seats() {
+        4 => Ok(()),
+        n => Err(format!(
+            "{}: a {n}-player game ({}); its table is not drawn yet, the board has four seats",
+            game.path, game.variant
+        )),
+    }
+}
+
 /// The boards of every decision of `game` (a tenhou.net/6 log), with a result board after each
 /// round.
 pub fn frames(game: &Game) -> Result<Vec<(String, Board)>, String> {
+    drawable(game)?;
     let mut out = Vec::new();
     for r in 0..game.rounds.len() {
         let (positions, end) = round_replay(game, r)?;

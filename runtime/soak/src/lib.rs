@@ -103,8 +103,7 @@ const REPLAY_BATCH: usize = 64;
 pub fn run(soak: &Soak, progress: &(dyn Fn(u64) + Sync)) -> Outcome {
     let done = AtomicU64::new(0);
     let starting = soak.variant.starting_points() as i32;
-    // Three-player games have no log writer yet: they are played and checked, not written.
-    let logged = soak.mode != Mode::Single && soak.variant.seats() == 4;
+    let logged = soak.mode != Mode::Single;
     let chunks: Vec<Outcome> = (0..soak.games)
         .collect::<Vec<u64>>()
         .par_chunks(REPLAY_BATCH)

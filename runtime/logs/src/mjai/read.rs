@@ -20,6 +20,21 @@ pub fn is_mjai(text: &str) -> bool {
     })
 }
 
+/// Why a three-player MJAI log stops the reader.
+pub(crate) const THREE_PLAYERS_UNREAD: &str =
+    "a three-player game (kita, three seats): rinshan writes three-player MJAI logs but does not read them yet; \
+     its tenhou.net/6 logs replay";
+
+/// Whether an event's per-seat lists hold three seats.
+fn lists_three_seats(line: &str) -> bool {
+    let Ok(v) = serde_json::from_str::<serde_json::Value>(line) else {
+        return false;
+    };
+    ["names", "scores", "tehais"]
+        .iter()
+        .any(|k| v.get(k).and_then(serde_json::Value::as_array).is_some_and(|l| l.len() == 3))
+}
+
 /// Reads the text of an MJAI log; `path` only names it in messages.
 pub fn parse_game(path: &str, text: &str) -> Result<Game, LogError> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
@@ -32,10 +47,15 @@ pub fn parse_game(path: &str, text: &str) -> Result<Game, LogError> {
             let position = format!(" at line {} column {}", e.line(), e.column());
             let full = e.to_string();
             let message = full.strip_suffix(&position).unwrap_or(&full).to_string();
+            let message = if lists_three_seats(line) {
+                THREE_PLAYERS_UNREAD.to_string()
+            } else {
+                format!("not an MJAI event: {message}")
+            };
             LogError {
                 line: Some(index + 1),
                 column: u32::try_from(e.column()).ok(),
-                ..file_error(path, format!("not an MJAI event: {message}"))
+                ..file_error(path, message)
             }
         })?;
         builder.event(event, index + 1)?;

@@ -289,6 +289,7 @@ impl Open {
                 };
                 self.draw = Some((kind, deltas));
             }
+            Event::Kita { .. } => return Err(super::read::THREE_PLAYERS_UNREAD.into()),
             _ => return Err(format!("{kind} is not an event of a round")),
         }
         Ok(())
