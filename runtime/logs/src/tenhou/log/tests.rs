@@ -98,8 +98,18 @@ fn tenhou_codes_map_to_our_values() {
 
 #[test]
 fn directions_and_round_names() {
-    assert_eq!([Rel::Left, Rel::Across, Rel::Right].map(|r| r.seat_of(0)), [3, 2, 1]);
-    assert_eq!([Rel::Left, Rel::Across, Rel::Right].map(|r| r.seat_of(3)), [2, 1, 0]);
+    assert_eq!([Rel::Left, Rel::Across, Rel::Right].map(|r| r.seat_of(0, 4)), [3, 2, 1]);
+    assert_eq!([Rel::Left, Rel::Across, Rel::Right].map(|r| r.seat_of(3, 4)), [2, 1, 0]);
+    // Three players: the seat before 0 is 2, and no one sits across.
+    assert_eq!([Rel::Left, Rel::Right].map(|r| r.seat_of(0, 3)), [2, 1]);
+    assert_eq!([Rel::Left, Rel::Right].map(|r| r.seat_of(2, 3)), [1, 0]);
+    for seats in [3, 4] {
+        for me in 0..seats {
+            for other in (0..seats).filter(|&o| o != me) {
+                assert_eq!(Rel::between(me, other, seats).seat_of(me, seats), other, "{me} {other} {seats}");
+            }
+        }
+    }
     assert_eq!(round_name(0, 0), "East 1, 0 honba");
     assert_eq!(round_name(6, 2), "South 3, 2 honba");
     assert_eq!(round_name(8, 1), "West 1, 1 honba");
@@ -283,6 +293,7 @@ fn every_file_parses_with_the_expected_counts() {
                     Discard::AddedKan { from, .. } => count(format!("added kan {from:?}")),
                     Discard::ClosedKan { .. } => count("closed kan".into()),
                     Discard::Nothing => count("nothing".into()),
+                    Discard::Kita => count("kita".into()),
                 }
             }
         }
@@ -608,4 +619,43 @@ fn mutated_input_never_panics() {
             assert!(err.to_string().starts_with("fuzz.json"), "{err}");
         }
     }
+}
+
+/// A three-player record: Tenhou's `三` rule, seat 3 empty with score 0, kita as `f44`.
+fn sanma_record() -> Value {
+    json!({"title": ["", ""], "name": ["A", "B", "C", ""], "rule": {"disp": "三鳳南喰赤", "aka": 1}, "log": [[
+        [0, 0, 0], [35000, 35000, 35000, 0], [21], [],
+        [11, 11, 19, 19, 21, 22, 23, 24, 25, 26, 27, 28, 29], [44, 22], ["f44", 60],
+        [31, 32, 33, 34, 35, 36, 37, 38, 39, 41, 41, 42, 42], [], [],
+        [43, 43, 45, 45, 46, 46, 47, 47, 11, 19, 21, 21, 31], [], [],
+        [], [], [],
+        ["全員不聴"]
+    ]]})
+}
+
+#[test]
+fn three_player_records() {
+    let game = parse_game("s.json", &sanma_record().to_string()).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(game.variant, Variant::Sanma);
+    let r = &game.rounds[0];
+    assert_eq!((r.seats, r.table_round(), r.hands[3].len()), (3, 0, 0));
+    assert_eq!(r.discards[0], vec![Discard::Kita, Discard::Tsumogiri]);
+    // Tenhou numbers South 1 as 4 for three players too; the engine counts three rounds a wind.
+    assert_eq!(table_round(4, 3), 3);
+    assert_eq!(tenhou_kyoku(3, 3), 4);
+    let refused = |edit: &dyn Fn(&mut Value), words: &str| {
+        let mut record = sanma_record();
+        edit(&mut record);
+        let err = parse_game("s.json", &record.to_string()).expect_err(words);
+        assert!(err.to_string().contains(words), "{err}");
+    };
+    refused(&|r| r["log"][0][13] = json!([11, 11, 19, 19, 21, 22, 23, 24, 25, 26, 27, 28, 29]), "leave seat 3's hand");
+    refused(&|r| r["log"][0][1] = json!([35000, 35000, 34000, 1000]), "leave the fourth score 0");
+    refused(&|r| r["log"][0][0] = json!([3, 0, 0]), "kyoku 0-2, 4-6");
+    // A four-player game has no one to set North aside for it, and no three-player log plays
+    // under a four-player rule set.
+    refused(&|r| r["log"][0][6] = json!(["f45", 60]), "not a discard letter");
+    let mut game = game;
+    let err = game.play_under(Variant::Red).expect_err("three players under red");
+    assert!(err.contains("a 3-player log cannot be played under red, a 4-player game"), "{err}");
 }
