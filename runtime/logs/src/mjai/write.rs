@@ -121,7 +121,7 @@ pub(crate) fn round_events(round: &Round, out: &mut Vec<Event>) -> Result<(), St
                     walk.last_given
                 };
                 let ura = (!round.ura.is_empty()).then(|| pais(&round.ura));
-                out.push(hora(w, pai, ura));
+                out.push(hora(w, pai, ura, round.seats));
             }
         }
         Outcome::Draw { kind, deltas } => out.push(ryukyoku(*kind, *deltas)),
@@ -332,7 +332,7 @@ fn yaku_entry(y: &Yaku) -> (String, u32) {
     (y.name.to_string(), han)
 }
 
-fn hora(w: &LoggedWin, pai: Option<Tile>, ura: Option<Vec<Pai>>) -> Event {
+fn hora(w: &LoggedWin, pai: Option<Tile>, ura: Option<Vec<Pai>>, seats: usize) -> Event {
     let han_sum: u32 = w
         .yaku
         .iter()
@@ -348,7 +348,7 @@ fn hora(w: &LoggedWin, pai: Option<Tile>, ura: Option<Vec<Pai>>) -> Event {
         yakus: Some(w.yaku.iter().map(yaku_entry).collect()),
         fu: w.fu,
         fan: w.han.or((!yakuman).then_some(han_sum)),
-        hora_points: points_total(&w.points),
+        hora_points: points_total(&w.points, seats),
         pao: (w.pao != w.winner).then(|| seat(w.pao)),
     }
 }

@@ -207,9 +207,11 @@ pub(crate) fn our_yaku(name: &str) -> Option<&'static str> {
     YAKU.iter().find(|(_, ours)| *ours == name).map(|(_, ours)| *ours)
 }
 
-/// What a win's points text says the hand is worth before honba and sticks: a ron's payment,
-/// or a tsumo's payments summed (`500-1000点` from three seats, `2600点∀` from each of three).
-pub(crate) fn points_total(text: &str) -> Option<u32> {
+/// What a win's points text says the hand is worth before honba and sticks at a table of
+/// `seats`: a ron's payment, or a tsumo's payments summed (`500-1000点` from every other seat,
+/// the dealer paying the second amount; `2600点∀` from each: three seats of four, two of three).
+pub(crate) fn points_total(text: &str, seats: usize) -> Option<u32> {
+    let others = seats.checked_sub(1).and_then(|n| u32::try_from(n).ok())?;
     let rest = text.rsplit(['符', '飜']).next().unwrap_or(text);
     let rest = LIMITS
         .iter()
@@ -221,8 +223,8 @@ pub(crate) fn points_total(text: &str) -> Option<u32> {
     };
     let amount = amount.strip_suffix('点')?;
     match amount.split_once('-') {
-        Some((child, dealer)) => Some(2 * number(child).ok()? + number(dealer).ok()?),
-        None if each => Some(3 * number(amount).ok()?),
+        Some((child, dealer)) => Some((others - 1) * number(child).ok()? + number(dealer).ok()?),
+        None if each => Some(others * number(amount).ok()?),
         None => number(amount).ok(),
     }
 }
