@@ -846,11 +846,26 @@ fn mjsoul_mjai_logs_replay_in_riichienv_under_its_mahjong_soul_rules() {
     riichienv_replays("mjsoul", "mjsoul");
 }
 
-/// 40 half games of `variant` exported as MJAI and replayed in RiichiEnv under its `rule` preset.
-fn riichienv_replays(variant: &str, rule: &str) {
+/// Three players: RiichiEnv replays them under its Tenhou preset, scoring with its three-player
+/// evaluator (kita as nukidora, tsumo loss).
+#[test]
+fn sanma_mjai_logs_replay_in_riichienv_with_every_kita_legal_and_every_win_scored_alike() {
+    let stats = riichienv_replays("sanma", "tenhou");
+    if stats.is_null() {
+        return;
+    }
+    assert_eq!(stats["3-player games"], 40, "{stats}");
+    assert!(stats["kitas"].as_u64() > Some(200), "{stats}");
+}
+
+/// 40 half games of `variant` exported as MJAI and replayed in RiichiEnv under its `rule` preset;
+/// the check's counts (`serde_json::Value::Null` where the test virtualenv is missing).
+fn riichienv_replays(variant: &str, rule: &str) -> serde_json::Value {
     // PyPI's riichienv in the test virtualenv (see runtime/logs/tests/mjai_libriichi.rs); the
     // check and RiichiEnv's replay quirks it corrects: tests/data/mjai/riichienv_check.py.
-    let Some(python) = mjai_python() else { return };
+    let Some(python) = mjai_python() else {
+        return serde_json::Value::Null;
+    };
     let dir = std::env::temp_dir().join(format!("rinshan-riichienv-{variant}-{}", std::process::id()));
     let export = dir.to_string_lossy().to_string();
     let out = rinshan(&[
@@ -885,6 +900,7 @@ fn riichienv_replays(variant: &str, rule: &str) {
         stats["decisions"].as_u64() > Some(10_000) && stats["wins"].as_u64() > Some(100),
         "{report}"
     );
+    stats.clone()
 }
 
 #[test]
