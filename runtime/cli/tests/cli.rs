@@ -331,8 +331,8 @@ fn selfplay_plays_three_player_games() {
     assert_eq!(scores.len(), 3, "{v}");
     assert!((scores.iter().sum::<f64>() - 105_000.0).abs() < 1e-6, "{v}");
     assert!(v["win_rate"].as_f64().unwrap() > 0.3, "{v}");
-    // What does not take three players yet says so: a sanma log is written and replays
-    // (`selfplay_exports_games_that_replay`), but is not drawn, nor read as MJAI.
+    // A sanma log is written in both formats and replays (`selfplay_exports_games_that_replay`
+    // for tenhou.net/6); what does not take three players yet says so.
     let dir = std::env::temp_dir().join(format!("rinshan-sanma-export-{}", std::process::id()));
     let mjai = dir.join("mjai");
     let (log, mjai_log) = (dir.join("game-1.json"), mjai.join("game-1.mjson"));
@@ -342,9 +342,18 @@ fn selfplay_plays_three_player_games() {
         let out = rinshan(&args);
         assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     }
+    let v = json(&rinshan(&["replay", mjai.to_str().unwrap(), "--json"]));
+    assert_eq!(
+        (&v["all_agree"], &v["report"]["games"]),
+        (&serde_json::json!(true), &serde_json::json!(2)),
+        "{v}"
+    );
+    // The two exports played the same games: the MJAI one converts to the tenhou.net/6 one.
+    let converted = rinshan(&["convert", &mjai_log.to_string_lossy(), "--to", "tenhou"]);
+    let written = std::fs::read_to_string(&log).expect("the tenhou.net/6 export");
+    assert_eq!(String::from_utf8_lossy(&converted.stdout), written);
     for (args, words) in [
         (vec!["render", log.to_str().unwrap()], "3-player game (sanma)"),
-        (vec!["replay", mjai_log.to_str().unwrap()], "three-player game (kita, three seats)"),
         (
             vec!["render", "--variant", "sanma", "--seed", "3"],
             "three-player table",
@@ -352,7 +361,10 @@ fn selfplay_plays_three_player_games() {
         (vec!["arena", "--variant", "sanma", "--games", "4"], "three-player"),
     ] {
         let out = rinshan(&args);
-        let (err, text) = (String::from_utf8_lossy(&out.stderr), String::from_utf8_lossy(&out.stdout));
+        let (err, text) = (
+            String::from_utf8_lossy(&out.stderr),
+            String::from_utf8_lossy(&out.stdout),
+        );
         assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
         assert!(err.contains(words) || text.contains(words), "{args:?}: {err} {text}");
     }

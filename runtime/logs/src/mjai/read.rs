@@ -20,43 +20,68 @@ pub fn is_mjai(text: &str) -> bool {
     })
 }
 
-/// Why a three-player MJAI log stops the reader.
-pub(crate) const THREE_PLAYERS_UNREAD: &str =
-    "a three-player game (kita, three seats): rinshan writes three-player MJAI logs but does not read them yet; \
-     its tenhou.net/6 logs replay";
+/// The fields that list one entry per seat, and what an absent fourth seat holds in each.
+const PER_SEAT: [(&str, fn() -> serde_json::Value); 5] = [
+    ("names", || serde_json::Value::from("")),
+    ("scores", || serde_json::Value::from(0)),
+    ("tehais", || serde_json::Value::Array(Vec::new())),
+    ("deltas", || serde_json::Value::from(0)),
+    ("tenpais", || serde_json::Value::from(false)),
+];
 
-/// Whether an event's per-seat lists hold three seats.
-fn lists_three_seats(line: &str) -> bool {
-    let Ok(v) = serde_json::from_str::<serde_json::Value>(line) else {
-        return false;
-    };
-    ["names", "scores", "tehais"]
+/// How many seats an event's per-seat lists hold (`None` for an event without them).
+fn listed_seats(event: &serde_json::Value) -> Option<usize> {
+    PER_SEAT
         .iter()
-        .any(|k| v.get(k).and_then(serde_json::Value::as_array).is_some_and(|l| l.len() == 3))
+        .find_map(|(k, _)| event.get(k).and_then(serde_json::Value::as_array).map(Vec::len))
+}
+
+/// A three-player event in the four-seat form [`Event`] reads: each per-seat list gets the
+/// absent fourth seat's entry.
+fn with_fourth_seat(event: &mut serde_json::Value) {
+    for (key, absent) in PER_SEAT {
+        if let Some(serde_json::Value::Array(list)) = event.get_mut(key) {
+            if list.len() == 3 {
+                list.push(absent());
+            }
+        }
+    }
 }
 
 /// Reads the text of an MJAI log; `path` only names it in messages.
 pub fn parse_game(path: &str, text: &str) -> Result<Game, LogError> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let mut builder = GameBuilder::new(path);
+    // Three players' events list three seats (`start_game`'s names, `start_kyoku`'s scores):
+    // the first such list says how many sit at the table.
+    let mut seats = None;
     for (index, line) in text.lines().enumerate() {
         if line.trim().is_empty() {
             continue;
         }
-        let event: Event = serde_json::from_str(line).map_err(|e| {
+        let not_json = |e: serde_json::Error| {
             let position = format!(" at line {} column {}", e.line(), e.column());
             let full = e.to_string();
             let message = full.strip_suffix(&position).unwrap_or(&full).to_string();
-            let message = if lists_three_seats(line) {
-                THREE_PLAYERS_UNREAD.to_string()
-            } else {
-                format!("not an MJAI event: {message}")
-            };
             LogError {
                 line: Some(index + 1),
                 column: u32::try_from(e.column()).ok(),
-                ..file_error(path, message)
+                ..file_error(path, format!("not an MJAI event: {message}"))
             }
+        };
+        let mut value: serde_json::Value = serde_json::from_str(line).map_err(not_json)?;
+        if seats.is_none() {
+            seats = listed_seats(&value).filter(|&n| n == 3 || n == 4);
+            if seats == Some(3) {
+                builder.three_players();
+            }
+        }
+        if seats == Some(3) {
+            with_fourth_seat(&mut value);
+        }
+        let event: Event = serde_json::from_value(value).map_err(|e| LogError {
+            line: Some(index + 1),
+            ..file_error(path, format!("not an MJAI event: {e}"))
         })?;
         builder.event(event, index + 1)?;
     }
@@ -97,8 +122,20 @@ impl GameBuilder {
                 finished: None,
                 started: false,
                 ended: false,
+                seats: 4,
             },
         }
+    }
+
+    /// The game has three players (rinshan's `sanma`): its events list the fourth seat empty.
+    pub fn three_players(&mut self) {
+        let game = &mut self.reader.game;
+        game.variant = rinshan_engine::Variant::Sanma;
+        // A `start_game` without names was read as four players' (Tenhou names theirs 三..).
+        if self.reader.started && !game.rule.starts_with('三') {
+            game.rule.insert(0, '三');
+        }
+        self.reader.seats = 3;
     }
 
     /// The next event, found at `line` of the source (1-based; a single-line format gives the
@@ -114,13 +151,7 @@ impl GameBuilder {
             // A round holds to the rules of a tenhou.net/6 round (a draw before each discard,
             // calls of real melds, a han count the yaku add up to), checked by that reader.
             let game = &self.reader.game;
-            let back = parse_round_value(
-                &game.path,
-                done.line,
-                &round_value(&done),
-                game.red_fives,
-                done.seats,
-            )?;
+            let back = parse_round_value(&game.path, done.line, &round_value(&done), game.red_fives, done.seats)?;
             if back != done {
                 let message = "the round's events do not read back as one round".into();
                 return Err(self.error(line, message, Some(done.to_string())));
@@ -165,6 +196,8 @@ struct Reader {
     finished: Option<Round>,
     started: bool,
     ended: bool,
+    /// Players at the table.
+    seats: usize,
 }
 
 impl Reader {
@@ -189,7 +222,8 @@ impl Reader {
                 self.game.red_fives = aka_flag.unwrap_or(true);
                 let length = if kyoku_first == Some(4) { "東" } else { "南" };
                 let red = if self.game.red_fives { "喰赤" } else { "喰" };
-                self.game.rule = rule.unwrap_or_else(|| format!("{length}{red}"));
+                let three = if self.seats == 3 { "三" } else { "" };
+                self.game.rule = rule.unwrap_or_else(|| format!("{three}{length}{red}"));
                 Ok(())
             }
             Event::StartKyoku {
@@ -216,11 +250,14 @@ impl Reader {
                     return Err(format!("kyoku {kyoku} is not 1-4"));
                 }
                 let k = (wind as u32 - 27) * 4 + u32::from(kyoku) - 1;
+                if k % 4 >= self.seats as u32 {
+                    return Err(format!("kyoku {kyoku}: three players play kyoku 1-3 of a wind"));
+                }
                 if actor_of(oya)? != (k % 4) as usize {
                     return Err(format!("oya {oya} is not the dealer of kyoku {kyoku} (seat {})", k % 4));
                 }
                 let mut hands: [Vec<Tile>; 4] = Default::default();
-                for (s, tehai) in tehais.into_iter().enumerate() {
+                for (s, tehai) in tehais.into_iter().enumerate().take(self.seats) {
                     if tehai.len() != 13 {
                         return Err(format!("tehais of seat {s} has {} tiles, not 13", tehai.len()));
                     }
@@ -231,8 +268,7 @@ impl Reader {
                 }
                 self.round = Some(Open::new(Round {
                     line,
-                    // Three-player MJAI logs are refused at `start_game` until they are read.
-                    seats: 4,
+                    seats: self.seats,
                     kyoku: k,
                     honba,
                     sticks: kyotaku,

@@ -4,7 +4,7 @@
 //! known, a call naming the discard just made, a kan on a pon the seat holds). The extras are
 //! optional except what a replay checks: a `hora` needs its `deltas` and `yakus`.
 
-use rinshan_engine::tile::Tile;
+use rinshan_engine::tile::{Tile, TileType};
 
 use super::event::Event;
 use super::tile::Pai;
@@ -46,14 +46,12 @@ pub(super) fn all_known<const N: usize>(ps: [Pai; N], what: &str) -> Result<[Til
         .map_err(|_| format!("{what} has the wrong number of tiles"))
 }
 
-/// Where seat `from` sits seen from `me`.
-pub(super) fn rel(me: usize, from: usize) -> Result<Rel, String> {
-    match (from + 4 - me) % 4 {
-        1 => Ok(Rel::Right),
-        2 => Ok(Rel::Across),
-        3 => Ok(Rel::Left),
-        _ => Err(format!("seat {me} calls its own discard")),
+/// Where seat `from` sits seen from `me` at a table of `seats`.
+pub(super) fn rel(me: usize, from: usize, seats: usize) -> Result<Rel, String> {
+    if me == from {
+        return Err(format!("seat {me} calls its own discard"));
     }
+    Ok(Rel::between(me, from, seats))
 }
 
 impl Open {
@@ -78,6 +76,15 @@ impl Open {
         }
     }
 
+    /// Seat `a`, which must sit at the table.
+    fn actor(&self, a: u8) -> Result<usize, String> {
+        let s = actor_of(a)?;
+        match s < self.round.seats {
+            true => Ok(s),
+            false => Err(format!("seat {a}: three players sit at seats 0-2")),
+        }
+    }
+
     fn take(&mut self, s: usize, t: Tile) {
         let count = &mut self.held[s][t.kind().index()];
         *count = count.saturating_add(1);
@@ -98,16 +105,16 @@ impl Open {
 
     /// Seat `actor` calls `pai` from `target`: the seat, the tile and where it came from.
     fn call(&mut self, actor: u8, target: u8, pai: Pai) -> Result<(usize, Tile, Rel), String> {
-        let s = actor_of(actor)?;
+        let s = self.actor(actor)?;
         let called = known(pai, "the tile called")?;
-        let from = self.called(s, actor_of(target)?, called)?;
+        let from = self.called(s, self.actor(target)?, called)?;
         self.take(s, called);
         Ok((s, called, from))
     }
 
     fn called(&mut self, actor: usize, target: usize, pai: Tile) -> Result<Rel, String> {
         match self.last_discard.take() {
-            Some((s, t)) if s == target && t == pai => rel(actor, target),
+            Some((s, t)) if s == target && t == pai => rel(actor, target, self.round.seats),
             _ => Err(format!(
                 "seat {actor} calls {} from seat {target}, which is not the discard just made",
                 Pai::known(pai)
@@ -119,7 +126,7 @@ impl Open {
         let kind = event.kind();
         match event {
             Event::Tsumo { actor, pai } => {
-                let s = actor_of(actor)?;
+                let s = self.actor(actor)?;
                 let t = known(pai, "the tile drawn")?;
                 self.last_discard = None;
                 self.last_draw[s] = Some(t);
@@ -127,7 +134,7 @@ impl Open {
                 self.round.draws[s].push(Draw::Tile(t));
             }
             Event::Dahai { actor, pai, tsumogiri } => {
-                let s = actor_of(actor)?;
+                let s = self.actor(actor)?;
                 let t = known(pai, "the tile discarded")?;
                 if tsumogiri && self.last_draw[s] != Some(t) {
                     return Err(format!(
@@ -183,7 +190,7 @@ impl Open {
                 self.round.discards[s].push(Discard::Nothing);
             }
             Event::Kakan { actor, pai, .. } => {
-                let s = actor_of(actor)?;
+                let s = self.actor(actor)?;
                 let added = known(pai, "the tile added")?;
                 // The pon as the log recorded it, so the kan is written as Tenhou writes it.
                 let pon = self.round.draws[s].iter().rev().find_map(|d| match *d {
@@ -203,7 +210,7 @@ impl Open {
                 });
             }
             Event::Ankan { actor, consumed } => {
-                let s = actor_of(actor)?;
+                let s = self.actor(actor)?;
                 let tiles = all_known(consumed, "consumed")?;
                 if tiles.iter().any(|t| t.kind() != tiles[0].kind()) {
                     return Err(format!("seat {s}'s ankan is not four of one tile"));
@@ -214,6 +221,20 @@ impl Open {
                 self.kans += 1;
                 self.round.discards[s].push(Discard::ClosedKan { tiles });
             }
+            Event::Kita { actor, .. } => {
+                let s = self.actor(actor)?;
+                if self.round.seats != 3 {
+                    return Err(format!("seat {s} sets North aside (kita) in a four-player game"));
+                }
+                let north = Tile::plain(TileType::NORTH);
+                self.last_discard = None;
+                self.last_draw[s] = None;
+                // A kita can be ronned, as a discard can.
+                self.last_given = Some(north);
+                let count = &mut self.held[s][north.kind().index()];
+                *count = count.saturating_sub(1);
+                self.round.discards[s].push(Discard::Kita);
+            }
             Event::Dora { dora_marker } => {
                 let t = known(dora_marker, "dora_marker")?;
                 if self.round.dora.len() > self.kans {
@@ -222,11 +243,11 @@ impl Open {
                 self.round.dora.push(t);
             }
             Event::Reach { actor } => {
-                let s = actor_of(actor)?;
+                let s = self.actor(actor)?;
                 self.riichi[s] = true;
             }
             Event::ReachAccepted { actor, .. } => {
-                actor_of(actor)?;
+                self.actor(actor)?;
             }
             Event::Hora {
                 actor,
@@ -239,10 +260,10 @@ impl Open {
                 pao,
                 ..
             } => {
-                let winner = actor_of(actor)?;
-                let from = actor_of(target)?;
+                let winner = self.actor(actor)?;
+                let from = self.actor(target)?;
                 let deltas = deltas.ok_or("hora without deltas: a replay checks every score change")?;
-                let pao = pao.map(actor_of).transpose()?.unwrap_or(winner);
+                let pao = pao.map(|a| self.actor(a)).transpose()?.unwrap_or(winner);
                 if let (Some(ura), true) = (ura_markers, self.round.ura.is_empty()) {
                     self.round.ura = ura
                         .into_iter()
@@ -279,7 +300,7 @@ impl Open {
                     }
                     (LoggedDraw::Exhaustive, _) => match tenpais.map_or(0, |t| t.iter().filter(|&&t| t).count()) {
                         0 => (LoggedDraw::NoTenpai, None),
-                        4 => (LoggedDraw::AllTenpai, None),
+                        n if n == self.round.seats => (LoggedDraw::AllTenpai, None),
                         n => return Err(format!("{n} seats tenpai, but the deltas pay them nothing")),
                     },
                     (kind, deltas) => (
@@ -289,7 +310,6 @@ impl Open {
                 };
                 self.draw = Some((kind, deltas));
             }
-            Event::Kita { .. } => return Err(super::read::THREE_PLAYERS_UNREAD.into()),
             _ => return Err(format!("{kind} is not an event of a round")),
         }
         Ok(())

@@ -47,8 +47,8 @@ mod result;
 mod tests;
 mod value;
 
-pub use moves::{Discard, Draw, Rel};
 pub(crate) use moves::KITA;
+pub use moves::{Discard, Draw, Rel};
 pub(crate) use result::{
     check_yaku, our_yaku, points_total, tenhou_yaku, yaku_name as tenhou_yaku_name, MOST_YAKU_HAN,
 };
@@ -505,13 +505,17 @@ fn parse_round(ctx: &mut Ctx, index: Option<usize>, v: &Value, seats: usize) -> 
         if seat >= seats {
             let empty = (0..3).all(|i| item(base + i).as_array().is_some_and(Vec::is_empty));
             if !empty {
-                return Err(ctx.err(format!("seat {seat}"), "three players leave seat 3's hand, draws and discards empty"));
+                return Err(ctx.err(
+                    format!("seat {seat}"),
+                    "three players leave seat 3's hand, draws and discards empty",
+                ));
             }
             continue;
         }
         hands[seat] = tiles(item(base), 13..=13).map_err(|m| ctx.err(format!("hand of seat {seat}"), m))?;
         draws[seat] = entries(ctx, item(base + 1), &format!("draws of seat {seat}"), parse_draw)?;
         discards[seat] = entries(ctx, item(base + 2), &format!("discards of seat {seat}"), parse_discard)?;
+        check_seats(ctx, seat, seats, &draws[seat], &discards[seat])?;
         let (n_draws, n_discards) = (draws[seat].len(), discards[seat].len());
         if n_discards != n_draws && n_discards + 1 != n_draws {
             let message = format!(
@@ -554,6 +558,33 @@ fn parse_round(ctx: &mut Ctx, index: Option<usize>, v: &Value, seats: usize) -> 
         discards,
         outcome,
     })
+}
+
+/// What only one table size has: chi and calls from across at four seats, kita at three.
+fn check_seats(ctx: &Ctx, seat: usize, seats: usize, draws: &[Draw], discards: &[Discard]) -> Result<(), LogError> {
+    let across = |from: &Rel| *from == Rel::Across;
+    for (i, d) in draws.iter().enumerate() {
+        let wrong = match d {
+            Draw::Chi { .. } => seats == 3,
+            Draw::Pon { from, .. } | Draw::OpenKan { from, .. } => seats == 3 && across(from),
+            Draw::Tile(_) => false,
+        };
+        if wrong {
+            let message = "a chi or a call from across: three players have neither";
+            return Err(ctx.err(format!("draws of seat {seat}, entry {i}"), message));
+        }
+    }
+    for (i, d) in discards.iter().enumerate() {
+        let message = match d {
+            Discard::Kita if seats == 4 => "a kita (f44): four players keep North",
+            Discard::AddedKan { from, .. } if seats == 3 && across(from) => {
+                "an added kan on a pon from across: three players have no one across"
+            }
+            _ => continue,
+        };
+        return Err(ctx.err(format!("discards of seat {seat}, entry {i}"), message));
+    }
+    Ok(())
 }
 
 /// A list of draws or discards, each entry read by `parse`.

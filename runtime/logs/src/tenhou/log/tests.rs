@@ -106,7 +106,11 @@ fn directions_and_round_names() {
     for seats in [3, 4] {
         for me in 0..seats {
             for other in (0..seats).filter(|&o| o != me) {
-                assert_eq!(Rel::between(me, other, seats).seat_of(me, seats), other, "{me} {other} {seats}");
+                assert_eq!(
+                    Rel::between(me, other, seats).seat_of(me, seats),
+                    other,
+                    "{me} {other} {seats}"
+                );
             }
         }
     }
@@ -649,13 +653,35 @@ fn three_player_records() {
         let err = parse_game("s.json", &record.to_string()).expect_err(words);
         assert!(err.to_string().contains(words), "{err}");
     };
-    refused(&|r| r["log"][0][13] = json!([11, 11, 19, 19, 21, 22, 23, 24, 25, 26, 27, 28, 29]), "leave seat 3's hand");
-    refused(&|r| r["log"][0][1] = json!([35000, 35000, 34000, 1000]), "leave the fourth score 0");
+    refused(
+        &|r| r["log"][0][13] = json!([11, 11, 19, 19, 21, 22, 23, 24, 25, 26, 27, 28, 29]),
+        "leave seat 3's hand",
+    );
+    refused(
+        &|r| r["log"][0][1] = json!([35000, 35000, 34000, 1000]),
+        "leave the fourth score 0",
+    );
     refused(&|r| r["log"][0][0] = json!([3, 0, 0]), "kyoku 0-2, 4-6");
     // A four-player game has no one to set North aside for it, and no three-player log plays
     // under a four-player rule set.
     refused(&|r| r["log"][0][6] = json!(["f45", 60]), "not a discard letter");
+    refused(
+        &|r| r["log"][0][5] = json!(["19p1919", 22]),
+        "three players have neither",
+    );
+    refused(
+        &|r| r["log"][0][5] = json!(["c212223", 22]),
+        "three players have neither",
+    );
+    let mut four = first_record();
+    round_of(&mut four)[6] = json!(["f44"]);
+    round_of(&mut four)[5] = json!([44]);
+    let err = parse_game("f.json", &four.to_string()).expect_err("kita at four seats");
+    assert!(err.to_string().contains("four players keep North"), "{err}");
     let mut game = game;
     let err = game.play_under(Variant::Red).expect_err("three players under red");
-    assert!(err.contains("a 3-player log cannot be played under red, a 4-player game"), "{err}");
+    assert!(
+        err.contains("a 3-player log cannot be played under red, a 4-player game"),
+        "{err}"
+    );
 }
