@@ -57,9 +57,9 @@ const ALL_YAKU: [&str; 45] = [
 fn every_variant_loads() {
     assert_eq!(
         rinshan_codegen::variant_names(&rules_dir()),
-        ["mjsoul", "mleague", "no_red", "red", "sanma", "wrc"]
+        ["mjsoul", "mjsoul_sanma", "mleague", "no_red", "red", "sanma", "wrc"]
     );
-    for v in ["red", "no_red", "mjsoul", "mleague", "wrc", "sanma"] {
+    for v in ["red", "no_red", "mjsoul", "mleague", "wrc", "sanma", "mjsoul_sanma"] {
         let spec = load_real(v);
         assert_eq!(spec.variant.name, v);
     }
@@ -71,7 +71,10 @@ fn unknown_variant_lists_the_known_ones() {
         panic!("loaded")
     };
     assert!(
-        e[0].message.contains("no variant `blue`") && e[0].message.contains("mjsoul, mleague, no_red, red, sanma, wrc"),
+        e[0].message.contains("no variant `blue`")
+            && e[0]
+                .message
+                .contains("mjsoul, mjsoul_sanma, mleague, no_red, red, sanma, wrc"),
         "{}",
         e[0]
     );

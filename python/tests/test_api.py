@@ -27,7 +27,15 @@ def play(env, steps, seed=0):
 
 @pytest.mark.parametrize(
     "variant,actions",
-    [("red", 87), ("mjsoul", 87), ("mleague", 86), ("no-red", 79), ("wrc", 79), ("sanma", 82)],
+    [
+        ("red", 87),
+        ("mjsoul", 87),
+        ("mleague", 86),
+        ("no-red", 79),
+        ("wrc", 79),
+        ("sanma", 82),
+        ("mjsoul-sanma", 82),
+    ],
 )
 def test_shapes_and_dtypes(variant, actions):
     env = rinshan.make(

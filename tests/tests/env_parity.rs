@@ -11,8 +11,9 @@ use rinshan_engine::observe::Form;
 use rinshan_engine::random::Rng;
 use rinshan_engine::Variant;
 
-/// Games per variant. Sanma plays fewer, to hold the whole CI run under 30 minutes on two cores
-/// (with 200 its test alone took 168 s on lavapipe); 64 half games are still thousands of steps.
+/// Games per variant. The three-player rule sets play fewer, to hold the whole CI run under 30
+/// minutes on two cores (with 200 sanma's test alone took 168 s on lavapipe); 64 half games are
+/// still thousands of steps.
 const BATCH: usize = 200;
 const SANMA_BATCH: usize = 64;
 
@@ -158,6 +159,11 @@ fn wrc_half_games_are_identical_on_cpu_and_gpu() {
 #[test]
 fn sanma_half_games_are_identical_on_cpu_and_gpu() {
     parity(Variant::Sanma, SANMA_BATCH);
+}
+
+#[test]
+fn mjsoul_sanma_half_games_are_identical_on_cpu_and_gpu() {
+    parity(Variant::MjsoulSanma, SANMA_BATCH);
 }
 
 /// Hero mode on both backends: the caller plays one seat at random, the three agents the others.

@@ -314,3 +314,14 @@ invariant_suite!(
     5_600_856,
     "e959d949e9b12c1c"
 );
+// Mahjong Soul's three-player rules: pinned when the variant was added (it brought no option, so
+// the others kept their pins). As for mjsoul, random play meets none of its differences from
+// sanma (kokushi on a closed kan, a pattern double yakuman, pao in a composite yakuman): it plays
+// sanma's games; the scenarios pin each difference.
+invariant_suite!(
+    mjsoul_sanma_random_games_keep_the_invariants,
+    mjsoul_sanma,
+    10_000,
+    5_600_856,
+    "e959d949e9b12c1c"
+);

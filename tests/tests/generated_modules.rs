@@ -57,6 +57,11 @@ fn sanma_wgsl_snapshot() {
     insta::assert_snapshot!("sanma_wgsl", body(wgsl(Variant::Sanma)));
 }
 
+#[test]
+fn mjsoul_sanma_wgsl_snapshot() {
+    insta::assert_snapshot!("mjsoul_sanma_wgsl", body(wgsl(Variant::MjsoulSanma)));
+}
+
 /// Size and member offsets of struct `name` in a WGSL module, as naga lays it out.
 fn wgsl_layout(module: &naga::Module, name: &str) -> (u32, Vec<(String, u32)>) {
     let mut layouter = naga::proc::Layouter::default();

@@ -192,6 +192,7 @@ each_rule_set! {
     Mleague: mleague_observations_do_not_depend_on_hidden_tiles, mleague_observations_are_the_same_from_relabelled_seats;
     Wrc: wrc_observations_do_not_depend_on_hidden_tiles, wrc_observations_are_the_same_from_relabelled_seats;
     Sanma: sanma_observations_do_not_depend_on_hidden_tiles, sanma_observations_are_the_same_from_relabelled_seats;
+    MjsoulSanma: mjsoul_sanma_observations_do_not_depend_on_hidden_tiles, mjsoul_sanma_observations_are_the_same_from_relabelled_seats;
 }
 
 fn token_byte(t: &ObsTokens, at: u32) -> u8 {

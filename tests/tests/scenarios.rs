@@ -303,6 +303,7 @@ runner!(run_mjsoul, mjsoul, Mjsoul);
 runner!(run_mleague, mleague, Mleague);
 runner!(run_wrc, wrc, Wrc);
 runner!(run_sanma, sanma, Sanma);
+runner!(run_mjsoul_sanma, mjsoul_sanma, MjsoulSanma);
 
 fn run(sc: &Scenario) -> Result<(), String> {
     match sc.variant.as_str() {
@@ -312,8 +313,9 @@ fn run(sc: &Scenario) -> Result<(), String> {
         "mleague" => run_mleague(sc),
         "wrc" => run_wrc(sc),
         "sanma" => run_sanma(sc),
+        "mjsoul_sanma" => run_mjsoul_sanma(sc),
         v => Err(format!(
-            "unknown variant `{v}` (red, no_red, mjsoul, mleague, wrc, sanma)"
+            "unknown variant `{v}` (red, no_red, mjsoul, mleague, wrc, sanma, mjsoul_sanma)"
         )),
     }
 }

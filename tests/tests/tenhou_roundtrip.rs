@@ -295,6 +295,12 @@ fn sanma_games_round_trip() {
     assert!(report.all_agree() && report.games == games.len(), "{report:?}");
 }
 
+#[test]
+fn mjsoul_sanma_games_round_trip() {
+    let (counts, _) = rule_set_round_trip(Variant::MjsoulSanma, 16);
+    assert!(counts.contains_key("kita") && !counts.contains_key("chi"), "{counts:?}");
+}
+
 /// The first round of each of these scenarios, then the rest of a half game by the policy.
 const PREPARED: [(&str, &str); 12] = [
     ("triple_ron_aborts", "三家和了"),

@@ -870,6 +870,15 @@ fn sanma_mjai_logs_replay_in_riichienv_with_every_kita_legal_and_every_win_score
     assert!(stats["kitas"].as_u64() > Some(200), "{stats}");
 }
 
+/// Mahjong Soul's three-player rules under RiichiEnv's `default_mjsoul()` preset.
+#[test]
+fn mjsoul_sanma_mjai_logs_replay_in_riichienv_under_its_mahjong_soul_rules() {
+    let stats = riichienv_replays("mjsoul-sanma", "mjsoul");
+    if !stats.is_null() {
+        assert_eq!(stats["3-player games"], 40, "{stats}");
+    }
+}
+
 /// 40 half games of `variant` exported as MJAI and replayed in RiichiEnv under its `rule` preset;
 /// the check's counts (`serde_json::Value::Null` where the test virtualenv is missing).
 fn riichienv_replays(variant: &str, rule: &str) -> serde_json::Value {
