@@ -14,7 +14,7 @@ use crate::error::CliError;
 /// `--variant`.
 #[derive(clap::Args, Clone, Debug)]
 pub struct VariantArg {
-    /// Rule variant: the name of a file of rules/variants/, e.g. red, mjsoul, mleague, wrc, no-red
+    /// Rule variant: the name of a file of rules/variants/, e.g. red, mjsoul, mleague, wrc, no-red, sanma, mjsoul-sanma
     #[arg(long, default_value = "red")]
     pub variant: Variant,
 }
