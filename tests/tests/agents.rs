@@ -308,6 +308,47 @@ fn arena_rates_rule_above_random_and_counts_illegal_moves() {
     assert!(by("zero").illegal > 0, "action 0 is illegal at most decisions");
 }
 
+/// Three players: every wall set is played three times, the agents rotated over three seats; the
+/// fourth player is not seated, and a game lost to an illegal action places its player third.
+#[test]
+fn the_arena_rates_three_players_over_three_seats() {
+    let arena = Arena {
+        variant: Variant::Sanma,
+        mode: Mode::East,
+        players: [
+            Player::Builtin(Agent::Rule),
+            Player::Builtin(Agent::Random),
+            Player::Builtin(Agent::Random),
+            Player::Builtin(Agent::Greedy),
+        ],
+        sets: 30,
+        seed: 5,
+    };
+    let report = arena::run(&arena, &|_| {});
+    assert_eq!(report.games, 90);
+    let names: Vec<&str> = report.standings.iter().map(|s| s.name.as_str()).collect();
+    assert_eq!(names, ["rule", "random"], "the fourth player sits out");
+    let rule = &report.standings[0];
+    assert!(rule.mean_rank + rule.rank_ci95 < 2.0, "rule {} ± {}", rule.mean_rank, rule.rank_ci95);
+    assert_eq!((rule.games, rule.ranks[3], rule.ranks.iter().sum::<u64>()), (90, 0, 90));
+    let zero = Arena {
+        players: [
+            Player::Policy {
+                name: "zero",
+                policy: &AlwaysZero,
+            },
+            Player::Builtin(Agent::Rule),
+            Player::Builtin(Agent::Rule),
+            Player::Builtin(Agent::Rule),
+        ],
+        sets: 2,
+        ..arena
+    };
+    let report = arena::run(&zero, &|_| {});
+    let by = |n: &str| report.standings.iter().find(|s| s.name == n).expect("standing");
+    assert_eq!(by("zero").ranks, [0, 0, 6, 0], "an illegal action places its player last");
+}
+
 /// The agents are deterministic for a seed: the same game twice gives the same actions.
 #[test]
 fn agents_are_deterministic() {

@@ -17,13 +17,14 @@ use crate::error::CliError;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// The four seats' agents, comma-separated: random, rule, greedy, defensive, or
+    /// The seats' agents, comma-separated, one per seat: random, rule, greedy, defensive, or
     /// `mjai:COMMAND`, an MJAI bot run as `sh -c "COMMAND SEAT"` over its stdin and stdout
-    #[arg(long, default_value = "defensive,greedy,rule,random", value_delimiter = ',')]
-    agents: Vec<SeatArg>,
+    /// [default: defensive,greedy,rule,random; three players: defensive,greedy,rule]
+    #[arg(long, value_delimiter = ',')]
+    agents: Option<Vec<SeatArg>>,
     #[command(flatten)]
     mjai: MjaiArgs,
-    /// Games to play, a multiple of 4 (each wall set is played 4 times, rotated)
+    /// Games to play, a multiple of the seat count (each wall set is played once per seat, rotated)
     #[arg(long, default_value_t = 400)]
     games: u64,
     #[command(flatten)]
@@ -42,15 +43,23 @@ pub struct Args {
     json: bool,
 }
 
+/// The built-in agents of the seats when `--agents` is not given (the first ones at three seats).
+const DEFAULT_AGENTS: [Agent; 4] = [Agent::Defensive, Agent::Greedy, Agent::Rule, Agent::Random];
+
 pub fn run(args: Args) -> Result<(), CliError> {
-    if args.agents.len() != 4 {
+    let seats = args.variant.variant.seats() as usize;
+    let agents: Vec<SeatArg> = match &args.agents {
+        Some(agents) => agents.clone(),
+        None => DEFAULT_AGENTS[..seats].iter().map(|&a| SeatArg::Builtin(a)).collect(),
+    };
+    if agents.len() != seats {
         return Err(CliError::input(format!(
-            "--agents needs exactly 4 agents (one per seat), got {}",
-            args.agents.len()
+            "--agents needs exactly {seats} agents (one per seat of {}), got {}",
+            args.variant.variant,
+            agents.len()
         )));
     }
-    let bots: Vec<(String, MjaiEntrant)> = args
-        .agents
+    let bots: Vec<(String, MjaiEntrant)> = agents
         .iter()
         .filter_map(|a| match a {
             SeatArg::Mjai(cmd) => Some(args.mjai.entrant(cmd).map(|e| (a.to_string(), e))),
@@ -61,23 +70,18 @@ pub fn run(args: Args) -> Result<(), CliError> {
         MjaiArgs::check_rules(args.variant.variant, args.mode, None)?;
     }
     let mut next_bot = bots.iter();
-    let players: [Player; 4] = std::array::from_fn(|p| match &args.agents[p] {
-        SeatArg::Builtin(a) => Player::Builtin(*a),
-        SeatArg::Mjai(_) => match next_bot.next() {
+    // A three-player game seats the first three; the fourth place is never played.
+    let players: [Player; 4] = std::array::from_fn(|p| match agents.get(p) {
+        Some(SeatArg::Builtin(a)) => Player::Builtin(*a),
+        Some(SeatArg::Mjai(_)) => match next_bot.next() {
             Some((name, entrant)) => Player::Entrant { name, entrant },
             None => Player::Builtin(Agent::Random),
         },
+        None => Player::Builtin(Agent::Random),
     });
-    if args.variant.variant.seats() != 4 {
+    if args.games == 0 || !args.games.is_multiple_of(seats as u64) {
         return Err(CliError::input(format!(
-            "--variant {}: the duplicate arena rotates four players over four seats; three-player \
-             games are not rated yet",
-            args.variant.variant
-        )));
-    }
-    if args.games == 0 || !args.games.is_multiple_of(4) {
-        return Err(CliError::input(format!(
-            "--games {} is not a positive multiple of 4: each wall set is played once per rotation",
+            "--games {} is not a positive multiple of {seats}: each wall set is played once per rotation",
             args.games
         )));
     }
@@ -85,7 +89,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
         variant: args.variant.variant,
         mode: args.mode,
         players,
-        sets: (args.games / 4) as usize,
+        sets: (args.games / seats as u64) as usize,
         seed: args.seed,
     };
     let bar = if std::io::stderr().is_terminal() && !args.json {
@@ -118,7 +122,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
             .map(|s| {
                 json!({
                     "agent": s.name, "games": s.games, "mean_rank": s.mean_rank, "rank_ci95": s.rank_ci95,
-                    "ranks": s.ranks, "mean_score": s.mean_score, "rounds": s.rounds, "win_rate": s.win_rate,
+                    "ranks": s.ranks[..seats], "mean_score": s.mean_score, "rounds": s.rounds, "win_rate": s.win_rate,
                     "deal_in_rate": s.deal_in_rate, "call_rate": s.call_rate, "riichi_rate": s.riichi_rate,
                     "points_per_win": s.points_per_win, "illegal": s.illegal,
                 })
@@ -136,8 +140,9 @@ pub fn run(args: Args) -> Result<(), CliError> {
         return Ok(());
     }
     println!(
-        "{} {} games ({} wall sets x 4 seatings), seed {}, {:.1}s ({:.1} games/s, {:.0} decisions/s)",
+        "{} {} {} games ({} wall sets x {seats} seatings), seed {}, {:.1}s ({:.1} games/s, {:.0} decisions/s)",
         report.games,
+        arena.variant,
         arena.mode,
         arena.sets,
         args.seed,
@@ -147,12 +152,22 @@ pub fn run(args: Args) -> Result<(), CliError> {
     );
     println!(
         "{:<10} {:>6} {:>15} {:>23} {:>8} {:>6} {:>7} {:>6} {:>7} {:>8}",
-        "agent", "games", "avg rank (95%)", "1st/2nd/3rd/4th", "score", "win", "deal-in", "call", "riichi", "pts/win"
+        "agent",
+        "games",
+        "avg rank (95%)",
+        ["1st/2nd/3rd", "1st/2nd/3rd/4th"][seats - 3],
+        "score",
+        "win",
+        "deal-in",
+        "call",
+        "riichi",
+        "pts/win"
     );
     for s in &report.standings {
-        let hist = s
-            .ranks
-            .map(|r| format!("{:.0}%", 100.0 * r as f64 / s.games.max(1) as f64))
+        let hist = s.ranks[..seats]
+            .iter()
+            .map(|&r| format!("{:.0}%", 100.0 * r as f64 / s.games.max(1) as f64))
+            .collect::<Vec<_>>()
             .join("/");
         println!(
             "{:<10} {:>6} {:>8.3}±{:.3} {:>23} {:>8.0} {:>5.1}% {:>6.1}% {:>5.1}% {:>6.1}% {:>8.0}",

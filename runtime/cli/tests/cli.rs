@@ -358,7 +358,22 @@ fn selfplay_plays_three_player_games() {
             vec!["render", "--variant", "sanma", "--seed", "3"],
             "three-player table",
         ),
-        (vec!["arena", "--variant", "sanma", "--games", "4"], "three-player"),
+        (
+            vec!["arena", "--variant", "sanma", "--games", "4"],
+            "not a positive multiple of 3",
+        ),
+        (
+            vec![
+                "arena",
+                "--variant",
+                "sanma",
+                "--games",
+                "3",
+                "--agents",
+                "rule,rule,rule,rule",
+            ],
+            "exactly 3 agents",
+        ),
     ] {
         let out = rinshan(&args);
         let (err, text) = (
@@ -369,6 +384,39 @@ fn selfplay_plays_three_player_games() {
         assert!(err.contains(words) || text.contains(words), "{args:?}: {err} {text}");
     }
     std::fs::remove_dir_all(&dir).ok();
+    // The duplicate arena rotates three agents over three seats.
+    let v = json(&rinshan(&[
+        "arena",
+        "--variant",
+        "sanma",
+        "--games",
+        "30",
+        "--mode",
+        "east",
+        "--json",
+    ]));
+    assert_eq!(
+        (&v["games"], &v["variant"]),
+        (&serde_json::json!(30), &serde_json::json!("sanma")),
+        "{v}"
+    );
+    let standings = v["standings"].as_array().expect("standings");
+    let names: Vec<&str> = standings.iter().filter_map(|s| s["agent"].as_str()).collect();
+    assert_eq!(names.len(), 3, "{v}");
+    for name in ["defensive", "greedy", "rule"] {
+        assert!(names.contains(&name), "{v}");
+    }
+    for s in standings {
+        let ranks: Vec<u64> = s["ranks"]
+            .as_array()
+            .expect("ranks")
+            .iter()
+            .filter_map(|r| r.as_u64())
+            .collect();
+        assert_eq!((ranks.len(), ranks.iter().sum::<u64>()), (3, 30), "{s}");
+    }
+    let mean: f64 = standings.iter().filter_map(|s| s["mean_rank"].as_f64()).sum::<f64>() / 3.0;
+    assert!((mean - 2.0).abs() < 1e-9, "three places average 2: {v}");
 }
 
 #[test]

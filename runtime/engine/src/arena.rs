@@ -1,6 +1,6 @@
-//! Rating agents by duplicate play: every set of walls is played four times with the players
-//! rotated through the seats, so each player meets the same tiles from every seat and luck
-//! cancels out. Reports per player the average rank with a 95% confidence interval (over sets,
+//! Rating agents by duplicate play: every set of walls is played once per seat (four times, three
+//! for three players) with the players rotated through the seats, so each player meets the same
+//! tiles from every seat and luck cancels out. Reports per player the average rank with a 95% confidence interval (over sets,
 //! the unit of the duplicate design), the rank histogram, the average final score, and per round
 //! the win, deal-in, call and riichi rates and the points per win.
 
@@ -81,8 +81,9 @@ pub struct Arena<'a> {
     /// Game length.
     pub mode: Mode,
     /// The players of seats 0..3 in the first game of each set; the set's other games rotate them.
+    /// A three-player game seats the first three (the fourth plays nothing and is not reported).
     pub players: [Player<'a>; 4],
-    /// Sets of walls; each set is four games (one per rotation).
+    /// Sets of walls; each set is one game per seat (one per rotation).
     pub sets: usize,
     /// Seeds the walls (set `i` uses `env_seed(seed, i, 0)`).
     pub seed: u64,
@@ -99,7 +100,7 @@ pub struct Standing {
     pub mean_rank: f64,
     /// Half-width of the 95% confidence interval of `mean_rank` (normal, over sets).
     pub rank_ci95: f64,
-    /// Finishes in 1st..4th place.
+    /// Finishes in 1st..4th place (three players: 1st..3rd).
     pub ranks: [u64; 4],
     /// Average final score in points (before uma; the arena pays none).
     pub mean_score: f64,
@@ -123,7 +124,7 @@ pub struct Standing {
 /// The whole result.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Report {
-    /// Games played (4 per set).
+    /// Games played (one per seat per set).
     pub games: u64,
     /// Decisions played.
     pub decisions: u64,
@@ -138,7 +139,7 @@ pub struct Report {
 pub struct Fault {
     /// The player's name.
     pub player: String,
-    /// The game: set `game / 4`, rotation `game % 4`.
+    /// The game: set `game / seats`, rotation `game % seats`.
     pub game: u64,
     /// The seat it played.
     pub seat: u32,
@@ -190,7 +191,7 @@ fn play(arena: &Arena, seed: u64, seating: &[Player; 4], game: u64, faults: &mut
         let (mut called, mut riichi) = ([false; 4], [false; 4]);
         let mut decisions = 0u64;
         let mut seats: [Option<Box<dyn Seat>>; 4] = std::array::from_fn(|p| match seating[p] {
-            Player::Entrant { entrant, .. } => Some(entrant.join(p as u32, &s)),
+            Player::Entrant { entrant, .. } if p < v::SEATS as usize => Some(entrant.join(p as u32, &s)),
             _ => None,
         });
         let mut fault = |p: usize, decision: u64, message: String| {
@@ -264,7 +265,7 @@ fn play(arena: &Arena, seed: u64, seating: &[Player; 4], game: u64, faults: &mut
             tq.rank = match s.illegal.checked_sub(1) {
                 // A game lost to an illegal action places its player last and the others in
                 // their order of the moment.
-                Some(o) if o as usize == q => 3,
+                Some(o) if o as usize == q => v::SEATS - 1,
                 Some(o) => ranks[q] - u32::from(ranks[o as usize] < ranks[q]),
                 None => ranks[q],
             };
@@ -276,8 +277,9 @@ fn play(arena: &Arena, seed: u64, seating: &[Player; 4], game: u64, faults: &mut
 
 /// Plays the arena (sets in parallel on rayon's pool), calling `progress(games_done)` as games finish.
 pub fn run(arena: &Arena, progress: &(dyn Fn(u64) + Sync)) -> Report {
+    let seats = arena.variant.seats() as usize;
     let names: Vec<String> = {
-        let mut n: Vec<String> = arena.players.iter().map(Player::name).collect();
+        let mut n: Vec<String> = arena.players[..seats].iter().map(Player::name).collect();
         n.sort();
         n.dedup();
         n
@@ -293,12 +295,15 @@ pub fn run(arena: &Arena, progress: &(dyn Fn(u64) + Sync)) -> Report {
             let mut who = Vec::new();
             let mut decisions = 0;
             let mut faults = Vec::new();
-            for rotation in 0..4 {
-                let seating: [Player; 4] = std::array::from_fn(|p| arena.players[(p + rotation) % 4]);
-                let game = set as u64 * 4 + rotation as u64;
+            for rotation in 0..seats {
+                let seating: [Player; 4] = std::array::from_fn(|p| match p < seats {
+                    true => arena.players[(p + rotation) % seats],
+                    false => arena.players[p],
+                });
+                let game = (set * seats + rotation) as u64;
                 let (t, d) = play(arena, seed, &seating, game, &mut faults);
                 decisions += d;
-                for p in 0..4 {
+                for p in 0..seats {
                     let name = seating[p].name();
                     let i = names.iter().position(|n| *n == name).unwrap_or(0);
                     by_name[i].0 += f64::from(t[p].rank + 1);
@@ -318,7 +323,7 @@ pub fn run(arena: &Arena, progress: &(dyn Fn(u64) + Sync)) -> Report {
         })
         .collect();
     let mut report = Report {
-        games: 4 * arena.sets as u64,
+        games: (seats * arena.sets) as u64,
         decisions: sets.iter().map(|s| s.decisions).sum(),
         standings: Vec::new(),
         faults: sets.iter().flat_map(|s| s.faults.iter().cloned()).collect(),
