@@ -329,7 +329,12 @@ fn the_arena_rates_three_players_over_three_seats() {
     let names: Vec<&str> = report.standings.iter().map(|s| s.name.as_str()).collect();
     assert_eq!(names, ["rule", "random"], "the fourth player sits out");
     let rule = &report.standings[0];
-    assert!(rule.mean_rank + rule.rank_ci95 < 2.0, "rule {} ± {}", rule.mean_rank, rule.rank_ci95);
+    assert!(
+        rule.mean_rank + rule.rank_ci95 < 2.0,
+        "rule {} ± {}",
+        rule.mean_rank,
+        rule.rank_ci95
+    );
     assert_eq!((rule.games, rule.ranks[3], rule.ranks.iter().sum::<u64>()), (90, 0, 90));
     let zero = Arena {
         players: [
@@ -346,7 +351,11 @@ fn the_arena_rates_three_players_over_three_seats() {
     };
     let report = arena::run(&zero, &|_| {});
     let by = |n: &str| report.standings.iter().find(|s| s.name == n).expect("standing");
-    assert_eq!(by("zero").ranks, [0, 0, 6, 0], "an illegal action places its player last");
+    assert_eq!(
+        by("zero").ranks,
+        [0, 0, 6, 0],
+        "an illegal action places its player last"
+    );
 }
 
 /// The agents are deterministic for a seed: the same game twice gives the same actions.

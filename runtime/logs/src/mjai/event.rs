@@ -10,6 +10,9 @@ use serde::{Deserialize, Serialize};
 
 use super::tile::Pai;
 
+/// The fields that list one entry per seat (four in [`Event`]; a three-player log lists three).
+pub(crate) const PER_SEAT: [&str; 5] = ["names", "scores", "tehais", "deltas", "tenpais"];
+
 /// One MJAI event. Seats (`actor`, `target`, `oya`) count from East 1's dealer.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "type", rename_all = "snake_case")]

@@ -7,7 +7,7 @@
 
 use rinshan_engine::tile::Tile;
 
-use super::event::Event;
+use super::event::{Event, PER_SEAT};
 use super::round::{actor_of, known, Open};
 use crate::tenhou::log::{parse_round_value, round_name, Game, LogError, Outcome, Round};
 use crate::tenhou::write::round_value;
@@ -20,29 +20,30 @@ pub fn is_mjai(text: &str) -> bool {
     })
 }
 
-/// The fields that list one entry per seat, and what an absent fourth seat holds in each.
-const PER_SEAT: [(&str, fn() -> serde_json::Value); 5] = [
-    ("names", || serde_json::Value::from("")),
-    ("scores", || serde_json::Value::from(0)),
-    ("tehais", || serde_json::Value::Array(Vec::new())),
-    ("deltas", || serde_json::Value::from(0)),
-    ("tenpais", || serde_json::Value::from(false)),
-];
+/// What an absent fourth seat holds in the per-seat list `key` ([`PER_SEAT`]).
+fn absent_seat(key: &str) -> serde_json::Value {
+    match key {
+        "names" => "".into(),
+        "tehais" => serde_json::Value::Array(Vec::new()),
+        "tenpais" => false.into(),
+        _ => 0.into(),
+    }
+}
 
 /// How many seats an event's per-seat lists hold (`None` for an event without them).
 fn listed_seats(event: &serde_json::Value) -> Option<usize> {
     PER_SEAT
         .iter()
-        .find_map(|(k, _)| event.get(k).and_then(serde_json::Value::as_array).map(Vec::len))
+        .find_map(|k| event.get(k).and_then(serde_json::Value::as_array).map(Vec::len))
 }
 
 /// A three-player event in the four-seat form [`Event`] reads: each per-seat list gets the
 /// absent fourth seat's entry.
 fn with_fourth_seat(event: &mut serde_json::Value) {
-    for (key, absent) in PER_SEAT {
+    for key in PER_SEAT {
         if let Some(serde_json::Value::Array(list)) = event.get_mut(key) {
             if list.len() == 3 {
-                list.push(absent());
+                list.push(absent_seat(key));
             }
         }
     }

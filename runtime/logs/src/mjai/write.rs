@@ -11,7 +11,7 @@
 use rinshan_engine::hand::{Yaku, YakuHan};
 use rinshan_engine::tile::{Tile, TileType};
 
-use super::event::Event;
+use super::event::{Event, PER_SEAT};
 use super::tile::Pai;
 use crate::tenhou::log::{points_total, Discard, Draw, Game, LogError, LoggedDraw, LoggedWin, Outcome, Round};
 use crate::tenhou::plan::{plan, Played};
@@ -79,9 +79,6 @@ pub fn game_text(game: &Game) -> Result<String, LogError> {
     }
     Ok(text)
 }
-
-/// The fields that list one entry per seat.
-const PER_SEAT: [&str; 5] = ["names", "scores", "tehais", "deltas", "tenpais"];
 
 fn cut_to_seats(event: &mut serde_json::Value, seats: usize) {
     for key in PER_SEAT {
