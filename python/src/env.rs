@@ -706,17 +706,12 @@ impl PyEnv {
         if i >= b {
             return Err(PyValueError::new_err(format!("env {i} does not exist: there are {b}")));
         }
-        if env.variant().seats() != 4 {
-            return Err(PyValueError::new_err(format!(
-                "{} is a three-player game: its table is not drawn yet (the board has four seats)",
-                env.variant()
-            )));
-        }
-        if pov.is_some_and(|p| p > 3) {
-            return Err(PyValueError::new_err(format!("pov {pov:?}: seats are 0..3")));
+        let seats = env.variant().seats();
+        if let Some(p) = pov.filter(|&p| p >= seats) {
+            return Err(PyValueError::new_err(format!("pov {p}: seats are 0..{}", seats - 1)));
         }
         let states = env.game_states().map_err(env_error)?;
-        let board = Board::from_state(&states[i]);
+        let board = Board::from_state(&states[i], env.variant());
         let opts = Options {
             tiles,
             pov: pov.unwrap_or(board.current),

@@ -6,7 +6,7 @@
 use std::collections::BTreeSet;
 use std::path::PathBuf;
 
-use rinshan_engine::Tile;
+use rinshan_engine::{Tile, Variant};
 use rinshan_logs::tenhou::log::{collect_files, read_game, Discard, Draw, Game, Rel};
 use rinshan_logs::tenhou::position::{round_replay, Position, RoundEnd};
 use rinshan_render::{Board, MeldKind, Options, TileMode};
@@ -70,7 +70,7 @@ fn the_dealt_hands_are_the_logged_ones() {
     let games = games();
     for (g, r, ps, _) in rounds(&games) {
         let round = &games[g].rounds[r];
-        let board = Board::from_state(&ps[0].state);
+        let board = Board::from_state(&ps[0].state, Variant::Red);
         let dealer = round.dealer();
         for p in 0..4 {
             let mut shown = board.hands[p].clone();
@@ -114,7 +114,7 @@ fn rivers_and_melds_follow_the_log() {
     for (g, r, ps, end) in rounds(&games) {
         let round = &games[g].rounds[r];
         let last = ps.last().expect("a round has decisions");
-        let board = Board::from_state(&last.state);
+        let board = Board::from_state(&last.state, Variant::Red);
         // A round the wall ended shows every logged discard, the last one included.
         let drawn_out = end.as_ref().and_then(|e| Board::logged_round_end(last, e)).filter(|b| {
             b.result
@@ -284,7 +284,7 @@ fn melds_lie_beside_their_hand() {
     let mut seats_with_melds = 0;
     for (g, r, ps, _) in rounds(&games) {
         let last = ps.last().expect("a round has decisions");
-        let board = Board::from_state(&last.state);
+        let board = Board::from_state(&last.state, Variant::Red);
         let svg = rinshan_render::svg(&board, &revealed(0));
         for seat in 0..4u32 {
             if board.melds[seat as usize].is_empty() {
@@ -330,7 +330,7 @@ fn every_tile_names_itself() {
     let all = rounds(&games);
     for (_, _, ps, _) in all.iter().take(12) {
         for (i, p) in ps.iter().enumerate().step_by(7) {
-            let board = Board::from_state(&p.state);
+            let board = Board::from_state(&p.state, Variant::Red);
             let pov = (i % 4) as u32;
             let svg = rinshan_render::svg(
                 &board,
@@ -421,7 +421,7 @@ fn snapshots_of_fixed_positions_and_tile_modes() {
             .iter()
             .flat_map(|(g, _, ps, _)| ps.iter().map(move |p| (*g, p)))
             .map(|(g, p)| {
-                let mut b = Board::from_state(&p.state);
+                let mut b = Board::from_state(&p.state, Variant::Red);
                 b.names = games[g].names.clone();
                 b
             })
@@ -478,7 +478,7 @@ fn snapshots_of_fixed_positions_and_tile_modes() {
 fn pictures_rasterise_in_every_mode() {
     let games = games();
     let (ps, _) = round_replay(&games[0], 0).expect("a round");
-    let board = Board::from_state(&ps[ps.len() / 2].state);
+    let board = Board::from_state(&ps[ps.len() / 2].state, Variant::Red);
     for mode in TileMode::ALL {
         let svg = rinshan_render::svg(
             &board,
@@ -555,4 +555,74 @@ fn the_replay_page_holds_every_decision_and_each_result() {
         roxmltree::Document::parse(sheet).expect("the sprite parses");
         assert_eq!(sheet.matches("<symbol").count(), 38, "37 tiles and the back");
     }
+}
+
+/// Three players' tables, from self-play sanma games written as logs and replayed: three seats
+/// (the next one on the right, the one before on the left, none across), each seat's dealt hand,
+/// and the Norths each seat has set aside (kita) beside its river, as many as the log lists.
+#[test]
+fn three_player_tables_show_three_seats_and_their_kita() {
+    let games = crate::tenhou_roundtrip::play_variant(Variant::Sanma, rinshan_engine::env::Mode::East, 4, 21);
+    let mut kitas = 0;
+    let north = Tile::plain(rinshan_engine::TileType::NORTH);
+    for (g, r, ps, end) in rounds(&games) {
+        let round = &games[g].rounds[r];
+        let first = Board::from_state(&ps[0].state, Variant::Sanma);
+        assert_eq!((first.seats, first.hands[3].len()), (3, 0));
+        for p in 0..3 {
+            let mut shown = first.hands[p].clone();
+            shown.extend(first.drawn[p]);
+            let mut dealt = round.hands[p].clone();
+            if p == round.dealer() {
+                dealt.extend(round.draws[p].first().and_then(|d| d.tiles().first().copied()));
+            }
+            assert_eq!(sorted(shown), sorted(dealt), "round {r} seat {p}");
+        }
+        let mut most = [0u32; 4];
+        for p in &ps {
+            let board = Board::from_state(&p.state, Variant::Sanma);
+            let svg = rinshan_render::svg(&board, &revealed(0));
+            let doc = roxmltree::Document::parse(&svg).expect("the SVG is well-formed XML");
+            let turns: Vec<(String, String)> = doc
+                .descendants()
+                .filter(|n| n.attribute("class") == Some("seat"))
+                .map(|n| {
+                    let a = |k: &str| n.attribute(k).unwrap_or("").to_string();
+                    (a("data-seat"), a("transform"))
+                })
+                .collect();
+            assert_eq!(
+                turns,
+                [
+                    ("0".into(), "rotate(-0 480 480)".into()),
+                    ("1".into(), "rotate(-90 480 480)".into()),
+                    ("2".into(), "rotate(-270 480 480)".into())
+                ]
+            );
+            let tiles = tiles_of(&svg);
+            for q in 0..3 {
+                let kita = tiles
+                    .iter()
+                    .filter(|t| t.1 == q.to_string() && t.2 == "kita" && t.0 == north.name())
+                    .count();
+                assert_eq!(kita as u32, board.kita[q], "round {r} seat {q}");
+                most[q] = most[q].max(board.kita[q]);
+            }
+        }
+        // The last decision may itself be a kita (ronned), after which no position is asked.
+        let ronned_kita = end.is_some() && ps.last().is_some_and(|p| p.what.starts_with("ron on a kita"));
+        for q in 0..3 {
+            let logged = round.discards[q].iter().filter(|d| matches!(d, Discard::Kita)).count() as u32;
+            assert!(
+                most[q] == logged || ronned_kita && most[q] + 1 >= logged,
+                "round {r} seat {q}: {most:?}"
+            );
+            kitas += logged;
+        }
+    }
+    assert!(kitas > 20, "{kitas} kita in the games");
+    let (_, _, ps, _) = rounds(&games).swap_remove(0);
+    let board = Board::from_state(&ps[ps.len() / 2].state, Variant::Sanma);
+    let png = rinshan_render::png::png(&rinshan_render::svg(&board, &revealed(1)), 0.5).expect("rasterises");
+    assert_eq!(&png[1..4], b"PNG");
 }

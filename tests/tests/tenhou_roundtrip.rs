@@ -128,8 +128,9 @@ fn play(mode: Mode, games: usize, seed: u64) -> Vec<Game> {
     play_variant(Variant::Red, mode, games, seed)
 }
 
-/// `games` games of `variant` and `mode` played by the policy, as the recorder wrote them.
-fn play_variant(variant: Variant, mode: Mode, games: usize, seed: u64) -> Vec<Game> {
+/// `games` games of `variant` and `mode` played by the policy, as the recorder wrote them (the
+/// render tests draw three-player tables from them too).
+pub(crate) fn play_variant(variant: Variant, mode: Mode, games: usize, seed: u64) -> Vec<Game> {
     let batch = 48;
     let mut env = variant_env(variant, mode, batch, seed, true);
     env.reset().expect("reset");

@@ -345,10 +345,10 @@ fn render_bench(n: usize, seed: u64) -> Result<(), CliError> {
         let a = env.agent_actions(&[[Agent::Rule; 4]]).map_err(CliError::failure)?;
         env.step(&a).map_err(CliError::failure)?;
     }
-    let boards: Vec<Board> = states.iter().map(Board::from_state).collect();
+    let boards: Vec<Board> = states.iter().map(|s| Board::from_state(s, Variant::Red)).collect();
     let decode = rate(states.len(), || {
         for s in &states {
-            std::hint::black_box(Board::from_state(s));
+            std::hint::black_box(Board::from_state(s, Variant::Red));
         }
     });
     let mut bytes = [0usize; 2];

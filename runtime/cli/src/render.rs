@@ -78,12 +78,6 @@ pub fn run(args: Args) -> Result<(), CliError> {
         let page = rinshan_render::html::replay_html(&game, args.pov).map_err(CliError::input)?;
         return write(html, page.as_bytes());
     }
-    if args.variant.variant.seats() != 4 && args.log.is_none() {
-        return Err(CliError::input(format!(
-            "--variant {}: a three-player table is not drawn yet; the board has four seats",
-            args.variant.variant
-        )));
-    }
     let board = if let Some(log) = &args.log {
         log_board(log, args.round, args.step)?
     } else if let Some(seed) = args.seed {
@@ -122,14 +116,13 @@ fn write(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
 
 fn log_board(path: &Path, round: usize, step: usize) -> Result<Board, CliError> {
     let game = read_log(path).map_err(CliError::input)?;
-    rinshan_render::html::drawable(&game).map_err(CliError::input)?;
     let (positions, end) = round_replay(&game, round).map_err(CliError::input)?;
     let with_names = |mut b: Board| {
         b.names = game.names.clone();
         b
     };
     if let Some(p) = positions.get(step) {
-        return Ok(with_names(Board::from_state(&p.state)));
+        return Ok(with_names(Board::from_state(&p.state, game.variant)));
     }
     let result = match (positions.last(), &end) {
         (Some(last), Some(end)) if step == positions.len() => Board::logged_round_end(last, end),
@@ -179,9 +172,13 @@ fn seed_board(seed: u64, agents: &[Agent], variant: Variant, steps: usize) -> Re
     }
     let mut board = match ended {
         Some(board) => board,
-        None => Board::from_state(&state(&env)?),
+        None => Board::from_state(&state(&env)?, variant),
     };
-    board.names = std::array::from_fn(|p| format!("{} {p}", seats[p]));
+    let at_table = variant.seats() as usize;
+    board.names = std::array::from_fn(|p| match p < at_table {
+        true => format!("{} {p}", seats[p]),
+        false => String::new(),
+    });
     Ok(board)
 }
 
@@ -218,5 +215,5 @@ fn state_board(path: &Path, variant: Variant) -> Result<Board, CliError> {
     }
     env.load_states(&words)
         .map_err(|e| CliError::input(format!("{}: {e}", path.display())))?;
-    Ok(Board::from_state(&state(&env)?))
+    Ok(Board::from_state(&state(&env)?, variant))
 }

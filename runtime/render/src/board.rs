@@ -3,7 +3,7 @@
 
 use rinshan_engine::env::{DrawKind, Step, Table};
 use rinshan_engine::generated::kernel::{self, GameState};
-use rinshan_engine::{Tile, TileType, Variant};
+use rinshan_engine::{with_variant, Tile, TileType, Variant};
 
 /// How a meld was formed.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -105,7 +105,10 @@ pub struct RoundResult {
 /// Everything a picture of one table shows.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Board {
-    /// 0 = East 1, 4 = South 1, 8 = West 1.
+    /// Players at the table: 4, or 3 (seat 3 is empty).
+    pub seats: u32,
+    /// The engine's round: `seats` rounds per wind (0 = East 1; South 1 is 4, or 3 for three
+    /// players).
     pub round: u32,
     /// The dealer's seat.
     pub dealer: u32,
@@ -129,6 +132,8 @@ pub struct Board {
     pub drawn: [Option<Tile>; 4],
     /// Melds in the order they were made.
     pub melds: [Vec<Meld>; 4],
+    /// Norths each seat has set aside (kita, three players).
+    pub kita: [u32; 4],
     /// Discards in order.
     pub rivers: [Vec<RiverTile>; 4],
     /// Riichi declared (its stick on the table).
@@ -157,9 +162,10 @@ fn plain(t: u32) -> Tile {
 }
 
 impl Board {
-    /// The table of `state` as it stands before its current player decides.
-    pub fn from_state(state: &GameState) -> Board {
+    /// The table of `state`, a game of `variant`, as it stands before its current player decides.
+    pub fn from_state(state: &GameState, variant: Variant) -> Board {
         let mut s = *state;
+        let seats = variant.seats();
         let mut hands: [Vec<Tile>; 4] = Default::default();
         let mut drawn = [None; 4];
         let turn = s.phase != kernel::PHASE_CLAIM;
@@ -190,13 +196,16 @@ impl Board {
             }
             hands[seat as usize] = tiles;
         }
-        let (melds, rivers, last) = public_record(&mut s);
+        let (melds, rivers, last) = public_record(&mut s, seats);
+        let first_dora = variant.wall().dora;
         let dora = (0..s.dora_revealed.min(5))
-            .filter_map(|i| tile_of(kernel::wall_tile(&mut s, rinshan_engine::generated::red::WALL_DORA + i)))
+            .filter_map(|i| tile_of(kernel::wall_tile(&mut s, first_dora + i)))
             .collect();
+        let kita = std::array::from_fn(|p| with_variant!(variant, v => v::kita_count(&mut s, p as u32)));
         let riichi =
             std::array::from_fn(|p| s.seat_flags[p] & kernel::SEAT_RIICHI != 0 || rivers[p].iter().any(|r| r.riichi));
         Board {
+            seats,
             round: s.round,
             dealer: s.dealer,
             honba: s.honba,
@@ -209,6 +218,7 @@ impl Board {
             hands,
             drawn,
             melds,
+            kita,
             rivers,
             riichi,
             last,
@@ -235,7 +245,7 @@ impl Board {
         if ev & ROUND_OVER == 0 {
             return None;
         }
-        let mut board = Board::from_state(before);
+        let mut board = Board::from_state(before, variant);
         board.place_last_discard(before, action, variant);
         let winners = step.winners[env];
         let names = rinshan_engine::env::yaku_names(variant);
@@ -272,7 +282,7 @@ impl Board {
         let riichi_won = wins.iter().any(|w| board.riichi[w.seat as usize]);
         let ura = if riichi_won {
             (0..s.dora_revealed.min(5))
-                .filter_map(|i| tile_of(kernel::wall_tile(&mut s, rinshan_engine::generated::red::WALL_URA + i)))
+                .filter_map(|i| tile_of(kernel::wall_tile(&mut s, variant.wall().ura + i)))
                 .collect()
         } else {
             Vec::new()
@@ -400,7 +410,7 @@ const RIVER_VALUE: u32 = 63;
 const RIVER_CALLED: u32 = 64;
 const RIVER_TSUMOGIRI: u32 = 128;
 
-fn public_record(s: &mut GameState) -> Record {
+fn public_record(s: &mut GameState, seats: u32) -> Record {
     let mut melds: [Vec<Meld>; 4] = Default::default();
     let mut rivers: [Vec<RiverTile>; 4] = Default::default();
     for seat in 0..4u32 {
@@ -460,14 +470,15 @@ fn public_record(s: &mut GameState) -> Record {
             let call = calls[seat as usize].get(i as usize).copied();
             let low = kernel::meld_tile(word);
             let fourth = added[seat as usize].iter().copied().find(|&v| value_type(v) == low);
-            melds[seat as usize].push(meld_of(word, call, fourth));
+            melds[seat as usize].push(meld_of(word, call, fourth, seats));
         }
     }
     (melds, rivers, last)
 }
 
-/// A meld word (kind, lowest type, source seat, red fives) as tiles in table order.
-fn meld_of(word: u32, call: Option<(u32, u32)>, added_value: Option<u32>) -> Meld {
+/// A meld word (kind, lowest type, source seat, red fives) as tiles in table order, at a table of
+/// `seats`.
+fn meld_of(word: u32, call: Option<(u32, u32)>, added_value: Option<u32>, seats: u32) -> Meld {
     let kind = match kernel::meld_kind(word) {
         kernel::MELD_CHI => MeldKind::Chi,
         kernel::MELD_PON => MeldKind::Pon,
@@ -534,9 +545,10 @@ fn meld_of(word: u32, call: Option<(u32, u32)>, added_value: Option<u32>) -> Mel
             added,
         };
     };
-    // The called tile points at its source: left seat (3) first, across (2) second, right (1) last.
+    // The called tile points at its source: the seat before (`seats - 1`) first, across (2, four
+    // players) second, the next seat (1) last.
     let slot = match from {
-        3 => 0,
+        f if f == seats - 1 => 0,
         2 => 1,
         _ => tiles.len(),
     };

@@ -9,7 +9,7 @@ use serde::Serialize;
 
 use super::board::Board;
 use super::options::{Options, TileMode};
-use super::svg::{escape, round_name, seat_name, sprite, svg};
+use super::svg::{escape, seat_name, sprite, svg};
 use rinshan_logs::tenhou::log::Game;
 use rinshan_logs::tenhou::position::round_replay;
 
@@ -34,32 +34,20 @@ struct Data {
     sprites: Vec<(String, String)>,
 }
 
-/// Whether the board can draw `game`'s table: it has four seats.
-pub fn drawable(game: &Game) -> Result<(), String> {
-    match game.variant.seats() {
-        4 => Ok(()),
-        n => Err(format!(
-            "{}: a {n}-player game ({}); its table is not drawn yet, the board has four seats",
-            game.path, game.variant
-        )),
-    }
-}
-
 /// The boards of every decision of `game` (a tenhou.net/6 log), with a result board after each
 /// round.
 pub fn frames(game: &Game) -> Result<Vec<(String, Board)>, String> {
-    drawable(game)?;
     let mut out = Vec::new();
     for r in 0..game.rounds.len() {
         let (positions, end) = round_replay(game, r)?;
         let name = game.names.clone();
         for p in &positions {
-            let mut board = Board::from_state(&p.state);
+            let mut board = Board::from_state(&p.state, game.variant);
             board.names = name.clone();
             let who = seat_name(&name, p.seat);
             let caption = format!(
                 "{}, {} honba: decision {} of {}, {who}: {}",
-                round_name(board.round),
+                board.round_name(),
                 board.honba,
                 p.step + 1,
                 positions.len(),
@@ -70,10 +58,7 @@ pub fn frames(game: &Game) -> Result<Vec<(String, Board)>, String> {
         if let (Some(last), Some(end)) = (positions.last(), end) {
             if let Some(mut board) = Board::logged_round_end(last, &end) {
                 board.names = name.clone();
-                out.push((
-                    format!("{}, {} honba: result", round_name(board.round), board.honba),
-                    board,
-                ));
+                out.push((format!("{}, {} honba: result", board.round_name(), board.honba), board));
             }
         }
     }
@@ -97,7 +82,7 @@ pub fn replay_html(game: &Game, pov: u32) -> Result<String, String> {
         if last_round != Some(key) {
             last_round = Some(key);
             rounds.push(RoundStart {
-                name: format!("{} ({} honba)", round_name(board.round), board.honba),
+                name: format!("{} ({} honba)", board.round_name(), board.honba),
                 frame: frames.len(),
             });
         }

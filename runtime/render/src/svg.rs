@@ -1,11 +1,13 @@
 //! The table as an SVG picture: the viewer's seat at the bottom, each seat laid out once in its own
-//! frame and turned a quarter per seat around the centre.
+//! frame and turned a quarter per seat around the centre (three players: the next seat on the
+//! right, the one before on the left, the top empty).
 
 use std::fmt::Write as _;
 
 use super::board::{Board, LastAction, Meld, MeldKind, RoundResult};
 use super::options::{Options, TileMode};
 use super::tiles::{self, Place, UsedTiles};
+use rinshan_engine::{Tile, TileType};
 
 /// The picture is SIZE by SIZE.
 pub const SIZE: f32 = 960.0;
@@ -27,14 +29,33 @@ const FONT: &str = "DejaVu Sans, Verdana, Arial, sans-serif";
 const WINDS: [&str; 4] = ["East", "South", "West", "North"];
 const WIND_LETTERS: [&str; 4] = ["E", "S", "W", "N"];
 
-/// The round's name: `East 1`.
-pub fn round_name(round: u32) -> String {
-    format!("{} {}", WINDS[(round / 4 % 4) as usize], round % 4 + 1)
+/// The name of the engine's round `round` at a table of `seats`: `East 1`.
+pub fn round_name(round: u32, seats: u32) -> String {
+    let seats = seats.max(1);
+    format!("{} {}", WINDS[(round / seats % 4) as usize], round % seats + 1)
+}
+
+impl Board {
+    /// The round's name: `East 1`.
+    pub fn round_name(&self) -> String {
+        round_name(self.round, self.seats)
+    }
 }
 
 /// A seat's wind letter in the current round.
 fn wind(board: &Board, seat: u32) -> &'static str {
-    WIND_LETTERS[((seat + 4 - board.dealer % 4) % 4) as usize]
+    let n = board.seats.max(1);
+    WIND_LETTERS[((seat + n - board.dealer % n) % n) as usize]
+}
+
+/// The quarter turns from the bottom of the seat `rel` places after the viewer: three players
+/// leave the top (across) empty, the seat before sitting on the left.
+fn quarter_turns(rel: u32, seats: u32) -> u32 {
+    if seats == 3 && rel == 2 {
+        3
+    } else {
+        rel
+    }
 }
 
 fn name(board: &Board, seat: u32) -> String {
@@ -62,18 +83,19 @@ pub fn escape(s: &str) -> String {
 pub fn svg(board: &Board, opts: &Options) -> String {
     let mut body = String::with_capacity(48 * 1024);
     let mut used = UsedTiles::default();
-    let pov = opts.pov % 4;
+    let seats = board.seats.clamp(1, 4);
+    let pov = opts.pov % seats;
     let _ = write!(
         body,
         r##"<rect width="{SIZE}" height="{SIZE}" fill="#1d5b3c"/><rect x="{b}" y="{b}" width="{BOX}" height="{BOX}" rx="10" fill="#123d28" stroke="#0b2a1b"/>"##,
         b = C - BOX / 2.0
     );
-    for rel in 0..4u32 {
-        let seat = (pov + rel) % 4;
+    for rel in 0..seats {
+        let seat = (pov + rel) % seats;
         let _ = write!(
             body,
             r#"<g class="seat" data-seat="{seat}" transform="rotate({} {C} {C})">"#,
-            -90.0 * rel as f32
+            -90.0 * quarter_turns(rel, seats) as f32
         );
         // A round's end shows the winners' hands, or at a draw the tenpai ones.
         let shown = board
@@ -228,6 +250,23 @@ fn seat_frame(out: &mut String, used: &mut UsedTiles, board: &Board, seat: u32, 
         }
         right -= width + MELD_GAP;
     }
+    // Norths set aside (kita), right of the river's first row.
+    for k in 0..board.kita[s] {
+        tiles::draw(
+            out,
+            used,
+            Some(Tile::plain(TileType::NORTH)),
+            &place(
+                RIVER_X + 6.0 * RIVER.0 + 14.0 + k as f32 * RIVER.0,
+                RIVER_Y,
+                RIVER,
+                false,
+                seat,
+                "kita",
+                "",
+            ),
+        );
+    }
     // River: rows of six; the riichi discard lies sideways.
     let n = board.rivers[s].len();
     let (mut col, mut row, mut x) = (0, 0, RIVER_X);
@@ -327,7 +366,7 @@ fn centre(out: &mut String, used: &mut UsedTiles, board: &Board) {
         out,
         r##"<text x="{C}" y="{}" font-size="24" fill="#fff" text-anchor="middle" class="round">{}</text><text x="{C}" y="{}" font-size="13" fill="#cfe3d4" text-anchor="middle">Honba {} · Sticks {}</text><text x="{C}" y="{}" font-size="13" fill="#cfe3d4" text-anchor="middle" class="left">Tiles left {}</text>"##,
         C - 40.0,
-        round_name(board.round),
+        board.round_name(),
         C - 18.0,
         board.honba,
         board.sticks,
@@ -385,7 +424,7 @@ fn result_panel(out: &mut String, used: &mut UsedTiles, board: &Board, r: &Round
             lines.push((format!("Tenpai: {t}"), 16, "#ffffff"));
         }
     }
-    // The payments (and at a game's end the uma and standing) in four columns, one per seat.
+    // The payments (and at a game's end the uma and standing) in one column per seat.
     let mut columns: Vec<[String; 4]> = vec![std::array::from_fn(|p| {
         format!("{} ({})", name(board, p as u32), wind(board, p as u32))
     })];
@@ -417,14 +456,15 @@ fn result_panel(out: &mut String, used: &mut UsedTiles, board: &Board, r: &Round
         ty += 6.0;
     }
     ty += 6.0;
+    let column = w / board.seats.clamp(1, 4) as f32;
     for (row, cells) in columns.iter().enumerate() {
         ty += 24.0;
         let (size, fill) = if row == 0 { (15, "#cfe3d4") } else { (17, "#ffffff") };
-        for (p, cell) in cells.iter().enumerate() {
+        for (p, cell) in cells.iter().enumerate().take(board.seats as usize) {
             let _ = write!(
                 out,
                 r#"<text x="{}" y="{ty}" font-size="{size}" fill="{fill}" text-anchor="middle">{cell}</text>"#,
-                x + 87.5 + 175.0 * p as f32
+                x + column / 2.0 + column * p as f32
             );
         }
     }

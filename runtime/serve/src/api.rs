@@ -237,7 +237,7 @@ fn view_json(id: u64, s: &Session, tiles: TileMode, board: bool) -> Result<Value
         "mode": setup.mode.name(),
         "names": s.names(),
         "scores": b.scores,
-        "round": rinshan_render::round_name(b.round),
+        "round": b.round_name(),
         "honba": b.honba,
         "legal": s.choices(),
         "result": b.result.as_ref().map(|r| json!({

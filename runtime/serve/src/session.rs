@@ -176,7 +176,10 @@ impl Session {
         if let Some(r) = &mut s.recorder {
             r.set_names(s.names.clone());
         }
-        s.events.push(format!("{} begins", rinshan_render::round_name(0)));
+        s.events.push(format!(
+            "{} begins",
+            rinshan_render::round_name(0, s.setup.variant.seats())
+        ));
         Ok(s)
     }
 
@@ -218,7 +221,7 @@ impl Session {
             Some(b) => b.clone(),
             None => {
                 let state = self.state()?;
-                let mut board = Board::from_state(&state);
+                let mut board = Board::from_state(&state, self.setup.variant);
                 if self.claim_pending() {
                     // A bot considering a call: the page shows the seat that plays on if nobody
                     // calls (the next to draw; the kan's own seat after an added kan), not who may
@@ -434,7 +437,9 @@ impl Session {
     /// Ends the game where it stands (the engine failed), telling the page why.
     pub fn stop(&mut self, why: &str) {
         self.events.push(format!("the game stopped: {why}"));
-        let mut board = self.board().unwrap_or_else(|_| Board::from_state(&GameState::zeroed()));
+        let mut board = self
+            .board()
+            .unwrap_or_else(|_| Board::from_state(&GameState::zeroed(), self.setup.variant));
         board.over = true;
         self.ended = Some(board);
     }
@@ -447,8 +452,7 @@ impl Session {
         self.ended = None;
         self.step += 1;
         let b = self.board().map_err(Refusal::Illegal)?;
-        self.events
-            .push(format!("{} begins", rinshan_render::round_name(b.round)));
+        self.events.push(format!("{} begins", b.round_name()));
         Ok(())
     }
 
@@ -512,17 +516,14 @@ impl Session {
                         .map(|(p, d)| format!("{} {d:+}", self.names[p]))
                 })
                 .collect();
-            self.events.push(format!(
-                "{} ends: {}",
-                rinshan_render::round_name(board.round),
-                deltas.join(", ")
-            ));
+            self.events
+                .push(format!("{} ends: {}", board.round_name(), deltas.join(", ")));
             self.ended = Some(board);
             // The next round's record starts afresh.
             self.told = 0;
         }
         if step.terminated[0] && self.ended.is_none() {
-            self.ended = Some(Board::from_state(&self.state()?));
+            self.ended = Some(Board::from_state(&self.state()?, self.setup.variant));
         }
         Ok(())
     }
