@@ -430,8 +430,10 @@ def test_three_player_games_end_with_three_places():
     assert env.observe_all()["planes"].shape == (16, 3, 64, 34)
     with pytest.raises(ValueError, match="seats are 0..2"):
         env.observe(3)
-    with pytest.raises(ValueError, match="three-player"):
-        env.render(0)
+    svg = env.render(0, reveal=True)
+    assert svg.count('<g class="seat"') == 3
+    with pytest.raises(ValueError, match="seats are 0..2"):
+        env.render(0, pov=3)
 
 
 def test_evaluate_rotates_over_three_seats_in_sanma():

@@ -283,16 +283,27 @@ async fn spectate_and_replay(c: &Client, base: &str) {
          return names;",
     )
     .await;
-    // The page's board has four seats: it offers the four-player rule sets.
-    let built: Vec<String> = rinshan_engine::Variant::ALL
-        .iter()
-        .filter(|v| v.seats() == 4)
-        .map(|v| v.to_string())
-        .collect();
+    // Every rule set the server was built with; a three-player one seats three agents.
+    let built: Vec<String> = rinshan_engine::Variant::ALL.iter().map(|v| v.to_string()).collect();
     assert_eq!(rules, json!(built));
-    for name in ["red", "no-red", "mjsoul", "mleague", "wrc"] {
+    for name in ["red", "no-red", "mjsoul", "mleague", "wrc", "sanma", "mjsoul-sanma"] {
         assert!(built.iter().any(|b| b == name), "{name}: {built:?}");
     }
+    let agents = js(
+        &c,
+        "const v = document.querySelector('[name=variant]');
+         const open = () => [...document.querySelectorAll('select.agent')].filter((a) => !a.disabled).length;
+         v.value = 'sanma'; v.dispatchEvent(new Event('change'));
+         const three = open();
+         v.value = 'mleague'; v.dispatchEvent(new Event('change'));
+         return [three, open()];",
+    )
+    .await;
+    assert_eq!(
+        agents,
+        json!([3, 4]),
+        "the spectator's form seats as many agents as the rules have seats"
+    );
     js(&c, "document.querySelector('[name=delay]').value = '50'; document.querySelector('[name=seed]').value = '3'; return true;").await;
     c.find(Locator::Id("start"))
         .await

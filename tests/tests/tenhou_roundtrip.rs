@@ -282,7 +282,7 @@ fn sanma_games_round_trip() {
         .map(|(n, g)| {
             let mjai = mjai_text(g).unwrap_or_else(|e| panic!("{e}"));
             assert!(
-                mjai.starts_with("{\"aka_flag\":true,\"kyoku_first\":0,\"names\":[\"A\",\"B\",\"C\"]"),
+                mjai.starts_with("{\"type\":\"start_game\",\"names\":[\"A\",\"B\",\"C\"],"),
                 "{mjai}"
             );
             let read = parse_mjai(&format!("game-{n}.mjson"), &mjai).unwrap_or_else(|e| panic!("{e}"));

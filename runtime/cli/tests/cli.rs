@@ -331,8 +331,8 @@ fn selfplay_plays_three_player_games() {
     assert_eq!(scores.len(), 3, "{v}");
     assert!((scores.iter().sum::<f64>() - 105_000.0).abs() < 1e-6, "{v}");
     assert!(v["win_rate"].as_f64().unwrap() > 0.3, "{v}");
-    // A sanma log is written in both formats and replays (`selfplay_exports_games_that_replay`
-    // for tenhou.net/6); what does not take three players yet says so.
+    // A sanma log is written in both formats, replays (`selfplay_exports_games_that_replay` for
+    // tenhou.net/6) and is drawn; the arena asks for three agents.
     let dir = std::env::temp_dir().join(format!("rinshan-sanma-export-{}", std::process::id()));
     let mjai = dir.join("mjai");
     let (log, mjai_log) = (dir.join("game-1.json"), mjai.join("game-1.mjson"));
@@ -352,12 +352,22 @@ fn selfplay_plays_three_player_games() {
     let converted = rinshan(&["convert", &mjai_log.to_string_lossy(), "--to", "tenhou"]);
     let written = std::fs::read_to_string(&log).expect("the tenhou.net/6 export");
     assert_eq!(String::from_utf8_lossy(&converted.stdout), written);
+    // The board draws three seats, from the log and from a seed.
+    for args in [
+        vec!["render", log.to_str().unwrap(), "--step", "20"],
+        vec!["render", "--variant", "sanma", "--seed", "3", "--step", "40"],
+    ] {
+        let out = rinshan(&args);
+        assert!(
+            out.status.success(),
+            "{args:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let svg = String::from_utf8_lossy(&out.stdout);
+        let seats = svg.matches(r#"<g class="seat""#).count();
+        assert_eq!(seats, 3, "{args:?}");
+    }
     for (args, words) in [
-        (vec!["render", log.to_str().unwrap()], "3-player game (sanma)"),
-        (
-            vec!["render", "--variant", "sanma", "--seed", "3"],
-            "three-player table",
-        ),
         (
             vec!["arena", "--variant", "sanma", "--games", "4"],
             "not a positive multiple of 3",

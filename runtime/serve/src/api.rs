@@ -74,23 +74,16 @@ pub(super) fn app_with_store(limits: Limits) -> (Router, Store) {
     (router, store)
 }
 
-/// The rule sets the page plays: the four-player ones (its board has four seats).
-fn four_player() -> Vec<String> {
-    Variant::ALL
-        .iter()
-        .filter(|v| v.seats() == 4)
-        .map(|v| v.to_string())
-        .collect()
-}
-
 /// `GET /api/agents`: what a new game may choose; the server's MJAI bots are agents named
 /// `mjai:NAME`.
 async fn agents(State(store): State<Store>) -> axum::Json<Value> {
     let bots = store.limits().bots.iter().map(|b| format!("{MJAI}{}", b.name));
     axum::Json(json!({
         "agents": Agent::ALL.iter().map(|a| a.name().to_string()).chain(bots).collect::<Vec<_>>(),
-        "variants": four_player(),
-        "variant_descriptions": four_player().into_iter().filter_map(|v| Some((v.clone(), Value::from(v.parse::<Variant>().ok()?.description())))).collect::<serde_json::Map<_, _>>(),
+        "variants": Variant::ALL.iter().map(|v| v.to_string()).collect::<Vec<_>>(),
+        "variant_descriptions": Variant::ALL.iter().map(|v| (v.to_string(), Value::from(v.description()))).collect::<serde_json::Map<_, _>>(),
+        // The page offers as many opponents and seats as the rule set has seats.
+        "variant_seats": Variant::ALL.iter().map(|v| (v.to_string(), Value::from(v.seats()))).collect::<serde_json::Map<_, _>>(),
         "modes": Mode::ALL.iter().map(|m| m.name()).collect::<Vec<_>>(),
         "tiles": TileMode::ALL.iter().map(|m| m.name()).collect::<Vec<_>>(),
     }))
@@ -172,19 +165,13 @@ fn opponent(name: &str, limits: &Limits) -> Result<Opponent, ApiError> {
 
 fn setup(g: NewGame, limits: &Limits) -> Result<Setup, ApiError> {
     let variant: Variant = parse("variant", &g.variant)?;
-    if variant.seats() != 4 {
-        return Err(unprocessable(format!(
-            "variant: {variant} is a three-player game, which the page does not draw yet; the \
-             four-player rule sets are {}",
-            four_player().join(", ")
-        )));
-    }
+    let table = variant.seats() as usize;
     let mode: Mode = parse("mode", &g.mode)?;
     let agents: Vec<Opponent> = g.agents.iter().map(|a| opponent(a, limits)).collect::<Result<_, _>>()?;
-    let want = if g.seat.is_some() { 3 } else { 4 };
+    let want = table - usize::from(g.seat.is_some());
     if agents.len() != want {
         return Err(unprocessable(format!(
-            "{} agents given: a game {} needs {want}",
+            "{} agents given: a game of {variant} {} needs {want}",
             agents.len(),
             if g.seat.is_some() {
                 "with a person"
@@ -197,7 +184,14 @@ fn setup(g: NewGame, limits: &Limits) -> Result<Setup, ApiError> {
     let mut rest = agents.into_iter();
     for (p, s) in seats.iter_mut().enumerate() {
         match g.seat {
-            Some(h) if h > 3 => return Err(unprocessable(format!("seat {h}: seats are 0..3"))),
+            Some(h) if h as usize >= table => {
+                return Err(unprocessable(format!(
+                    "seat {h}: {variant}'s seats are 0..{}",
+                    table - 1
+                )))
+            }
+            // The seat no one sits at (three players) is an agent that is never asked.
+            _ if p >= table => *s = Some(Opponent::Agent(Agent::Random)),
             Some(h) if h as usize == p => {}
             _ => *s = rest.next(),
         }
@@ -235,8 +229,8 @@ fn view_json(id: u64, s: &Session, tiles: TileMode, board: bool) -> Result<Value
         "variant": setup.variant.to_string(),
         "rules": setup.variant.description(),
         "mode": setup.mode.name(),
-        "names": s.names(),
-        "scores": b.scores,
+        "names": &s.names()[..b.seats as usize],
+        "scores": &b.scores[..b.seats as usize],
         "round": b.round_name(),
         "honba": b.honba,
         "legal": s.choices(),

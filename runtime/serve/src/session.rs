@@ -149,10 +149,12 @@ impl Session {
         // Tenhou logs hold east and half games (of any rule set, which the log names).
         let logged = setup.mode != Mode::Single;
         let recorder = logged.then(|| Recorder::new(&env)).transpose().map_err(err)?;
-        let names: [String; 4] = std::array::from_fn(|p| {
-            setup.seats[p]
+        let at_table = setup.variant.seats() as usize;
+        let names: [String; 4] = std::array::from_fn(|p| match p < at_table {
+            true => setup.seats[p]
                 .as_ref()
-                .map_or_else(|| "You".to_string(), |a| format!("{a} {p}"))
+                .map_or_else(|| "You".to_string(), |a| format!("{a} {p}")),
+            false => String::new(),
         });
         let pass = rinshan_engine::env::action_names(setup.variant)
             .iter()
@@ -227,7 +229,7 @@ impl Session {
                     // calls (the next to draw; the kan's own seat after an added kan), not who may
                     // take the tile.
                     board.current = match state.claim_kan {
-                        0 => (state.claim_from + 1) % 4,
+                        0 => (state.claim_from + 1) % self.setup.variant.seats(),
                         _ => state.claim_from,
                     };
                     board.claim = None;

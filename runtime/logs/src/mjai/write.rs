@@ -70,21 +70,57 @@ pub fn game_text(game: &Game) -> Result<String, LogError> {
     let mut text = String::new();
     for event in game_events(game)? {
         // An event is plain data (strings, numbers, lists): serialising it cannot fail.
-        let mut value = serde_json::to_value(&event).unwrap_or_default();
-        if seats < 4 {
-            cut_to_seats(&mut value, seats);
+        let line = serde_json::to_string(&event).unwrap_or_default();
+        match seats {
+            4 => text.push_str(&line),
+            _ => text.push_str(&cut_to_seats(&line, seats)),
         }
-        text.push_str(&serde_json::to_string(&value).unwrap_or_default());
         text.push('\n');
     }
     Ok(text)
 }
 
-fn cut_to_seats(event: &mut serde_json::Value, seats: usize) {
-    for key in PER_SEAT {
-        if let Some(serde_json::Value::Array(list)) = event.get_mut(key) {
+/// An event's JSON with its per-seat lists cut to `seats` entries, its fields kept in order.
+fn cut_to_seats(line: &str, seats: usize) -> String {
+    let Ok(Fields(mut fields)) = serde_json::from_str::<Fields>(line) else {
+        return line.to_string();
+    };
+    let mut out = String::from("{");
+    for (i, (key, value)) in fields.iter_mut().enumerate() {
+        if let (true, serde_json::Value::Array(list)) = (PER_SEAT.contains(&key.as_str()), &mut *value) {
             list.truncate(seats);
         }
+        if i > 0 {
+            out.push(',');
+        }
+        out.push_str(&serde_json::Value::from(key.as_str()).to_string());
+        out.push(':');
+        out.push_str(&value.to_string());
+    }
+    out.push('}');
+    out
+}
+
+/// A JSON object's fields in the order written (serde_json's own map sorts them).
+struct Fields(Vec<(String, serde_json::Value)>);
+
+impl<'de> serde::Deserialize<'de> for Fields {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Fields, D::Error> {
+        struct InOrder;
+        impl<'de> serde::de::Visitor<'de> for InOrder {
+            type Value = Fields;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("a JSON object")
+            }
+            fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<Fields, A::Error> {
+                let mut fields = Vec::new();
+                while let Some(entry) = map.next_entry()? {
+                    fields.push(entry);
+                }
+                Ok(Fields(fields))
+            }
+        }
+        d.deserialize_map(InOrder)
     }
 }
 

@@ -39,8 +39,9 @@ async function loadSprite() {
   document.body.dataset.tiles = tiles;
 }
 
-// Every variant the server was built with, its spec's description as the tooltip.
-function fillVariants(names, descriptions) {
+// Every variant the server was built with, its spec's description as the tooltip; the form
+// offers as many seats and agents as the chosen one has seats.
+function fillVariants(names, descriptions, seats) {
   const sel = document.querySelector("select[name=variant]");
   names.forEach((n) => {
     const o = document.createElement("option");
@@ -48,6 +49,18 @@ function fillVariants(names, descriptions) {
     sel.appendChild(o);
   });
   sel.value = "red";
+  sel.addEventListener("change", () => fitSeats(seats[sel.value] || 4));
+  fitSeats(seats[sel.value] || 4);
+}
+
+// A disabled select is not submitted: a three-player game sends one agent fewer.
+function fitSeats(n) {
+  const want = PAGE === "play" ? n - 1 : n;
+  document.querySelectorAll("select.agent").forEach((a, i) => { a.hidden = a.disabled = i >= want; });
+  const seat = document.querySelector("select[name=seat]");
+  if (!seat) return;
+  seat.querySelectorAll("option").forEach((o) => { o.hidden = o.disabled = Number(o.value) >= n; });
+  if (Number(seat.value) >= n) seat.value = "0";
 }
 
 function fillAgents(names) {
@@ -313,7 +326,7 @@ async function init() {
     return;
   }
   const info = await api("GET", "/api/agents");
-  fillVariants(info.variants, info.variant_descriptions);
+  fillVariants(info.variants, info.variant_descriptions, info.variant_seats || {});
   fillAgents(info.agents);
   $("setup").addEventListener("submit", start);
   $("leave").addEventListener("click", () => {
