@@ -600,13 +600,13 @@ fn three_player_tables_show_three_seats_and_their_kita() {
                 ]
             );
             let tiles = tiles_of(&svg);
-            for q in 0..3 {
+            for (q, most) in most.iter_mut().enumerate().take(3) {
                 let kita = tiles
                     .iter()
                     .filter(|t| t.1 == q.to_string() && t.2 == "kita" && t.0 == north.name())
                     .count();
                 assert_eq!(kita as u32, board.kita[q], "round {r} seat {q}");
-                most[q] = most[q].max(board.kita[q]);
+                *most = (*most).max(board.kita[q]);
             }
         }
         // The last decision may itself be a kita (ronned), after which no position is asked.
