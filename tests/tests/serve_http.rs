@@ -215,8 +215,8 @@ async fn a_whole_game_through_the_api_replays_from_its_log() {
     assert_eq!(status, StatusCode::NOT_FOUND);
 }
 
-/// Every four-player spec of rules/variants/ is offered to the page with its description (the
-/// page's board has four seats), and a game of a rule set other than Tenhou's starts.
+/// Every spec of rules/variants/ is offered to the page with its description and its seat count,
+/// and a game of a rule set other than Tenhou's starts.
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn every_rule_set_is_offered_with_its_description() {
     let app = app(Limits::default());
