@@ -25,28 +25,37 @@ use wall::build_wall;
 /// The plan's id of kita, which red's layout (four players) has no place for: one past its ids.
 pub const KITA: u32 = k::NUM_ACTIONS;
 
-/// The plan's action ids (red's, and [`KITA`]) in a variant's layout.
+/// The plan's action ids (red's, and [`KITA`]) in a variant's layout, or the other way.
 #[derive(Debug, Clone)]
 pub struct MoveIds {
-    from_red: rinshan_engine::env::ActionMap,
-    /// The variant's kita, `ACTION_ABSENT` for four players.
-    kita: u32,
+    map: rinshan_engine::env::ActionMap,
+    /// Kita on the side mapped from, and on the side mapped to (`ACTION_ABSENT` where that
+    /// side has none: four players).
+    kita: (u32, u32),
 }
 
 impl MoveIds {
-    /// The ids of `variant`.
+    /// The plan's ids in `variant`'s layout (what a replay plays).
     pub fn new(variant: Variant) -> MoveIds {
         MoveIds {
-            from_red: rinshan_engine::env::ActionMap::new(Variant::Red, variant),
-            kita: rinshan_engine::with_variant!(variant, v => v::ACTION_KITA),
+            map: rinshan_engine::env::ActionMap::new(Variant::Red, variant),
+            kita: (KITA, rinshan_engine::with_variant!(variant, v => v::ACTION_KITA)),
         }
     }
 
-    /// The variant's id of the plan's `action`; `None` where the variant has no such action.
+    /// `variant`'s ids as the plan's (what a recorder writes).
+    pub fn to_plan(variant: Variant) -> MoveIds {
+        MoveIds {
+            map: rinshan_engine::env::ActionMap::new(variant, Variant::Red),
+            kita: (rinshan_engine::with_variant!(variant, v => v::ACTION_KITA), KITA),
+        }
+    }
+
+    /// The id of `action` on the other side; `None` where that side has no such action.
     pub fn get(&self, action: u32) -> Option<u32> {
-        match action {
-            KITA => (self.kita != k::ACTION_ABSENT).then_some(self.kita),
-            _ => self.from_red.get(action),
+        match self.kita {
+            (from, to) if action == from => (to != k::ACTION_ABSENT).then_some(to),
+            _ => self.map.get(action),
         }
     }
 }

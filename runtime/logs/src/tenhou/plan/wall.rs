@@ -3,7 +3,7 @@
 use crate::tenhou::log::Round;
 use rinshan_engine::generated::red as four_seats;
 use rinshan_engine::tile::Tile;
-use rinshan_engine::{Variant, WallLayout};
+use rinshan_engine::Variant;
 
 /// Where the engine deals a four-player game from (rules/kernel/game_round.rs: `WALL_*`, the same
 /// for every four-player variant); the MJAI reader's four-player walls are placed by these.
@@ -17,11 +17,6 @@ pub(crate) const RINSHAN: usize = four_seats::WALL_RINSHAN as usize;
 pub(crate) fn table_of(seats: usize) -> Variant {
     let same = Variant::ALL.iter().copied().find(|v| v.seats() as usize == seats);
     same.unwrap_or(Variant::Red)
-}
-
-/// Where the engine deals a table of `seats` from.
-pub(crate) fn layout(seats: usize) -> WallLayout {
-    table_of(seats).wall()
 }
 
 /// Copies of each tile value in the red rules' set: four of each type, one of them red for the
@@ -54,7 +49,7 @@ pub(crate) fn tile_set_of(seats: usize) -> [u8; 37] {
 pub(super) fn build_wall(round: &Round, live: &[Tile], rinshan: &[Tile]) -> Result<[Tile; 136], String> {
     let seats = round.seats;
     let table = table_of(seats);
-    let w = layout(seats);
+    let w = table.wall();
     let at = |i: u32| i as usize;
     // Four kans end the round; kita adds a North each, four at most.
     let most_replacements = if seats == 3 { 8 } else { 4 };

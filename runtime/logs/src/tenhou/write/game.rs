@@ -6,12 +6,12 @@
 //! state before; the next round's wall and table from the state after.
 
 use crate::tenhou::log::{round_name, Discard, Game, LoggedDraw, LoggedWin, Outcome, Round};
-use crate::tenhou::plan::{Played, KITA};
-use rinshan_engine::env::{events, ActionMap, DrawRecord, WinRecord};
+use crate::tenhou::plan::{MoveIds, Played, KITA};
+use rinshan_engine::env::{events, DrawRecord, WinRecord};
 use rinshan_engine::generated::kernel::{self, GameState};
-// Red's ids: the recorder reads every variant's moves in red's layout (`to_red`).
+// Red's ids: the recorder reads every variant's moves in red's layout (`to_plan`).
 use rinshan_engine::generated::red as k;
-use rinshan_engine::{with_variant, Variant, WallLayout};
+use rinshan_engine::{with_variant, Variant};
 
 use super::outcome::{draw_outcome, limit_of, outcome_deltas, pao_share, points_text, yaku_list, Scoring};
 use super::round::{meld_count, Current};
@@ -50,12 +50,9 @@ pub struct GameRecorder {
     dropped: usize,
     /// The rules the game is played under.
     scoring: Scoring,
-    /// The variant's action ids in red's layout, in which the log's moves are read.
-    to_red: ActionMap,
-    /// The variant's kita, which red's layout has not.
-    kita: u32,
-    /// Where the variant's wall holds the indicators.
-    wall: WallLayout,
+    /// The variant's action ids as the plan's (red's layout and kita), in which the log's moves
+    /// are read.
+    to_plan: MoveIds,
 }
 
 impl GameRecorder {
@@ -87,12 +84,10 @@ impl GameRecorder {
             names: names.map(String::from),
             rule,
             rounds: Vec::new(),
-            current: Some(Current::start(state, variant.seats())?),
+            current: Some(Current::start(state, variant)?),
             dropped: 0,
             scoring: Scoring::of(variant),
-            to_red: ActionMap::new(variant, Variant::Red),
-            kita: with_variant!(variant, v => v::ACTION_KITA),
-            wall: variant.wall(),
+            to_plan: MoveIds::to_plan(variant),
         })
     }
 
@@ -115,7 +110,7 @@ impl GameRecorder {
     pub fn in_play(&self) -> Option<InPlay<'_>> {
         let cur = self.current.as_ref()?;
         let mut round = cur.round.clone();
-        let dora = self.wall.dora as usize;
+        let dora = self.scoring.variant.wall().dora as usize;
         round.dora = (0..cur.dora).filter_map(|i| cur.wall_tile(dora + i).ok()).collect();
         Some(InPlay {
             round,
@@ -154,7 +149,7 @@ impl GameRecorder {
 
     fn next_game(&mut self, after: &GameState) -> Result<(), String> {
         if after.auto_reset != 0 {
-            self.current = Some(Current::start(after, self.scoring.variant.seats())?);
+            self.current = Some(Current::start(after, self.scoring.variant)?);
         }
         Ok(())
     }
@@ -170,22 +165,20 @@ impl GameRecorder {
             ));
         }
         let in_red = |a: u32| {
-            self.to_red
+            self.to_plan
                 .get(a)
                 .ok_or_else(|| format!("action {a} is not an action of {}", self.scoring.variant))
         };
+        let action = in_red(action)?;
         let p = b.current;
         let seat = cur.at(p);
-        if action == self.kita {
-            cur.kita(seat);
-        }
-        let action = if action == self.kita { KITA } else { in_red(action)? };
         let discards = k::ACTION_DISCARD..k::ACTION_DISCARD + k::ACTION_DISCARD_COUNT;
         let discard = discards.contains(&action) || action == k::ACTION_TSUMOGIRI;
         match action {
             _ if discards.contains(&action) => cur.discard(seat, Some(action - k::ACTION_DISCARD))?,
             k::ACTION_TSUMOGIRI => cur.discard(seat, None)?,
             k::ACTION_RIICHI => cur.riichi_next[seat] = true,
+            KITA => cur.kita(seat),
             _ if (k::ACTION_SELF_KAN..k::ACTION_SELF_KAN + k::ACTION_SELF_KAN_COUNT).contains(&action) => {
                 cur.self_kan(b, p, action - k::ACTION_SELF_KAN)?
             }
@@ -203,9 +196,9 @@ impl GameRecorder {
                 }
             }
             let variant = self.scoring.variant;
-            let (before, after) = (variant.drawn_replacements(b), variant.drawn_replacements(a));
-            let drawn = if after.len() > before.len() {
-                Some((after[before.len()] as usize, true))
+            let replaced = |s: &GameState| with_variant!(variant, v => v::replacements_drawn(&mut { *s }));
+            let drawn = if replaced(a) > replaced(b) {
+                Some((variant.replacement_index(replaced(b)) as usize, true))
             } else {
                 (a.next_draw > b.next_draw).then_some((b.next_draw as usize, false))
             };
@@ -232,7 +225,7 @@ impl GameRecorder {
             self.next_game(a)?;
             return Ok(Some(game));
         }
-        let next = Current::start(a, self.scoring.variant.seats())?;
+        let next = Current::start(a, self.scoring.variant)?;
         self.check_next_table(&next, ronned_riichi)?;
         self.current = Some(next);
         Ok(None)
@@ -246,7 +239,7 @@ impl GameRecorder {
         };
         let dealer = b.dealer as usize;
         let seats = cur.seats as usize;
-        let round_wind = (b.round as usize / seats) % 4;
+        let round_wind = with_variant!(self.scoring.variant, v => v::round_wind_of(b.round)) as usize;
         let mut ronned_riichi = None;
         let outcome = if a.events & (events::RON | events::TSUMO) != 0 {
             let tsumo = a.events & events::TSUMO != 0;
@@ -287,7 +280,7 @@ impl GameRecorder {
             let riichi = |w: &LoggedWin| w.yaku.iter().any(|y| y.name == "riichi" || y.name == "double_riichi");
             if wins.iter().any(riichi) {
                 cur.round.ura = (0..cur.dora)
-                    .map(|i| cur.wall_tile(self.wall.ura as usize + i))
+                    .map(|i| cur.wall_tile(self.scoring.variant.wall().ura as usize + i))
                     .collect::<Result<_, _>>()?;
             }
             Outcome::Wins(wins)
@@ -302,7 +295,7 @@ impl GameRecorder {
             Outcome::Draw { kind, deltas }
         };
         cur.round.dora = (0..cur.dora)
-            .map(|i| cur.wall_tile(self.wall.dora as usize + i))
+            .map(|i| cur.wall_tile(self.scoring.variant.wall().dora as usize + i))
             .collect::<Result<_, _>>()?;
         cur.round.outcome = outcome;
         cur.round.line = self.rounds.len() + 1;

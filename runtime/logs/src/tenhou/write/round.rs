@@ -7,6 +7,7 @@ use crate::tenhou::plan::Played;
 use rinshan_engine::generated::kernel::{self, GameState};
 use rinshan_engine::generated::red as k;
 use rinshan_engine::tile::{Tile, TileType};
+use rinshan_engine::Variant;
 
 /// The round being played.
 #[derive(Debug, Clone)]
@@ -65,12 +66,13 @@ fn sort_tiles(tiles: &mut [Tile]) {
 }
 
 impl Current {
-    /// The round `s` has just dealt (the dealer has drawn its first tile and not acted yet), at a
-    /// table of `seats`.
-    pub(super) fn start(s: &GameState, seats: u32) -> Result<Current, String> {
+    /// The round `s`, a game of `variant`, has just dealt (the dealer has drawn its first tile and
+    /// not acted yet).
+    pub(super) fn start(s: &GameState, variant: Variant) -> Result<Current, String> {
         let wall = wall_of(s);
         let dealer = s.dealer;
-        let live_start = crate::tenhou::plan::wall::layout(seats as usize).live_start as usize;
+        let seats = variant.seats();
+        let live_start = variant.wall().live_start as usize;
         if s.next_draw != live_start as u32 + 1 || s.drawn != u32::from(wall[live_start]) || s.current != dealer {
             return Err("the state is not at the start of a round (record from a reset or a deal)".into());
         }
