@@ -53,10 +53,13 @@ def build(
     forced: bool = False,
     shard_size: Optional[int] = None,
     threads: Optional[int] = None,
+    variant: str = "red",
 ) -> dict:
     """Builds (or resumes) the dataset folder `out` from `inputs` (files, folders, glob patterns,
     tar archives): what `rinshan dataset` does (`shard_size` logs per shard, default 128).
-    Returns the summary (`skipped` lists each log left out with its reason)."""
+    `variant` is the rule set the logs are replayed in (`"sanma"` for three-player logs); logs of
+    other rules are skipped. Returns the summary (`skipped` lists each log left out with its
+    reason)."""
     return _core.dataset_build(
         _paths(inputs),
         str(out),
@@ -66,6 +69,7 @@ def build(
         bool(forced),
         None if shard_size is None else int(shard_size),
         threads,
+        str(variant),
     )
 
 
@@ -76,6 +80,7 @@ def iterate(
     players: Optional[Sequence[str]] = None,
     forced: bool = False,
     chunk: int = 64,
+    variant: str = "red",
 ) -> Iterator[dict]:
     """Each log of `inputs` replayed into rows without writing a dataset: one dict per log with
     `name` and either `skipped` (the reason) or the arrays of its rows (`observation` holds each
@@ -91,6 +96,7 @@ def iterate(
             None if seats is None else [int(s) for s in seats],
             None if players is None else [str(p) for p in players],
             bool(forced),
+            str(variant),
         )
         pending.clear()
         return records

@@ -12,9 +12,10 @@ use rinshan_dataset::{build, Build, Options, Seats};
 use rinshan_engine::env::action_names;
 use rinshan_engine::observe::Form;
 
-use crate::env::form_of;
+use crate::env::{form_of, parse};
 
 fn options(
+    variant: &str,
     forms: Vec<String>,
     seats: Option<Vec<u8>>,
     players: Option<Vec<String>>,
@@ -23,12 +24,17 @@ fn options(
     let forms = forms.iter().map(|f| form_of(f)).collect::<PyResult<Vec<Form>>>()?;
     check_forms(&forms).map_err(PyValueError::new_err)?;
     let seats = Seats::chosen(seats.as_deref(), players.as_deref()).map_err(PyValueError::new_err)?;
-    Ok(Options { forms, seats, forced })
+    Ok(Options {
+        variant: parse("variant", variant)?,
+        forms,
+        seats,
+        forced,
+    })
 }
 
 /// Builds (or resumes) a dataset folder; the summary as a dict.
 #[pyfunction]
-#[pyo3(signature = (inputs, out, forms, seats=None, players=None, forced=false, shard_size=None, threads=None))]
+#[pyo3(signature = (inputs, out, forms, seats=None, players=None, forced=false, shard_size=None, threads=None, variant="red"))]
 #[allow(clippy::too_many_arguments)]
 fn dataset_build<'py>(
     py: Python<'py>,
@@ -40,11 +46,12 @@ fn dataset_build<'py>(
     forced: bool,
     shard_size: Option<usize>,
     threads: Option<usize>,
+    variant: &str,
 ) -> PyResult<Bound<'py, PyDict>> {
     let b = Build {
         inputs,
         out: out.into(),
-        options: options(forms, seats, players, forced)?,
+        options: options(variant, forms, seats, players, forced)?,
         inputs_per_shard: shard_size.unwrap_or(rinshan_dataset::DEFAULT_INPUTS_PER_SHARD),
         threads: threads.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get())),
     };
@@ -79,7 +86,7 @@ fn dataset_sources(py: Python<'_>, inputs: Vec<String>) -> PyResult<Vec<(String,
 /// Every log of `inputs` replayed into rows: one dict per log, in order (`name`, and `skipped`
 /// with the reason or the arrays).
 #[pyfunction]
-#[pyo3(signature = (inputs, forms, seats=None, players=None, forced=false))]
+#[pyo3(signature = (inputs, forms, seats=None, players=None, forced=false, variant="red"))]
 fn dataset_records<'py>(
     py: Python<'py>,
     inputs: Vec<String>,
@@ -87,8 +94,9 @@ fn dataset_records<'py>(
     seats: Option<Vec<u8>>,
     players: Option<Vec<String>>,
     forced: bool,
+    variant: &str,
 ) -> PyResult<Bound<'py, PyList>> {
-    let options = options(forms, seats, players, forced)?;
+    let options = options(variant, forms, seats, players, forced)?;
     let work = || -> Result<(Vec<String>, Vec<Outcome>), String> {
         let mut units = Vec::new();
         for_each_unit(&sources(&inputs)?, &mut |unit| {
@@ -99,7 +107,7 @@ fn dataset_records<'py>(
         Ok((units.into_iter().map(|u| u.name).collect(), outcomes))
     };
     let (names, outcomes) = py.detach(work).map_err(PyValueError::new_err)?;
-    let na = action_names(rinshan_dataset::record::VARIANT).len();
+    let na = action_names(options.variant).len();
     let list = PyList::empty(py);
     for (name, outcome) in names.into_iter().zip(outcomes) {
         let d = PyDict::new(py);

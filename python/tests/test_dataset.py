@@ -20,7 +20,10 @@ from rinshan.env import split_record
 
 REPO = pathlib.Path(__file__).resolve().parents[2]
 TENHOU = sorted((REPO / "tests" / "data" / "tenhou").glob("*.json"))
-MJLOG = sorted((REPO / "tests" / "data" / "mjlog").glob("*.xml"))
+# Tenhou's log names carry the game's `GO type`: bit 0x10 is a three-player game.
+MJLOGS = sorted((REPO / "tests" / "data" / "mjlog").glob("*.xml"))
+MJLOG = [p for p in MJLOGS if int(p.name.split("-")[1], 16) & 0x10 == 0]
+SANMA = [p for p in MJLOGS if p not in MJLOG]
 TRAIN = REPO / "examples" / "train"
 HAVE_TORCH = importlib.util.find_spec("torch") is not None
 needs_torch = pytest.mark.skipif(not HAVE_TORCH and not os.environ.get("CI"), reason="no torch")
@@ -215,3 +218,31 @@ def test_behaviour_cloning_from_a_log_dataset(built, tmp_path):
     weighted = sum(k["rows"] * k["agreement"] for k in kinds.values()) / rows
     assert abs(weighted - report["agreement"]) < 1e-9
     assert {"discard", "pass"} <= set(kinds) and 0.0 < report["agreement"] <= 1.0
+
+
+def test_a_three_player_log_makes_a_sanma_dataset(tmp_path, cli):
+    # A red dataset leaves the sanma game out; a sanma one keeps its rows, mask 82 wide.
+    red = build(SANMA, tmp_path / "red", observation=None)
+    assert red["games"] == 0 and "played under sanma" in red["skipped"][0][1]
+    out = tmp_path / "sanma"
+    summary = build(SANMA, out, observation="planes", variant="sanma")
+    assert summary["games"] == 1 and summary["skipped"] == []
+    ds = Dataset(out)
+    assert ds.manifest["variant"] == "sanma" and ds.num_actions == 82
+    rows = ds[:]
+    game = rinshan.tenhou.read(SANMA[0], observation="planes")
+    assert game["variant"] == "sanma"
+    want = [rnd["action"][rnd["legal_action_mask"].sum(axis=1) > 1] for rnd in game["rounds"]]
+    np.testing.assert_array_equal(rows["action"], np.concatenate(want))
+    assert set(np.unique(rows["seat"])) == {0, 1, 2}
+    assert rows["scores"][0][:3].sum() == 105_000 and sorted(rows["ranks"][0][:3]) == [0, 1, 2]
+    # The CLI makes the same bytes.
+    mine = tmp_path / "cli"
+    cmd = [cli, "dataset", str(SANMA[0]), "-o", str(mine), "--observe", "planes"]
+    done = subprocess.run([*cmd, "--variant", "sanma", "--json"], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    for f in sorted(out.rglob("*")):
+        if f.is_file():
+            assert (mine / f.relative_to(out)).read_bytes() == f.read_bytes(), f
+    with pytest.raises(ValueError, match="variant"):
+        build(SANMA, tmp_path / "bad", variant="nine-player")

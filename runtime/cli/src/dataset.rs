@@ -5,8 +5,9 @@
 use std::path::PathBuf;
 
 use indicatif::{ProgressBar, ProgressStyle};
-use rinshan_dataset::{build, Build, Options, Progress, Seats, DEFAULT_INPUTS_PER_SHARD};
+use rinshan_dataset::{build, Build, Options, Progress, Seats, DEFAULT_INPUTS_PER_SHARD, DEFAULT_VARIANT};
 use rinshan_engine::observe::Form;
+use rinshan_engine::Variant;
 
 use crate::error::CliError;
 
@@ -19,6 +20,10 @@ pub struct Args {
     /// The dataset folder: made if missing, resumed if a run left it unfinished
     #[arg(short, long)]
     output: PathBuf,
+    /// The rules the logs are replayed in (sanma for three-player logs); logs of other rules are
+    /// skipped, as a dataset's rows share one action layout
+    #[arg(long, default_value_t = DEFAULT_VARIANT)]
+    variant: Variant,
     /// Observation forms of each row, comma-separated (planes, tokens, analysis; none for no
     /// observation)
     #[arg(long, default_value = "planes")]
@@ -47,7 +52,7 @@ pub struct Args {
 }
 
 /// Skipped logs listed in the summary; a large archive may skip thousands (three-player games in
-/// a Phoenix year), and the manifest keeps every one.
+/// a Phoenix year of four-player rows), and the manifest keeps every one.
 const SKIPS_SHOWN: usize = 20;
 
 fn forms(text: &str) -> Result<Vec<Form>, CliError> {
@@ -76,6 +81,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
         inputs: args.inputs.clone(),
         out: args.output.clone(),
         options: Options {
+            variant: args.variant,
             forms: forms(&args.observe)?,
             seats: seats(&args)?,
             forced: args.forced,

@@ -12,7 +12,7 @@ use rinshan_engine::env::action_names;
 
 use crate::inputs::{count, for_each_unit, sources, Unit};
 use crate::manifest::{check_forms, Manifest, ShardRecord, Skip};
-use crate::record::{record_units, GameRows, Options, Outcome, VARIANT};
+use crate::record::{record_units, GameRows, Options, Outcome};
 use crate::shard::write_shard;
 
 /// Logs per shard unless told: a shard of hanchan with the planes form is about 200 MB while it is
@@ -89,7 +89,7 @@ fn make_shard(out: &Path, index: usize, units: &[Unit], options: &Options) -> Re
         }
     }
     let name = shard_name(index);
-    let num_actions = action_names(VARIANT).len();
+    let num_actions = action_names(options.variant).len();
     let rows = write_shard(out, &name, &kept, &options.forms, num_actions)?;
     Ok(ShardRecord {
         name,

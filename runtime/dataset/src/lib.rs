@@ -22,7 +22,7 @@ pub mod record;
 pub mod shard;
 
 pub use build::{build, Build, Progress, Summary, DEFAULT_INPUTS_PER_SHARD};
-pub use record::{Options, Seats};
+pub use record::{Options, Seats, DEFAULT_VARIANT};
 
 #[cfg(test)]
 mod tests;

@@ -9,7 +9,7 @@ use rinshan_engine::env::action_names;
 use rinshan_engine::observe::Form;
 use serde::{Deserialize, Serialize};
 
-use crate::record::{Options, VARIANT};
+use crate::record::Options;
 use crate::shard::{GAME_ARRAYS, ROW_ARRAYS};
 
 /// What the manifest says the folder is.
@@ -147,8 +147,8 @@ impl Manifest {
         Manifest {
             format: FORMAT.into(),
             version: VERSION,
-            variant: VARIANT.to_string(),
-            actions: action_names(VARIANT),
+            variant: options.variant.to_string(),
+            actions: action_names(options.variant),
             forms,
             arrays,
             options: OptionsRecord {

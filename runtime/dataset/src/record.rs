@@ -14,8 +14,9 @@ use rinshan_logs::tenhou::replay::{mode_of, replay_visiting, Decision, Visitor};
 
 use crate::inputs::Unit;
 
-/// The variant logs are replayed in (red fives or not, the tiles say which are red).
-pub const VARIANT: Variant = Variant::Red;
+/// The rules datasets are made in unless asked otherwise: Tenhou's four-player rules (with red
+/// fives or not: the tiles say which are red).
+pub const DEFAULT_VARIANT: Variant = Variant::Red;
 
 /// Whose decisions become rows.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -73,6 +74,9 @@ impl Seats {
 /// What rows to make.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Options {
+    /// The rules the logs are replayed in; a log of other rules is skipped, as one dataset's rows
+    /// share one action layout.
+    pub variant: Variant,
     /// The observation forms each row holds (not the oracle: a row is what its seat saw).
     pub forms: Vec<Form>,
     /// Whose decisions.
@@ -175,7 +179,7 @@ impl Visitor for Recorder<'_> {
 /// Replays `games` (all of one length: East or half) and returns each one's outcome, in order.
 /// `Err` only for a bug of rinshan's (a row against its own mask) or an env that cannot be made.
 fn record_group(games: &[&Game], options: &Options) -> Result<Vec<Outcome>, String> {
-    let num_actions = action_names(VARIANT).len();
+    let num_actions = action_names(options.variant).len();
     let owned: Vec<Game> = games.iter().map(|&g| g.clone()).collect();
     let mut recorder = Recorder {
         games,
@@ -219,10 +223,10 @@ pub fn record(games: &[Game], options: &Options) -> Result<Vec<Outcome>, String>
     let modes: Vec<_> = games.iter().map(|g| mode_of(std::slice::from_ref(g))).collect();
     // A dataset's rows share one action layout: games of other rule sets are left out.
     for (o, g) in out.iter_mut().zip(games) {
-        if g.variant != VARIANT {
+        if g.variant != options.variant {
             *o = Some(Outcome::Skipped(format!(
-                "{}: played under {}, and datasets hold games of {VARIANT}",
-                g.path, g.variant
+                "{}: played under {}, and this dataset holds games of {}",
+                g.path, g.variant, options.variant
             )));
         }
     }

@@ -5,11 +5,12 @@
 use std::path::{Path, PathBuf};
 
 use rinshan_engine::observe::{record as observe_record, Form};
+use rinshan_engine::Variant;
 use rinshan_logs::read_log;
 use rinshan_logs::tenhou::position::round_positions;
 
 use crate::manifest::Manifest;
-use crate::record::{record, Options, Outcome, Seats, VARIANT};
+use crate::record::{record, Options, Outcome, Seats, DEFAULT_VARIANT as VARIANT};
 use crate::{build, Build};
 
 fn data(dir: &str) -> PathBuf {
@@ -35,6 +36,7 @@ fn scratch(name: &str) -> PathBuf {
 
 fn options(forms: &[Form]) -> Options {
     Options {
+        variant: VARIANT,
         forms: forms.to_vec(),
         seats: Seats::All,
         forced: false,
@@ -69,10 +71,17 @@ fn rows_are_the_decisions_of_each_round_replayed_alone() {
         .chain(logs("mjlog", "xml"))
         .collect();
     let games: Vec<_> = paths.iter().map(|p| read_log(p).unwrap()).collect();
-    let outcomes = record(&games, &options(&forms)).unwrap();
-    let na = rinshan_engine::env::action_names(VARIANT).len();
+    // Each game in the rules it was played under (the three-player mjlog under sanma).
+    assert!(games.iter().any(|g| g.variant == Variant::Sanma));
     let mut checked = 0;
-    for (game, outcome) in games.iter().zip(&outcomes) {
+    for game in &games {
+        let variant = game.variant;
+        let na = rinshan_engine::env::action_names(variant).len();
+        let options = Options {
+            variant,
+            ..options(&forms)
+        };
+        let outcome = &record(std::slice::from_ref(game), &options).unwrap()[0];
         let Outcome::Rows(rows) = outcome else {
             panic!("{}: {outcome:?}", game.path);
         };
@@ -96,7 +105,7 @@ fn rows_are_the_decisions_of_each_round_replayed_alone() {
                     assert_eq!(u32::from(rows.mask[row * na + a]), bit);
                 }
                 for (f, &form) in forms.iter().enumerate() {
-                    let want = observe_record(VARIANT, form, &p.state, p.seat);
+                    let want = observe_record(variant, form, &p.state, p.seat);
                     let got = &rows.observations[f][row * form.bytes()..(row + 1) * form.bytes()];
                     assert!(
                         got == want.as_slice(),
@@ -112,12 +121,14 @@ fn rows_are_the_decisions_of_each_round_replayed_alone() {
         checked += row;
         // The final standings: the scores sum to the starting points (no sticks left over at the
         // end: the top seat takes them), and the ranks are a permutation ordered by score.
-        assert_eq!(rows.scores.iter().sum::<i32>(), 100_000, "{}", game.path);
-        let mut ranks = rows.ranks;
+        let seats = variant.seats() as usize;
+        let start: i32 = game.rounds[0].scores.iter().sum();
+        assert_eq!(rows.scores.iter().sum::<i32>(), start, "{}", game.path);
+        let mut ranks = rows.ranks[..seats].to_vec();
         ranks.sort();
-        assert_eq!(ranks, [0, 1, 2, 3]);
-        for a in 0..4 {
-            for b in 0..4 {
+        assert_eq!(ranks, (0..seats as u8).collect::<Vec<_>>());
+        for a in 0..seats {
+            for b in 0..seats {
                 if rows.ranks[a] < rows.ranks[b] {
                     assert!(rows.scores[a] >= rows.scores[b], "{}: {rows:?}", game.path);
                 }
@@ -220,7 +231,11 @@ fn bad_logs_are_skipped_with_file_and_reason_and_the_rest_is_kept() {
         "<mjloggm ver=\"2.3\"><GO type=\"169\" lobby=\"0\"/><UN n0=",
     )
     .unwrap();
-    let xml = std::fs::read_to_string(&logs("mjlog", "xml")[0]).unwrap();
+    let four_player = logs("mjlog", "xml")
+        .into_iter()
+        .find(|p| read_log(p).unwrap().variant == VARIANT)
+        .unwrap();
+    let xml = std::fs::read_to_string(four_player).unwrap();
     let first_discard = xml.find("<D").unwrap();
     let end = xml[first_discard..].find("/>").unwrap() + first_discard;
     let illegal = format!("{}<D135{}", &xml[..first_discard], &xml[end..]);
@@ -266,4 +281,23 @@ fn games_of_other_rule_sets_are_skipped() {
         other => panic!("{other:?}"),
     }
     assert!(matches!(outcomes[1], Outcome::Rows(_)), "{:?}", outcomes[1]);
+    // The three-player mjlog is a game of sanma: skipped from a red dataset, kept in a sanma one.
+    let sanma = logs("mjlog", "xml")
+        .into_iter()
+        .map(|p| read_log(&p).unwrap())
+        .find(|g| g.variant == Variant::Sanma)
+        .unwrap();
+    let red_rows = record(std::slice::from_ref(&sanma), &options(&[])).unwrap();
+    match &red_rows[0] {
+        Outcome::Skipped(why) => assert!(
+            why.contains("played under sanma, and this dataset holds games of red"),
+            "{why}"
+        ),
+        other => panic!("{other:?}"),
+    }
+    let sanma_options = Options {
+        variant: Variant::Sanma,
+        ..options(&[])
+    };
+    assert!(matches!(record(&[sanma], &sanma_options).unwrap()[0], Outcome::Rows(_)));
 }

@@ -46,12 +46,12 @@ pub(super) fn all_known<const N: usize>(ps: [Pai; N], what: &str) -> Result<[Til
         .map_err(|_| format!("{what} has the wrong number of tiles"))
 }
 
-/// Where seat `from` sits seen from `me` at a table of `seats`.
-pub(super) fn rel(me: usize, from: usize, seats: usize) -> Result<Rel, String> {
+/// Where seat `from` sits seen from `me`.
+pub(super) fn rel(me: usize, from: usize) -> Result<Rel, String> {
     if me == from {
         return Err(format!("seat {me} calls its own discard"));
     }
-    Ok(Rel::between(me, from, seats))
+    Ok(Rel::between(me, from))
 }
 
 impl Open {
@@ -114,7 +114,7 @@ impl Open {
 
     fn called(&mut self, actor: usize, target: usize, pai: Tile) -> Result<Rel, String> {
         match self.last_discard.take() {
-            Some((s, t)) if s == target && t == pai => rel(actor, target, self.round.seats),
+            Some((s, t)) if s == target && t == pai => rel(actor, target),
             _ => Err(format!(
                 "seat {actor} calls {} from seat {target}, which is not the discard just made",
                 Pai::known(pai)

@@ -192,8 +192,6 @@ pub(crate) fn round_so_far(
 }
 
 struct Walk<'r> {
-    /// Players at the table.
-    seats: usize,
     doras: std::slice::Iter<'r, Tile>,
     /// An open or added kan's dora waits for the kanner's discard (or the next kan).
     reveal_at_discard: bool,
@@ -221,7 +219,6 @@ impl<'r> Walk<'r> {
             tehais: std::array::from_fn(|s| pais(&round.hands[s])),
         });
         Ok(Walk {
-            seats: round.seats,
             doras: round.dora[1..].iter(),
             reveal_at_discard: false,
             reveal_at_tsumo: false,
@@ -268,7 +265,7 @@ impl<'r> Walk<'r> {
                     }),
                     Draw::Pon { called, own, from } => out.push(Event::Pon {
                         actor,
-                        target: seat(from.seat_of(s, self.seats)),
+                        target: seat(from.seat_of(s)),
                         pai: Pai::known(called),
                         consumed: own.map(Pai::known),
                     }),
@@ -276,7 +273,7 @@ impl<'r> Walk<'r> {
                         self.open_kan();
                         out.push(Event::Daiminkan {
                             actor,
-                            target: seat(from.seat_of(s, self.seats)),
+                            target: seat(from.seat_of(s)),
                             pai: Pai::known(called),
                             consumed: own.map(Pai::known),
                         });

@@ -4,13 +4,16 @@
 //!
 //! | tag | event |
 //! |---|---|
-//! | `GO type` | the rule: bit 0x02 no red fives, 0x08 half game (else East only), room bits 0x20/0x80; three-player (0x10) and no kuitan (0x04) are refused by name |
+//! | `GO type` | the rule: bit 0x02 no red fives, 0x08 half game (else East only), 0x10 three players, room bits 0x20/0x80; no kuitan (0x04) is refused by name |
 //! | `UN n0..n3` | the names (URL-encoded); a later `UN` is a reconnect |
 //! | `INIT seed ten oya hai0..3` | `start_kyoku` (seed: round, honba, sticks, dice, dora id; ten: scores / 100) |
 //! | `T/U/V/W<id>`, `D/E/F/G<id>` | draws and discards of seats 0-3; a discard of the id just drawn is tsumogiri |
-//! | `N who m` | a call or kan ([`super::meld`]) |
+//! | `N who m` | a call, a kan or (three players) a kita ([`super::meld`]) |
 //! | `REACH step=1/2`, `DORA hai` | `reach` / `reach_accepted`, `dora` |
 //! | `AGARI`, `RYUUKYOKU` | `hora` (deltas from `sc`, yaku by Tenhou's ids, ura) / `ryukyoku` (its `type`, tenpai hands) |
+//!
+//! Three players keep Tenhou's four places with the fourth empty: `hai3` is empty, the fourth
+//! score 0, and a meld's direction counts places mod 4 (so seats 0 and 2 sit across).
 //!
 //! `SHUFFLE`, `TAIKYOKU`, `BYE` and `FURITEN` change nothing a replay needs.
 
@@ -116,6 +119,7 @@ pub fn parse_game(path: &str, text: &str) -> Result<Game, LogError> {
         red: true,
         rule: String::new(),
         east_only: false,
+        seats: 4,
         names: Default::default(),
         named: false,
         started: false,
@@ -245,6 +249,8 @@ struct State {
     red: bool,
     rule: String,
     east_only: bool,
+    /// Players at the table (`GO`'s flag 0x10: three).
+    seats: u8,
     names: [String; 4],
     named: bool,
     started: bool,
@@ -285,6 +291,14 @@ impl State {
         Ok(out)
     }
 
+    /// Refuses a move of the fourth place at a three-player table.
+    fn sits(&self, seat: usize) -> Result<(), String> {
+        if seat >= usize::from(self.seats) {
+            return Err(format!("seat {seat} moves at a table of {} players", self.seats));
+        }
+        Ok(())
+    }
+
     /// The events a tag stands for.
     fn tag(&mut self, tag: &Tag) -> Result<Vec<Event>, String> {
         let name = tag.name;
@@ -293,6 +307,7 @@ impl State {
         if !rest.is_empty() && rest.bytes().all(|b| b.is_ascii_digit()) {
             let id: i64 = rest.parse().map_err(|_| format!("{rest:?} is not a tile id"))?;
             if let Some(seat) = "TUVW".find(first) {
+                self.sits(seat)?;
                 self.last_draw[seat] = u8::try_from(id).ok();
                 return Ok(vec![Event::Tsumo {
                     actor: seat as u8,
@@ -300,6 +315,7 @@ impl State {
                 }]);
             }
             if let Some(seat) = "DEFG".find(first.to_ascii_uppercase()) {
+                self.sits(seat)?;
                 let tsumogiri = first.is_ascii_lowercase() || self.last_draw[seat] == u8::try_from(id).ok();
                 self.last_draw[seat] = None;
                 return Ok(vec![Event::Dahai {
@@ -367,7 +383,8 @@ impl State {
             .parse()
             .map_err(|_| "`type` is not a number".to_string())?;
         if flags & 0x10 != 0 {
-            return Err(format!("type {flags}: three-player (flag 0x10) is not supported yet"));
+            self.seats = 3;
+            self.builder.three_players();
         }
         if flags & 0x04 != 0 {
             return Err(format!(
@@ -378,7 +395,8 @@ impl State {
         self.east_only = flags & 0x08 == 0;
         let room = ((flags & 0x20) >> 4 | (flags & 0x80) >> 7) as usize;
         self.rule = format!(
-            "{}{}喰{}{}",
+            "{}{}{}喰{}{}",
+            if self.seats == 3 { "三" } else { "" },
             ROOMS[room],
             if self.east_only { "東" } else { "南" },
             if self.red { "赤" } else { "" },
@@ -436,6 +454,9 @@ impl State {
             hand.sort_by_key(|t| (t.kind(), t.is_red()));
             *tehai = hand.into_iter().map(Pai::known).collect();
         }
+        if self.seats == 3 && !tehais[3].is_empty() {
+            return Err("`hai3` deals a hand to the fourth place, which three players leave empty".into());
+        }
         self.in_round = true;
         self.last_draw = [None; 4];
         events.push(Event::StartKyoku {
@@ -453,6 +474,7 @@ impl State {
 
     fn meld(&mut self, tag: &Tag) -> Result<Vec<Event>, String> {
         let actor = tag.seat("who")?;
+        self.sits(usize::from(actor))?;
         let code: u16 = tag
             .need("m")?
             .parse()
@@ -488,7 +510,16 @@ impl State {
                 actor,
                 consumed: self.pais(tiles)?,
             },
-            Meld::North { .. } => return Err("a North set aside (three-player) in a four-player game".into()),
+            Meld::North { tile } => {
+                if self.seats == 4 {
+                    return Err("a North set aside (kita) in a four-player game".into());
+                }
+                let pai = self.pai(i64::from(tile))?;
+                if pai != Pai::known(Tile::plain(TileType::NORTH)) {
+                    return Err(format!("a kita of {pai}, not North"));
+                }
+                Event::Kita { actor, pai }
+            }
         }])
     }
 

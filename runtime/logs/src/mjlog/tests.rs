@@ -1,13 +1,13 @@
-//! The real Phoenix-room games in tests/data/mjlog, each as Tenhou's mjlog XML and as the
-//! tenhou.net/6 JSON Tenhou's converter gives for it: both must read as the same game, and it
-//! must replay exactly.
+//! The real Phoenix-room games in tests/data/mjlog, each as Tenhou's mjlog XML and, for the
+//! four-player ones, as the tenhou.net/6 JSON Tenhou's converter gives for it: both must read as
+//! the same game, and it must replay exactly.
 
 use std::path::PathBuf;
 
 use rinshan_engine::env::Backend;
 
 use super::read::{is_mjlog, parse_game};
-use crate::tenhou::log::{collect_files, Game};
+use crate::tenhou::log::{collect_files, Discard, Draw, Game, Rel};
 use crate::tenhou::replay::replay;
 use crate::tenhou::write::game_text;
 
@@ -68,16 +68,81 @@ fn the_mjlog_games_replay_exactly() {
     assert!(report.all_agree(), "{report:?}");
 }
 
+/// The three-player Phoenix game (`三鳳南喰赤`, `GO type` 185), which has no JSON twin.
+const SANMA: &str = "2014091101gm-00b9-0000-5ca6b487.xml";
+
+/// The meld codes of the `N` tags of an mjlog, read from its text alone.
+fn meld_codes(xml: &str) -> Vec<u16> {
+    xml.split("<N ")
+        .skip(1)
+        .map(|tag| {
+            let m = &tag[tag.find("m=\"").expect("an N tag has m") + 3..];
+            m[..m.find('"').expect("quoted")].parse().expect("a number")
+        })
+        .collect()
+}
+
+#[test]
+fn a_real_three_player_mjlog_replays_exactly() {
+    let xml = std::fs::read_to_string(format!("{DATA}/{SANMA}")).expect("reads");
+    let game = parse_game(SANMA, &xml).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(game.variant, rinshan_engine::Variant::Sanma);
+    assert_eq!(game.rule, "三鳳南喰赤");
+    assert_eq!(game.rounds.len(), xml.matches("<INIT ").count());
+    assert!(game.rounds.iter().all(|r| r.seats == 3 && r.hands[3].is_empty()));
+    // Meld codes straight from the text: bit 5 alone is a North set aside, and a pon or open
+    // kan's low two bits count the places from caller to discarder, 2 for across.
+    let codes = meld_codes(&xml);
+    let kita = codes.iter().filter(|&&m| m & 0x3c == 0x20).count();
+    let across = codes
+        .iter()
+        .filter(|&&m| m & 0x3c != 0x20 && m & 0x14 == 0 && m & 3 == 2)
+        .count();
+    assert!(kita > 20 && across > 0, "{kita} {across}");
+    let discards = game.rounds.iter().flat_map(|r| r.discards.iter().flatten());
+    assert_eq!(discards.filter(|d| **d == Discard::Kita).count(), kita);
+    // Tenhou's four places with the fourth empty put seat 2 across from seat 0.
+    let calls = game.rounds.iter().flat_map(|r| r.draws.iter().flatten());
+    let from_across = calls.filter(|d| {
+        matches!(
+            d,
+            Draw::Pon { from: Rel::Across, .. } | Draw::OpenKan { from: Rel::Across, .. }
+        )
+    });
+    assert_eq!(from_across.count(), across);
+    // Written as tenhou.net/6 it reads back as the same game.
+    let text = game_text(&game);
+    let back = crate::tenhou::log::parse_game("back.json", &text).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(back.rounds.len(), game.rounds.len());
+    for (a, b) in game.rounds.iter().zip(&back.rounds) {
+        let (mut a, mut b) = (a.clone(), b.clone());
+        (a.line, b.line) = (0, 0);
+        assert_eq!(a, b);
+    }
+    let report = replay(std::slice::from_ref(&game), Backend::Cpu).expect("the CPU env runs");
+    assert!(report.all_agree(), "{report:?}");
+    assert_eq!(report.rounds_replayed, game.rounds.len());
+    assert_eq!(report.wins + report.draws, game.rounds.len());
+    assert_eq!(report.wins, xml.matches("<AGARI ").count());
+}
+
 #[test]
 fn what_rinshan_does_not_play_or_cannot_read_is_refused_by_name() {
     let xml = std::fs::read_to_string(format!("{DATA}/2019021004gm-00a9-0000-e2f6516d.xml")).expect("reads");
     let refusal = |text: &str| parse_game("t.xml", text).expect_err("refused").to_string();
-    let cases: [(String, &str); 10] = [
+    let cases: [(String, &str); 11] = [
         (
             xml.replacen("<DORA ", "<DORAX ", 1),
             "<DORAX>: not a tag of Tenhou's mjlog format",
         ),
-        (xml.replace("type=\"169\"", "type=\"185\""), "three-player (flag 0x10)"),
+        (
+            xml.replace("type=\"169\"", "type=\"185\""),
+            "`hai3` deals a hand to the fourth place, which three players leave empty",
+        ),
+        (
+            xml.replacen("<N who=\"3\" m=\"54647\" />", "<N who=\"3\" m=\"30752\" />", 1),
+            "a North set aside (kita) in a four-player game",
+        ),
         (xml.replace("type=\"169\"", "type=\"173\""), "no kuitan (flag 0x04)"),
         (xml[..xml.len() / 2].to_string(), "t.xml: line 1, column"),
         (
@@ -106,6 +171,23 @@ fn what_rinshan_does_not_play_or_cannot_read_is_refused_by_name() {
     ];
     for (text, expected) in cases {
         assert_ne!(text, xml, "the case changes the log ({expected})");
+        let message = refusal(&text);
+        assert!(message.contains(expected), "{expected}: {message}");
+    }
+    let sanma = std::fs::read_to_string(format!("{DATA}/{SANMA}")).expect("reads");
+    let edits = [
+        (
+            sanma.replacen("<T66/>", "<W66/>", 1),
+            "seat 3 moves at a table of 3 players",
+        ),
+        // Meld code 32: bit 5 (set aside) on tile id 0, a 1m.
+        (
+            sanma.replacen("<N who=\"0\" m=\"31264\" />", "<N who=\"0\" m=\"32\" />", 1),
+            "a kita of 1m, not North",
+        ),
+    ];
+    for (text, expected) in edits {
+        assert_ne!(text, sanma, "the case changes the log ({expected})");
         let message = refusal(&text);
         assert!(message.contains(expected), "{expected}: {message}");
     }

@@ -560,25 +560,25 @@ fn parse_round(ctx: &mut Ctx, index: Option<usize>, v: &Value, seats: usize) -> 
     })
 }
 
-/// What only one table size has: chi and calls from across at four seats, kita at three.
+/// What only one table size has: chi at four seats, kita at three; and at three, no call from
+/// the empty fourth place.
 fn check_seats(ctx: &Ctx, seat: usize, seats: usize, draws: &[Draw], discards: &[Discard]) -> Result<(), LogError> {
-    let across = |from: &Rel| *from == Rel::Across;
+    let empty = |from: &Rel| from.seat_of(seat) >= seats;
     for (i, d) in draws.iter().enumerate() {
-        let wrong = match d {
-            Draw::Chi { .. } => seats == 3,
-            Draw::Pon { from, .. } | Draw::OpenKan { from, .. } => seats == 3 && across(from),
-            Draw::Tile(_) => false,
+        let message = match d {
+            Draw::Chi { .. } if seats == 3 => "a chi: three players have none",
+            Draw::Pon { from, .. } | Draw::OpenKan { from, .. } if empty(from) => {
+                "a call from the fourth place, which three players leave empty"
+            }
+            _ => continue,
         };
-        if wrong {
-            let message = "a chi or a call from across: three players have neither";
-            return Err(ctx.err(format!("draws of seat {seat}, entry {i}"), message));
-        }
+        return Err(ctx.err(format!("draws of seat {seat}, entry {i}"), message));
     }
     for (i, d) in discards.iter().enumerate() {
         let message = match d {
             Discard::Kita if seats == 4 => "a kita (f44): four players keep North",
-            Discard::AddedKan { from, .. } if seats == 3 && across(from) => {
-                "an added kan on a pon from across: three players have no one across"
+            Discard::AddedKan { from, .. } if empty(from) => {
+                "an added kan on a pon from the fourth place, which three players leave empty"
             }
             _ => continue,
         };

@@ -242,7 +242,7 @@ impl<'a> Walker<'a> {
             };
             match d {
                 Draw::Pon { called, from, .. } | Draw::OpenKan { called, from, .. }
-                    if from.seat_of(q, seats) == p && *called == t =>
+                    if from.seat_of(q) == p && *called == t =>
                 {
                     callers.push((q, *d));
                 }

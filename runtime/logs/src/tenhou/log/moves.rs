@@ -18,21 +18,24 @@ pub enum Rel {
 }
 
 impl Rel {
-    /// The absolute seat this direction points at, seen from seat `me` at a table of `seats`
-    /// (three players have no one across).
-    pub fn seat_of(self, me: usize, seats: usize) -> usize {
+    /// The place this direction points at, seen from seat `me`. Tenhou's logs seat every table at
+    /// four places, and three players leave the fourth (North's) empty: from seat 0 the place
+    /// before is that empty one and seat 2 sits across, so a three-player call between seats 0
+    /// and 2 is written as from across (as its mjlog's meld codes count it, (discarder - caller)
+    /// mod 4). At three seats the answer is 3 for a direction that points at the empty place.
+    pub fn seat_of(self, me: usize) -> usize {
         match self {
-            Rel::Left => (me + seats - 1) % seats,
-            Rel::Across => (me + 2) % seats,
-            Rel::Right => (me + 1) % seats,
+            Rel::Left => (me + 3) % 4,
+            Rel::Across => (me + 2) % 4,
+            Rel::Right => (me + 1) % 4,
         }
     }
 
-    /// The direction of seat `other` seen from seat `me` at a table of `seats`.
-    pub fn between(me: usize, other: usize, seats: usize) -> Rel {
-        match (other + seats - me) % seats {
+    /// The direction of seat `other` seen from seat `me`, at Tenhou's four places.
+    pub fn between(me: usize, other: usize) -> Rel {
+        match (other + 4 - me) % 4 {
             1 => Rel::Right,
-            2 if seats == 4 => Rel::Across,
+            2 => Rel::Across,
             _ => Rel::Left,
         }
     }

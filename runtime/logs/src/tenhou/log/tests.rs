@@ -98,20 +98,16 @@ fn tenhou_codes_map_to_our_values() {
 
 #[test]
 fn directions_and_round_names() {
-    assert_eq!([Rel::Left, Rel::Across, Rel::Right].map(|r| r.seat_of(0, 4)), [3, 2, 1]);
-    assert_eq!([Rel::Left, Rel::Across, Rel::Right].map(|r| r.seat_of(3, 4)), [2, 1, 0]);
-    // Three players: the seat before 0 is 2, and no one sits across.
-    assert_eq!([Rel::Left, Rel::Right].map(|r| r.seat_of(0, 3)), [2, 1]);
-    assert_eq!([Rel::Left, Rel::Right].map(|r| r.seat_of(2, 3)), [1, 0]);
-    for seats in [3, 4] {
-        for me in 0..seats {
-            for other in (0..seats).filter(|&o| o != me) {
-                assert_eq!(
-                    Rel::between(me, other, seats).seat_of(me, seats),
-                    other,
-                    "{me} {other} {seats}"
-                );
-            }
+    assert_eq!([Rel::Left, Rel::Across, Rel::Right].map(|r| r.seat_of(0)), [3, 2, 1]);
+    assert_eq!([Rel::Left, Rel::Across, Rel::Right].map(|r| r.seat_of(3)), [2, 1, 0]);
+    // Three players sit at Tenhou's four places with the fourth empty: seat 2 is across from
+    // seat 0 (the real sanma mjlog in tests/data/mjlog has seat 2 pon seat 0's discards with
+    // meld code direction 2), and seat 1's across is the empty place.
+    assert_eq!([Rel::Left, Rel::Across, Rel::Right].map(|r| r.seat_of(0)), [3, 2, 1]);
+    assert_eq!([Rel::Left, Rel::Across, Rel::Right].map(|r| r.seat_of(2)), [1, 0, 3]);
+    for me in 0..4 {
+        for other in (0..4).filter(|&o| o != me) {
+            assert_eq!(Rel::between(me, other).seat_of(me), other, "{me} {other}");
         }
     }
     assert_eq!(round_name(0, 0), "East 1, 0 honba");
@@ -665,13 +661,14 @@ fn three_player_records() {
     // A four-player game has no one to set North aside for it, and no three-player log plays
     // under a four-player rule set.
     refused(&|r| r["log"][0][6] = json!(["f45", 60]), "not a discard letter");
+    // Seat 0's place before is the empty fourth one (seat 2 sits across from it).
     refused(
-        &|r| r["log"][0][5] = json!(["19p1919", 22]),
-        "three players have neither",
+        &|r| r["log"][0][5] = json!(["p191919", 22]),
+        "a call from the fourth place, which three players leave empty",
     );
     refused(
         &|r| r["log"][0][5] = json!(["c212223", 22]),
-        "three players have neither",
+        "a chi: three players have none",
     );
     let mut four = first_record();
     round_of(&mut four)[6] = json!(["f44"]);

@@ -209,7 +209,7 @@ impl Current {
         let called = tile(b.claim_tile)?;
         let t = u32::from(called.kind());
         let seat = self.at(q);
-        let from = Rel::between(q as usize, b.claim_from as usize, self.seats as usize);
+        let from = Rel::between(seat, self.at(b.claim_from));
         let (black, red) = copies(t)?;
         let entry = match choice {
             k::ACTION_PON | k::ACTION_PON_RED => {
