@@ -525,6 +525,10 @@ fn view_seat_planes(s: &mut GameState, seat: u32, o: &mut ObsPlanes) {
                 add_plane(o, base + P_SEAT_CLOSED_KAN, t, 1u32);
             }
         }
+        // Three players' Norths set aside lie beside the seat's melds, where the tables show them.
+        if SEATS == 3u32 {
+            add_plane(o, base + P_SEAT_MELD_TILES, NORTH, kita_count(s, q));
+        }
         for r in 0u32..3u32 {
             let i: u32 = r * 8u32 + q * 2u32;
             put_set(o, base + log_set_row(r), [sets[i as usize], sets[(i + 1u32) as usize]]);

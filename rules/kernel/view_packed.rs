@@ -176,6 +176,10 @@ fn packed_seat_rows(s: &mut GameState, seat: u32, o: &mut ObsPacked) {
                 set_add(&mut closed_kans, t);
             }
         }
+        // As the planes: three players' Norths set aside count with the seat's melds.
+        if SEATS == 3u32 {
+            add_count(o, meld_tiles, NORTH, kita_count(s, q));
+        }
         put_seat_bits(o, j, P_SEAT_CLOSED_KAN, closed_kans);
         for r in 0u32..3u32 {
             let i: u32 = r * 8u32 + q * 2u32;

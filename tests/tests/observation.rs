@@ -271,6 +271,59 @@ fn event_tokens_replay_the_rivers_and_own_draws() {
     let _ = OBSERVE_CURRENT;
 }
 
+/// Three players: each seat block's `meld_tiles` row counts, at North, the Norths the seat set
+/// aside (counted here from the actions played) beside those of its melds; the fourth block stays
+/// empty. Both forms that hold the row (planes, packed) are checked, the packed one through
+/// `both`'s unpacking.
+#[test]
+fn sanma_planes_show_each_seats_norths_set_aside() {
+    let k = kernels(Variant::Sanma);
+    let names = rinshan_engine::env::action_names(Variant::Sanma);
+    let kita_action = names.iter().position(|n| n == "kita").expect("sanma has kita") as u32;
+    let north = 30usize;
+    let row = |j: u32| ((kernel::P_SEAT + j * kernel::P_SEAT_ROWS + kernel::P_SEAT_MELD_TILES) * 34) as usize;
+    let (mut positions, mut with_kita) = (0, 0);
+    for game in 0..12u64 {
+        let mut s = (k.new)(reset_input(70 + game, 0, None));
+        let mut policy = Rng::new(game);
+        let mut kita = [0u32; 3];
+        let mut round = (s.rounds, s.games);
+        while s.terminated == 0 {
+            if (s.rounds, s.games) != round {
+                round = (s.rounds, s.games);
+                kita = [0; 3];
+            }
+            for seat in 0..3u32 {
+                let (planes, _) = both(&k, &s, seat);
+                let bytes: &[u8] = bytemuck::cast_slice(&planes);
+                for j in 0..3u32 {
+                    let q = (seat + j) % 3;
+                    let in_melds: u32 = (0..kernel::meld_count(&mut s.clone(), q))
+                        .map(|i| s.melds[(q * 4 + i) as usize])
+                        .filter(|&m| kernel::meld_tile(m) == north as u32)
+                        .map(|m| if kernel::meld_kind(m) == kernel::MELD_PON { 3 } else { 4 })
+                        .sum();
+                    assert_eq!(
+                        u32::from(bytes[row(j) + north]),
+                        kita[q as usize] + in_melds,
+                        "game {game}, step {}: seat {seat}'s block {j}",
+                        s.steps
+                    );
+                    with_kita += usize::from(kita[q as usize] > 0);
+                }
+                assert!(bytes[row(3)..row(3) + 34].iter().all(|&b| b == 0));
+                positions += 1;
+            }
+            let a = policy.pick_legal(&s.mask);
+            if a == kita_action {
+                kita[s.current as usize] += 1;
+            }
+            (k.step)(&mut s, a);
+        }
+    }
+    assert!(positions > 3_000 && with_kita > 1_000, "{positions} {with_kita}");
+}
+
 /// The analysis tier against its definition, computed the slow way with the shanten kernel (itself
 /// checked against the shanten case files): after each discard, the shanten and the unseen copies
 /// of every draw that lowers it; for a hand waiting to draw, those draws; the waits as in the

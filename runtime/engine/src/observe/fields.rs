@@ -442,7 +442,7 @@ pub static SEAT_ROWS: [Rows; 11] = [
     rows(k::P_SEAT_LAST_TURN, 1, "last_turn", 24, "1-based place in the river of the last copy (0 = none)"),
     rows(k::P_SEAT_RIICHI_TILE, 1, "riichi_tile", 1, "the tile discarded with the seat's riichi declaration"),
     rows(k::P_SEAT_SAFE, 1, "safe", 1, "genbutsu: a ron on the type by this seat is impossible (its own discards, anything discarded since its last discard or after its riichi)"),
-    rows(k::P_SEAT_MELD_TILES, 1, "meld_tiles", 4, "tiles of the type in the seat's melds"),
+    rows(k::P_SEAT_MELD_TILES, 1, "meld_tiles", 4, "tiles of the type in the seat's melds (three players: and its Norths set aside)"),
     rows(k::P_SEAT_CALLED_IN, 1, "called_in", 1, "types the seat took from another's discard for a meld"),
     rows(k::P_SEAT_CLOSED_KAN, 1, "closed_kan", 1, "types of the seat's closed kans"),
     rows(k::P_SEAT_LAST_DISCARD, 1, "last_discard", 1, "the seat's latest discard"),
