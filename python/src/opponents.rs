@@ -31,6 +31,7 @@ pub(crate) struct Opponents {
     /// behind a lock (taken only by the env's `&mut` methods: never contended).
     bots: Option<Mutex<BatchBots>>,
     seating: Vec<[Option<MjaiEntrant>; 4]>,
+    variant: Variant,
 }
 
 fn seconds(what: &str, s: f64) -> PyResult<Duration> {
@@ -53,7 +54,9 @@ impl Opponents {
         }
         check_games(variant, mode, backend).map_err(|e| {
             PyValueError::new_err(match e {
-                Unplayable::Rules => "MJAI opponents play the red rules (variant=\"red\") in east or half games",
+                Unplayable::Rules => {
+                    "MJAI opponents play Tenhou's rules (variant=\"red\", or \"sanma\" for three players) in east or half games"
+                }
                 Unplayable::Backend => {
                     "MJAI opponents need backend=\"cpu\": each bot follows its game's state after every step"
                 }
@@ -78,19 +81,24 @@ impl Opponents {
         let seating = (0..num_envs)
             .map(|i| {
                 let hero = seats[if seats.len() == 1 { 0 } else { i }];
-                std::array::from_fn(|p| (p as u32 != hero).then(|| entrant.clone()))
+                // A three-player game's fourth place is never played.
+                std::array::from_fn(|p| (p as u32 != hero && p < variant.seats() as usize).then(|| entrant.clone()))
             })
             .collect();
-        Ok(Opponents { bots: None, seating })
+        Ok(Opponents {
+            bots: None,
+            seating,
+            variant,
+        })
     }
 
     /// New games in every env (after a reset): the bots of the old ones are stopped.
     pub(crate) fn restart(&mut self, py: Python<'_>, env: &Env) -> PyResult<()> {
         let states = env.game_states().map_err(env_error)?;
-        let (bots, seating) = (&mut self.bots, &self.seating);
+        let (bots, seating, variant) = (&mut self.bots, &self.seating, self.variant);
         py.detach(|| match bots {
             Some(b) => b.get_mut().unwrap_or_else(|p| p.into_inner()).restart(states),
-            None => *bots = Some(Mutex::new(BatchBots::new(seating.clone(), states))),
+            None => *bots = Some(Mutex::new(BatchBots::new(seating.clone(), states, variant))),
         });
         Ok(())
     }

@@ -53,6 +53,26 @@ def test_evaluate_takes_a_bot_as_opponents(cli):
     )
 
 
+def test_a_bot_opponent_sits_at_three_player_tables():
+    # The stdlib bot at the two seats beside each env's hero: every game plays to its end with
+    # no failure (a warning would raise here), and the fourth place stays empty.
+    env = rinshan.make(
+        "sanma",
+        mode="east",
+        num_envs=3,
+        auto_reset=False,
+        hero_seats=[0, 1, 2],
+        observation=(),
+        opponents=f"mjai:python3 {SIMPLE} --dialect stdio",
+        mjai_dialect="stdio",
+    )
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        scores = finals(env, [7, 8, 9])
+    env.close()
+    assert (scores[:, 3] == 0).all() and (scores.sum(axis=1) == 105_000).all()
+
+
 def dying_bot_env():
     """Two east games against a bot that fails at its third decision."""
     return rinshan.make(
@@ -109,7 +129,7 @@ def test_a_failure_raised_as_an_error_still_takes_the_step():
     "kwargs, words",
     [
         (dict(opponents="mjai:"), "needs the bot's command line"),
-        (dict(opponents="mjai:x", variant="no-red"), "red rules"),
+        (dict(opponents="mjai:x", variant="no-red"), "Tenhou's rules"),
         (dict(opponents="mjai:x", mode="single"), "east or half"),
         (dict(opponents="mjai:x", num_envs=300), "at most 256 envs"),
         (dict(opponents="mjai:x", mjai_dialect="tcp"), "unknown MJAI dialect"),

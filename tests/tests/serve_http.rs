@@ -97,6 +97,9 @@ async fn a_whole_game_through_the_api_replays_from_its_log() {
     .await;
     // A game with a person shows no seed while it runs.
     assert_eq!(v["seed"], Value::Null, "{v}");
+    // Before the first move East 1's dealer, the first dealer, is to discard.
+    assert_eq!(v["step"], 0, "{v}");
+    let first = v["current"].as_u64().expect("a seat to move") as usize;
     let id = v["id"].as_str().expect("an id").to_string();
     let (mut moves, mut rounds) = (0, 0);
     let last = loop {
@@ -169,7 +172,13 @@ async fn a_whole_game_through_the_api_replays_from_its_log() {
     let (status, text) = get(&app, &format!("/api/games/{id}/log")).await;
     assert_eq!(status, StatusCode::OK, "{text}");
     let game = rinshan_logs::tenhou::log::parse_game("download", &text).expect("a Tenhou log");
-    assert_eq!(game.names[2], "You");
+    // The log numbers seats from the first dealer: the person's seat 2 is seat 2 - first there.
+    assert_eq!(
+        game.names[(2 + 4 - first) % 4],
+        "You",
+        "first dealer {first}: {:?}",
+        game.names
+    );
     let report = rinshan_logs::tenhou::replay::replay(std::slice::from_ref(&game), rinshan_engine::env::Backend::Cpu)
         .expect("it replays");
     assert!(report.all_agree(), "the log replays exactly");
@@ -286,7 +295,7 @@ async fn a_sanma_game_is_played_and_logged() {
 }
 
 /// Plays game `id` to its end, the person taking the first legal action; the last view.
-async fn play_to_the_end(app: &Router, id: &str) -> Value {
+pub(crate) async fn play_to_the_end(app: &Router, id: &str) -> Value {
     loop {
         let v = settled(app, id).await;
         match v["phase"].as_str() {

@@ -15,7 +15,7 @@ use rinshan_logs::tenhou::log::{Discard, Draw};
 use rinshan_serve::{app, Limits, NamedBot};
 use serde_json::{json, Value};
 
-use super::serve_http::{get, new_game, parsed, post, settled};
+use super::serve_http::{get, new_game, parsed, play_to_the_end, post, settled};
 
 fn simple_bot(name: &str, dialect: Dialect, mode: &str, timeout: Duration) -> NamedBot {
     let script: PathBuf = [env!("CARGO_MANIFEST_DIR"), "data", "mjai", "bots", "simple_bot.py"]
@@ -108,6 +108,48 @@ async fn bots_play_a_whole_game_with_a_person() {
     assert!(pons > 0, "the bots never called");
 }
 
+/// A three-player game with bots: they are told three seats and set North aside (`kita`), and
+/// the log replays with their seats playing the bot's policy.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn bots_play_a_three_player_game() {
+    let second = Duration::from_secs(5);
+    let app = app(limits(vec![
+        simple_bot("plain", Dialect::App, "play", second),
+        simple_bot("stdio", Dialect::Stdio, "play", second),
+    ]));
+    let body =
+        json!({"variant": "sanma", "mode": "half", "seat": 0, "agents": ["mjai:plain", "mjai:stdio"], "delay_ms": 0});
+    let v = new_game(&app, body).await;
+    assert_eq!(v["names"], json!(["You", "plain 1", "stdio 2"]), "{v}");
+    let id = v["id"].as_str().expect("an id").to_string();
+    let last = play_to_the_end(&app, &id).await;
+    assert!(!last["events"].to_string().contains("failed"), "{}", last["events"]);
+    let (status, text) = get(&app, &format!("/api/games/{id}/log")).await;
+    assert_eq!(status, StatusCode::OK, "{text}");
+    let game = rinshan_logs::tenhou::log::parse_game("download", &text).expect("a Tenhou log");
+    assert_eq!(game.variant, rinshan_engine::Variant::Sanma);
+    let report = rinshan_logs::tenhou::replay::replay(std::slice::from_ref(&game), rinshan_engine::env::Backend::Cpu)
+        .expect("it replays");
+    assert!(report.all_agree(), "{report:?}");
+    let north = rinshan_engine::tile::Tile::plain(rinshan_engine::tile::TileType::NORTH);
+    let mut kitas = 0;
+    // The log numbers seats from the first dealer: the bots' are found by their names.
+    let bots: Vec<usize> = (0..3).filter(|&s| game.names[s] != "You").collect();
+    assert_eq!(bots.len(), 2, "{:?}", game.names);
+    for round in &game.rounds {
+        for &seat in &bots {
+            for (draw, discard) in round.draws[seat].iter().zip(&round.discards[seat]) {
+                match (draw, discard) {
+                    (Draw::Tile(_), Discard::Tsumogiri) | (Draw::Pon { .. }, Discard::Tile(_)) => {}
+                    (Draw::Tile(t), Discard::Kita) if *t == north => kitas += 1,
+                    other => panic!("seat {seat} of round {}: {other:?}", round.kyoku),
+                }
+            }
+        }
+    }
+    assert!(kitas > 0, "the bots never set North aside");
+}
+
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn a_failing_bot_loses_its_game_and_a_thinking_bot_holds_nothing() {
     let app = app(limits(vec![
@@ -173,12 +215,12 @@ async fn a_visitor_names_only_the_servers_bots() {
         (
             &one,
             json!({"variant": "no-red", "agents": ["mjai:plain", "rule", "rule", "rule"]}),
-            "MJAI bots play the red rules",
+            "MJAI bots play Tenhou's rules",
         ),
         (
             &one,
             json!({"mode": "single", "agents": ["mjai:plain", "rule", "rule", "rule"]}),
-            "MJAI bots play the red rules",
+            "MJAI bots play Tenhou's rules",
         ),
     ] {
         let (status, text) = post(server, "/api/games", &body).await;

@@ -156,7 +156,7 @@ impl MjaiArgs {
         check_games(variant, mode, backend.unwrap_or(Backend::Cpu)).map_err(|e| {
             CliError::input(match e {
                 Unplayable::Rules => {
-                    "MJAI bots play the red rules (--variant red) in east or half games (--mode east|half)"
+                    "MJAI bots play Tenhou's rules (--variant red, or sanma for three players) in east or half games (--mode east|half)"
                 }
                 Unplayable::Backend => {
                     "MJAI bots need --backend cpu: each bot follows its game's state after every step"

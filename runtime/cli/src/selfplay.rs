@@ -241,11 +241,13 @@ pub fn run(args: Args) -> Result<(), CliError> {
     let mut bots = match with_bots {
         true => {
             let states = env.game_states().map_err(CliError::failure)?;
-            // Env i seats the players rotated by i, as the kernel's agents are.
+            // Env i seats the players rotated by i, as the kernel's agents are; a three-player
+            // game's fourth place is never played.
+            let at_table = variant.seats() as usize;
             let seating = (0..states.len())
-                .map(|i| std::array::from_fn(|p| entrants[(p + i) % 4].clone()))
+                .map(|i| std::array::from_fn(|p| entrants[(p + i) % 4].clone().filter(|_| p < at_table)))
                 .collect();
-            Some(BatchBots::new(seating, states))
+            Some(BatchBots::new(seating, states, variant))
         }
         false => None,
     };

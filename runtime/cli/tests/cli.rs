@@ -757,6 +757,29 @@ fn arena_seats_an_mjai_bot_and_reports_its_faults() {
 }
 
 #[test]
+fn arena_seats_an_mjai_bot_at_three_player_tables() {
+    let bot = simple_bot("--dialect app");
+    let agents = format!("{bot},rule,greedy");
+    let v = json(&rinshan(&[
+        "arena",
+        "--variant",
+        "sanma",
+        "--agents",
+        &agents,
+        "--mjai-dialect",
+        "app",
+        "--games",
+        "3",
+        "--mode",
+        "east",
+        "--json",
+    ]));
+    assert_eq!(v["faults"], serde_json::json!([]));
+    let me = standing(&v, &bot);
+    assert_eq!((me["games"].as_u64(), me["illegal"].as_u64()), (Some(3), Some(0)));
+}
+
+#[test]
 fn arena_refuses_bad_mjai_seats() {
     for (args, says) in [
         (

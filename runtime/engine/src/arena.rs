@@ -21,8 +21,9 @@ pub trait Policy: Sync {
 /// A player that follows every step of its games and keeps its own state, such as an external
 /// program speaking a protocol (rinshan-logs' MJAI bots).
 pub trait Entrant: Sync {
-    /// Starts a game in which the player takes seat `seat`; `state` is the game's first.
-    fn join(&self, seat: u32, state: &GameState) -> Box<dyn Seat + '_>;
+    /// Starts a game of `variant` in which the player takes seat `seat`; `state` is the game's
+    /// first.
+    fn join(&self, seat: u32, state: &GameState, variant: Variant) -> Box<dyn Seat + '_>;
 }
 
 /// An [`Entrant`] in one game.
@@ -191,7 +192,7 @@ fn play(arena: &Arena, seed: u64, seating: &[Player; 4], game: u64, faults: &mut
         let (mut called, mut riichi) = ([false; 4], [false; 4]);
         let mut decisions = 0u64;
         let mut seats: [Option<Box<dyn Seat>>; 4] = std::array::from_fn(|p| match seating[p] {
-            Player::Entrant { entrant, .. } if p < v::SEATS as usize => Some(entrant.join(p as u32, &s)),
+            Player::Entrant { entrant, .. } if p < v::SEATS as usize => Some(entrant.join(p as u32, &s, arena.variant)),
             _ => None,
         });
         let mut fault = |p: usize, decision: u64, message: String| {

@@ -43,8 +43,12 @@ fn bot(dialect: Dialect, mode: &str) -> MjaiEntrant {
 }
 
 fn play(entrant: &MjaiEntrant, mode: Mode, sets: usize) -> Report {
+    play_in(Variant::Red, entrant, mode, sets)
+}
+
+fn play_in(variant: Variant, entrant: &dyn arena::Entrant, mode: Mode, sets: usize) -> Report {
     let arena = Arena {
-        variant: Variant::Red,
+        variant,
         mode,
         players: [
             Player::Entrant { name: "bot", entrant },
@@ -75,6 +79,74 @@ fn a_bot_that_keeps_the_protocol_plays_every_game_in_both_dialects() {
         assert_eq!((me.games, me.illegal), (4, 0), "{dialect:?}");
         // It pons (its only call) and the games run their course.
         assert!(me.call_rate > 0.0 && me.rounds >= 4 * 4, "{dialect:?}: {me:?}");
+    }
+}
+
+/// Counts the `kita` actions of the seats it plays (sanma's action id).
+struct CountingKita<'a> {
+    inner: &'a MjaiEntrant,
+    kitas: std::sync::atomic::AtomicUsize,
+}
+
+struct CountingSeat<'a> {
+    inner: Box<dyn arena::Seat + 'a>,
+    kitas: &'a std::sync::atomic::AtomicUsize,
+}
+
+impl arena::Entrant for CountingKita<'_> {
+    fn join(
+        &self,
+        seat: u32,
+        state: &rinshan_engine::generated::kernel::GameState,
+        variant: Variant,
+    ) -> Box<dyn arena::Seat + '_> {
+        Box::new(CountingSeat {
+            inner: self.inner.join(seat, state, variant),
+            kitas: &self.kitas,
+        })
+    }
+}
+
+impl arena::Seat for CountingSeat<'_> {
+    fn act(&mut self, state: &rinshan_engine::generated::kernel::GameState) -> Result<u32, String> {
+        let a = self.inner.act(state)?;
+        if a == rinshan_engine::generated::sanma::ACTION_KITA {
+            self.kitas.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        }
+        Ok(a)
+    }
+
+    fn stepped(
+        &mut self,
+        before: &rinshan_engine::generated::kernel::GameState,
+        action: u32,
+        after: &rinshan_engine::generated::kernel::GameState,
+    ) -> Result<(), String> {
+        self.inner.stepped(before, action, after)
+    }
+}
+
+/// At a three-player table the bot is told three seats' lists and sets North aside with `kita`,
+/// which plays as the engine's kita; a misbehaving one is penalised as at four.
+#[test]
+fn a_bot_plays_three_player_games_and_sets_north_aside() {
+    for dialect in [Dialect::App, Dialect::Stdio] {
+        let entrant = bot(dialect, "play");
+        let counting = CountingKita {
+            inner: &entrant,
+            kitas: Default::default(),
+        };
+        let report = play_in(Variant::Sanma, &counting, Mode::Half, 1);
+        assert_eq!(report.faults, vec![], "{dialect:?}");
+        let me = standing(&report, "bot");
+        assert_eq!((me.games, me.illegal), (3, 0), "{dialect:?}: {me:?}");
+        assert!(me.rounds >= 3 * 3, "{dialect:?}: {me:?}");
+        let kitas = counting.kitas.load(std::sync::atomic::Ordering::Relaxed);
+        assert!(kitas >= 3, "{dialect:?}: {kitas} kita");
+        let report = play_in(Variant::Sanma, &bot(dialect, "illegal"), Mode::East, 1);
+        let me = standing(&report, "bot");
+        assert_eq!((me.games, me.illegal, me.ranks[2]), (3, 3, 3), "{dialect:?}: {me:?}");
+        assert!(report.faults.iter().all(|f| f.message.contains("is not legal here")));
     }
 }
 

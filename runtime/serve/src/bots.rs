@@ -5,6 +5,7 @@
 //! reading the game as it stands, then handed back ([`Done`]).
 
 use rinshan_engine::generated::kernel::GameState;
+use rinshan_engine::Variant;
 use rinshan_logs::mjai::bot::BotSpec;
 use rinshan_logs::mjai::seat::{MjaiEntrant, MjaiSeat};
 
@@ -31,6 +32,8 @@ pub struct Bots {
     slots: [Option<Slot>; 4],
     /// The game's first state (a bot joins from it).
     start: GameState,
+    /// The game's rules.
+    variant: Variant,
 }
 
 /// A step of the game, as every bot is told it.
@@ -65,11 +68,12 @@ pub struct Done {
 }
 
 impl Bots {
-    /// The bots of a game that starts in `start`, at the seats given.
-    pub fn new(seats: [Option<&NamedBot>; 4], start: GameState) -> Bots {
+    /// The bots of a game of `variant` that starts in `start`, at the seats given.
+    pub fn new(seats: [Option<&NamedBot>; 4], start: GameState, variant: Variant) -> Bots {
         Bots {
             slots: seats.map(|b| b.map(|b| Slot::Waiting(MjaiEntrant { spec: b.spec.clone() }))),
             start,
+            variant,
         }
     }
 
@@ -88,10 +92,10 @@ impl Work {
     /// Does the work: blocks for as long as the bots take (each read at most their timeout).
     pub fn run(mut self) -> Done {
         let mut faults = Vec::new();
-        let start = self.bots.start;
+        let (start, variant) = (self.bots.start, self.bots.variant);
         for (p, slot) in self.bots.slots.iter_mut().enumerate() {
             if let Some(Slot::Waiting(entrant)) = slot {
-                *slot = Some(Slot::Playing(Box::new(entrant.start(p as u32, &start))));
+                *slot = Some(Slot::Playing(Box::new(entrant.start(p as u32, &start, variant))));
             }
         }
         for (p, slot) in self.bots.slots.iter_mut().enumerate() {

@@ -137,12 +137,13 @@ impl Session {
             _ => None,
         });
         if bot_seats.iter().any(Option::is_some) && check_games(setup.variant, setup.mode, Backend::Cpu).is_err() {
-            return Err("MJAI bots play the red rules in east or half games".into());
+            return Err("MJAI bots play Tenhou's rules (red, or sanma for three) in east or half games".into());
         }
         let bots = match bot_seats.iter().any(Option::is_some) {
             true => Some(Bots::new(
                 std::array::from_fn(|p| bot_seats[p].as_ref()),
                 env.game_states().map_err(err)?.pop().ok_or("the env holds no game")?,
+                setup.variant,
             )),
             false => None,
         };
@@ -175,8 +176,14 @@ impl Session {
             bots,
             untold: Vec::new(),
         };
+        // The log numbers seats from East 1's dealer, the page by the engine's seats.
+        let first = s.state()?.dealer;
         if let Some(r) = &mut s.recorder {
-            r.set_names(s.names.clone());
+            let seats = s.setup.variant.seats();
+            r.set_names(std::array::from_fn(|i| match i as u32 {
+                i if i < seats => s.names[((first + i) % seats) as usize].clone(),
+                _ => String::new(),
+            }));
         }
         s.events.push(format!(
             "{} begins",

@@ -5,6 +5,7 @@
 use rayon::prelude::*;
 use rinshan_engine::arena::{refused_action, Seat as _};
 use rinshan_engine::generated::kernel::GameState;
+use rinshan_engine::Variant;
 
 use super::seat::{MjaiEntrant, MjaiSeat};
 
@@ -16,19 +17,23 @@ pub struct BatchBots {
     seats: Vec<[Option<MjaiSeat>; 4]>,
     /// Each game's state now: after a step it is the state before the next one.
     states: Vec<GameState>,
+    /// The games' rules.
+    variant: Variant,
 }
 
-fn join(seating: &[Option<MjaiEntrant>; 4], state: &GameState) -> [Option<MjaiSeat>; 4] {
-    std::array::from_fn(|p| seating[p].as_ref().map(|e| e.start(p as u32, state)))
+fn join(seating: &[Option<MjaiEntrant>; 4], state: &GameState, variant: Variant) -> [Option<MjaiSeat>; 4] {
+    std::array::from_fn(|p| seating[p].as_ref().map(|e| e.start(p as u32, state, variant)))
 }
 
 impl BatchBots {
-    /// The bots of `seating`, joining the games that start in `states` (one per game).
-    pub fn new(seating: Vec<[Option<MjaiEntrant>; 4]>, states: Vec<GameState>) -> BatchBots {
+    /// The bots of `seating`, joining the games of `variant` that start in `states` (one per
+    /// game).
+    pub fn new(seating: Vec<[Option<MjaiEntrant>; 4]>, states: Vec<GameState>, variant: Variant) -> BatchBots {
         let mut bots = BatchBots {
             seats: Vec::new(),
             seating,
             states: Vec::new(),
+            variant,
         };
         bots.restart(states);
         bots
@@ -40,7 +45,7 @@ impl BatchBots {
             .seating
             .par_iter()
             .zip(states.par_iter())
-            .map(|(seating, s)| join(seating, s))
+            .map(|(seating, s)| join(seating, s, self.variant))
             .collect();
         self.states = states;
     }
@@ -81,7 +86,7 @@ impl BatchBots {
     /// next's (`ended`: the step ended the game; with auto-reset `after` is the next game's first
     /// state). Returns the bots' faults.
     pub fn stepped(&mut self, actions: &[u32], after: Vec<GameState>, ended: &[bool]) -> Vec<String> {
-        let (seating, before) = (&self.seating, &self.states);
+        let (seating, before, variant) = (&self.seating, &self.states, self.variant);
         let faults = self
             .seats
             .par_iter_mut()
@@ -94,7 +99,7 @@ impl BatchBots {
                     }
                 }
                 if ended[i] {
-                    *seats = join(&seating[i], &after[i]);
+                    *seats = join(&seating[i], &after[i], variant);
                 }
                 out
             })

@@ -24,7 +24,7 @@ use std::time::Duration;
 use rinshan_engine::env::{Backend, Mode};
 use rinshan_engine::Variant;
 
-use super::event::Event;
+use super::event::{seat_lists_cut, Event};
 
 /// The longest reply line read; a bot that writes more without a newline has failed.
 pub const MAX_LINE: u64 = 1 << 20;
@@ -54,8 +54,9 @@ impl std::str::FromStr for Dialect {
 /// Why MJAI bots cannot play some games (each front end words it in its own terms).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Unplayable {
-    /// The protocol's events and the bots know the red rules, and a bot follows a whole east
-    /// or half game: other variants and single hands are not theirs.
+    /// The protocol's events and the bots know Tenhou's rules, four players (`red`) or three
+    /// (`sanma`), and a bot follows a whole east or half game: other rule sets and single hands
+    /// are not theirs.
     Rules,
     /// Each bot follows its game's state after every step, which the GPU backend keeps on the
     /// device.
@@ -64,7 +65,7 @@ pub enum Unplayable {
 
 /// Whether MJAI bots can play games of these rules on this backend.
 pub fn check_games(variant: Variant, mode: Mode, backend: Backend) -> Result<(), Unplayable> {
-    if variant != Variant::Red || mode == Mode::Single {
+    if !matches!(variant, Variant::Red | Variant::Sanma) || mode == Mode::Single {
         return Err(Unplayable::Rules);
     }
     if backend != Backend::Cpu {
@@ -103,6 +104,8 @@ pub struct Bot {
     startup: Option<Duration>,
     /// Reactions of an array reply still to be used (Stdio).
     queued: VecDeque<Event>,
+    /// Players at the table: a three-player game's events list three seats.
+    seats: usize,
 }
 
 impl Drop for Bot {
@@ -114,8 +117,8 @@ impl Drop for Bot {
 }
 
 impl Bot {
-    /// Starts the bot of MJAI seat `seat`.
-    pub fn spawn(spec: &BotSpec, seat: u8) -> Result<Bot, String> {
+    /// Starts the bot of MJAI seat `seat` at a table of `seats` players.
+    pub fn spawn(spec: &BotSpec, seat: u8, seats: usize) -> Result<Bot, String> {
         let mut child = Command::new("sh")
             .arg("-c")
             .arg(format!("exec {} {seat}", spec.command))
@@ -169,6 +172,7 @@ impl Bot {
             timeout: spec.timeout,
             startup: Some(spec.startup.max(spec.timeout)),
             queued: VecDeque::new(),
+            seats,
         })
     }
 
@@ -206,8 +210,12 @@ impl Bot {
         }
     }
 
-    fn json(event: &Event, can_act: bool) -> String {
-        let mut v = serde_json::to_value(event).unwrap_or_default();
+    fn value(&self, event: &Event) -> serde_json::Value {
+        seat_lists_cut(serde_json::to_value(event).unwrap_or_default(), self.seats)
+    }
+
+    fn json(&self, event: &Event, can_act: bool) -> String {
+        let mut v = self.value(event);
         if let (false, Some(map)) = (can_act, v.as_object_mut()) {
             map.insert("can_act".into(), false.into());
         }
@@ -218,7 +226,7 @@ impl Bot {
     fn tell(&mut self, events: &[Event]) -> Result<(), String> {
         let mut text = String::new();
         for e in events {
-            text.push_str(&Bot::json(e, false));
+            text.push_str(&self.json(e, false));
             text.push('\n');
         }
         self.write(&text).map_err(|e| self.failed(e))
@@ -232,16 +240,13 @@ impl Bot {
     fn exchange(&mut self, events: &[Event]) -> Result<Event, String> {
         let text = match self.dialect {
             Dialect::App => {
-                let list: Vec<serde_json::Value> = events
-                    .iter()
-                    .map(|e| serde_json::to_value(e).unwrap_or_default())
-                    .collect();
+                let list: Vec<serde_json::Value> = events.iter().map(|e| self.value(e)).collect();
                 format!("{}\n", serde_json::Value::Array(list))
             }
             Dialect::Stdio => {
                 let mut text = String::new();
                 for (i, e) in events.iter().enumerate() {
-                    text.push_str(&Bot::json(e, i + 1 == events.len()));
+                    text.push_str(&self.json(e, i + 1 == events.len()));
                     text.push('\n');
                 }
                 text

@@ -13,6 +13,17 @@ use super::tile::Pai;
 /// The fields that list one entry per seat (four in [`Event`]; a three-player log lists three).
 pub(crate) const PER_SEAT: [&str; 5] = ["names", "scores", "tehais", "deltas", "tenpais"];
 
+/// An event's JSON object with its per-seat lists cut to `seats` entries (the order of its fields
+/// is `serde_json`'s map order; [`super::write::game_text`] keeps the engines' order for logs).
+pub(crate) fn seat_lists_cut(mut event: serde_json::Value, seats: usize) -> serde_json::Value {
+    for key in PER_SEAT {
+        if let Some(serde_json::Value::Array(list)) = event.get_mut(key) {
+            list.truncate(seats);
+        }
+    }
+    event
+}
+
 /// One MJAI event. Seats (`actor`, `target`, `oya`) count from East 1's dealer.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "type", rename_all = "snake_case")]

@@ -8,6 +8,7 @@
 
 use rinshan_engine::env::events::ROUND_OVER;
 use rinshan_engine::generated::kernel::GameState;
+use rinshan_engine::Variant;
 
 use super::event::Event;
 use super::tile::Pai;
@@ -23,14 +24,17 @@ pub struct Live {
     /// Where the round in play starts in `events`.
     round_start: usize,
     first: u32,
+    /// Players at the table.
+    seats: u32,
     game: Option<Game>,
     over: bool,
 }
 
 impl Live {
-    /// Follows the game of `state`, which has just dealt its first round (a reset or a deal).
-    pub fn new(state: &GameState, names: [String; 4]) -> Result<Live, String> {
-        let mut recorder = GameRecorder::new(state)?;
+    /// Follows the game of `variant` in `state`, which has just dealt its first round (a reset or
+    /// a deal).
+    pub fn new(state: &GameState, names: [String; 4], variant: Variant) -> Result<Live, String> {
+        let mut recorder = GameRecorder::for_variant(state, variant)?;
         recorder.names = names;
         let first = recorder.in_play().map_or(0, |p| p.first);
         let mut live = Live {
@@ -38,6 +42,7 @@ impl Live {
             round_start: 1,
             recorder,
             first,
+            seats: variant.seats(),
             game: None,
             over: false,
         };
@@ -52,7 +57,12 @@ impl Live {
 
     /// The MJAI seat (East 1's dealer is 0) of the engine's seat `p`.
     pub fn mjai_seat(&self, p: u32) -> u8 {
-        ((p + 4 - self.first) % 4) as u8
+        ((p + self.seats - self.first) % self.seats) as u8
+    }
+
+    /// Players at the table.
+    pub fn seats(&self) -> usize {
+        self.seats as usize
     }
 
     /// The game ended (by the rules, with `end_game` sent, or by an illegal action).

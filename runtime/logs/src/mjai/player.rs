@@ -283,6 +283,9 @@ fn parse_line(line: &str) -> Result<(Vec<Event>, Option<bool>), String> {
         .last()
         .and_then(|v| v.get("can_act"))
         .and_then(serde_json::Value::as_bool);
+    if items.iter().any(|v| super::read::listed_seats(v) == Some(3)) {
+        return Err("an event of a three-player game: rinshan plays MJAI as a four-player seat (red rules)".into());
+    }
     let events = items
         .into_iter()
         .map(|v| serde_json::from_value::<Event>(v).map_err(|e| format!("not an MJAI event: {e}")))

@@ -1,12 +1,14 @@
-//! A bot's MJAI reaction as the engine's action id (red rules), checked against the legal
-//! actions of the state that asked for it.
+//! A bot's MJAI reaction as the engine's action id (Tenhou's rules, four or three players),
+//! checked against the legal actions of the state that asked for it.
 
 use rinshan_engine::generated::kernel::{self, GameState};
 use rinshan_engine::generated::red as k;
 use rinshan_engine::tile::Tile;
+use rinshan_engine::{with_variant, Variant};
 
 use super::event::Event;
 use super::tile::Pai;
+use crate::tenhou::plan::{MoveIds, KITA};
 
 fn tile(p: &Pai, what: &str) -> Result<Tile, String> {
     p.0.ok_or_else(|| format!("the {what} tile is `?`"))
@@ -14,15 +16,15 @@ fn tile(p: &Pai, what: &str) -> Result<Tile, String> {
 
 /// Action `a` is legal in `s`.
 pub(super) fn legal(s: &GameState, a: u32) -> bool {
-    a < k::ACTION_DUMMY && s.mask[(a / 32) as usize] >> (a % 32) & 1 == 1
+    a < 96 && s.mask[(a / 32) as usize] >> (a % 32) & 1 == 1
 }
 
-/// The action id of `reaction`, the reply of the bot in MJAI seat `seat` to state `s` (whose
-/// current player it is); `Err` says why it is not a legal action there.
+/// The action id of `reaction`, the reply of the bot in MJAI seat `seat` to state `s` of a game
+/// of `variant` (whose current player it is); `Err` says why it is not a legal action there.
 ///
 /// A discard's `tsumogiri` flag is taken as a hint: a discard of the drawn tile's kind with the
 /// flag wrong (libriichi accepts that too) plays the discard the engine allows.
-pub fn action_of(reaction: &Event, seat: u8, s: &GameState) -> Result<u32, String> {
+pub fn action_of(reaction: &Event, seat: u8, s: &GameState, variant: Variant) -> Result<u32, String> {
     let actor = match reaction {
         Event::None {} => None,
         Event::Dahai { actor, .. }
@@ -32,6 +34,7 @@ pub fn action_of(reaction: &Event, seat: u8, s: &GameState) -> Result<u32, Strin
         | Event::Kakan { actor, .. }
         | Event::Ankan { actor, .. }
         | Event::Reach { actor }
+        | Event::Kita { actor, .. }
         | Event::Hora { actor, .. } => Some(*actor),
         Event::Ryukyoku { .. } => None,
         other => {
@@ -46,25 +49,29 @@ pub fn action_of(reaction: &Event, seat: u8, s: &GameState) -> Result<u32, Strin
         return Err(format!("the reaction is for actor {a}, but the bot plays seat {seat}"));
     }
     let kind_of = |p: &Pai, what: &str| tile(p, what).map(|t| u32::from(t.kind()));
-    let action = match reaction {
+    // The reaction in red's layout (and kita), then in the variant's.
+    let ids = MoveIds::new(variant);
+    let plan = match reaction {
         Event::None {} => k::ACTION_PASS,
         Event::Dahai { pai, tsumogiri, .. } => {
             let v = u32::from(tile(pai, "discarded")?.value());
             let from_hand = k::ACTION_DISCARD + v;
             let drawn = s.drawn == v;
+            let legal = |a: u32| ids.get(a).is_some_and(|a| legal(s, a));
             let (stated, other) = if *tsumogiri {
                 (drawn.then_some(k::ACTION_TSUMOGIRI), Some(from_hand))
             } else {
                 (Some(from_hand), drawn.then_some(k::ACTION_TSUMOGIRI))
             };
             match (stated, other) {
-                (Some(a), _) if legal(s, a) => a,
-                (_, Some(a)) if legal(s, a) => a,
+                (Some(a), _) if legal(a) => a,
+                (_, Some(a)) if legal(a) => a,
                 (Some(a), _) => a,
                 (None, _) => return Err(format!("tsumogiri of {pai}, but the drawn tile is another")),
             }
         }
         Event::Reach { .. } => k::ACTION_RIICHI,
+        Event::Kita { .. } => KITA,
         Event::Hora { target, .. } if *target == seat => k::ACTION_TSUMO,
         Event::Hora { .. } => k::ACTION_RON,
         Event::Ryukyoku { .. } => k::ACTION_KYUUSHU,
@@ -105,9 +112,17 @@ pub fn action_of(reaction: &Event, seat: u8, s: &GameState) -> Result<u32, Strin
         Event::Ankan { consumed, .. } => k::ACTION_SELF_KAN + kind_of(&consumed[0], "kan")?,
         _ => unreachable!("every other event was refused above"),
     };
+    let Some(action) = ids.get(plan) else {
+        let kind = serde_json::to_value(reaction)
+            .ok()
+            .and_then(|v| v["type"].as_str().map(String::from))
+            .unwrap_or_default();
+        return Err(format!("`{kind}` is not a move of {variant}"));
+    };
     if !legal(s, action) {
-        let names = rinshan_engine::env::action_names(rinshan_engine::Variant::Red);
-        let allowed: Vec<&str> = (0..k::ACTION_DUMMY)
+        let names = rinshan_engine::env::action_names(variant);
+        let actions = with_variant!(variant, v => v::NUM_ACTIONS);
+        let allowed: Vec<&str> = (0..actions)
             .filter(|&a| legal(s, a))
             .filter_map(|a| names.get(a as usize).map(String::as_str))
             .collect();

@@ -31,7 +31,7 @@ fn absent_seat(key: &str) -> serde_json::Value {
 }
 
 /// How many seats an event's per-seat lists hold (`None` for an event without them).
-fn listed_seats(event: &serde_json::Value) -> Option<usize> {
+pub(super) fn listed_seats(event: &serde_json::Value) -> Option<usize> {
     PER_SEAT
         .iter()
         .find_map(|k| event.get(k).and_then(serde_json::Value::as_array).map(Vec::len))

@@ -432,7 +432,7 @@ fn play(
             _ => continue,
         };
         pass_claims(&mut s, Some(actor)).map_err(at)?;
-        let a = action_of(e, actor, &s).map_err(at)?;
+        let a = action_of(e, actor, &s, rinshan_engine::Variant::Red).map_err(at)?;
         v::game_step(&mut s, a);
         if matches!(e, Event::Chi { .. } | Event::Pon { .. } | Event::Daiminkan { .. }) {
             // The call is on the table: whoever the engine asks after the caller passed.

@@ -8,14 +8,16 @@
 
 use rinshan_engine::arena::{Entrant, Seat};
 use rinshan_engine::generated::kernel::GameState;
+use rinshan_engine::Variant;
 
 use super::bot::{Bot, BotSpec, Dialect};
 use super::event::Event;
 use super::live::{view, Live};
 use super::reaction::action_of;
 
-/// Runs `spec`'s bot in each game it joins: games of the red rules, east or half (what MJAI
-/// and the log recorder describe; `rinshan arena` and `selfplay` check it before they start).
+/// Runs `spec`'s bot in each game it joins: games of Tenhou's rules (`red`, or `sanma` with three
+/// seats' lists and `kita`), east or half (what MJAI and the log recorder describe; `rinshan
+/// arena` and `selfplay` check it with [`super::bot::check_games`] before they start).
 #[derive(Debug, Clone)]
 pub struct MjaiEntrant {
     /// The bot.
@@ -27,6 +29,7 @@ pub struct MjaiSeat {
     live: Result<Live, String>,
     bot: Result<Bot, String>,
     seat: u8,
+    variant: Variant,
     /// Events of `live` already sent.
     sent: usize,
     /// Why the bot can play no more of this game.
@@ -34,14 +37,16 @@ pub struct MjaiSeat {
 }
 
 impl MjaiEntrant {
-    /// Starts the bot for seat `seat` (the engine's) of the game that starts in `state`.
-    pub fn start(&self, seat: u32, state: &GameState) -> MjaiSeat {
-        let live = Live::new(state, ["", "", "", ""].map(String::from));
+    /// Starts the bot for seat `seat` (the engine's) of the game of `variant` that starts in
+    /// `state`.
+    pub fn start(&self, seat: u32, state: &GameState, variant: Variant) -> MjaiSeat {
+        let live = Live::new(state, ["", "", "", ""].map(String::from), variant);
         let mjai_seat = live.as_ref().map_or(0, |l| l.mjai_seat(seat));
         let mut s = MjaiSeat {
-            bot: Bot::spawn(&self.spec, mjai_seat),
+            bot: Bot::spawn(&self.spec, mjai_seat, variant.seats() as usize),
             live,
             seat: mjai_seat,
+            variant,
             sent: 0,
             broken: None,
         };
@@ -54,8 +59,8 @@ impl MjaiEntrant {
 }
 
 impl Entrant for MjaiEntrant {
-    fn join(&self, seat: u32, state: &GameState) -> Box<dyn Seat + '_> {
-        Box::new(self.start(seat, state))
+    fn join(&self, seat: u32, state: &GameState, variant: Variant) -> Box<dyn Seat + '_> {
+        Box::new(self.start(seat, state, variant))
     }
 }
 
@@ -98,7 +103,7 @@ impl Seat for MjaiSeat {
         let reaction = self.bot()?.ask(&events).inspect_err(|e| {
             self.broken = Some(e.clone());
         })?;
-        action_of(&reaction, self.seat, state).map_err(|e| {
+        action_of(&reaction, self.seat, state, self.variant).map_err(|e| {
             let text = serde_json::to_string(&reaction).unwrap_or_default();
             let why = format!("illegal reaction {text}: {e}");
             self.broken = Some(why.clone());

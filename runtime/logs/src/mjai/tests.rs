@@ -5,6 +5,7 @@
 use rinshan_engine::env::Backend;
 
 use rinshan_engine::generated::kernel::GameState;
+use rinshan_engine::Variant;
 
 use super::event::Event;
 use super::live::{view, Live};
@@ -289,99 +290,108 @@ fn unknown_fields_and_none_events_are_ignored() {
     assert!(empty.expect_err("no round").to_string().contains("no round"));
 }
 
-/// Plays `games` half games of the red rules with the built-in agents (a mix, so games have
-/// calls, kans, riichi and every ending), following each live; returns the live streams.
-fn live_games(games: u64, check_each_step: impl Fn(&Live, &GameState)) -> Vec<Live> {
+/// Plays `games` half games of `variant` with the built-in agents (a mix, so games have calls,
+/// kans, riichi and every ending), following each live; returns the live streams.
+fn live_games(variant: Variant, games: u64, check_each_step: impl Fn(&Live, &GameState)) -> Vec<Live> {
     use rinshan_engine::agents::Agent;
     use rinshan_engine::generated::kernel::{self, ResetInput};
-    use rinshan_engine::generated::red as v;
     let agents = [Agent::Rule, Agent::Greedy, Agent::Defensive, Agent::Random];
     (0..games)
         .map(|g| {
-            let mut s: GameState = v::game_new(ResetInput {
-                seed: [g as u32 + 11, 5],
-                mode: kernel::MODE_HALF,
-                dealer: 4,
-                use_wall: 0,
-                wall: [0; 136],
-                uma: [0; 4],
-                penalty: v::host::ILLEGAL_ACTION_PENALTY,
-                auto_reset: 0,
-            });
-            let names = ["a", "b", "c", "d"].map(String::from);
-            let mut live = Live::new(&s, names).expect("a fresh game is followed");
-            while s.terminated == 0 {
-                check_each_step(&live, &s);
-                let agent = agents[(s.current as usize + g as usize) % 4];
-                let a = agent.act(rinshan_engine::Variant::Red, &s);
-                let before = s;
-                v::game_step(&mut s, a);
-                live.step(&before, a, &s).unwrap_or_else(|e| panic!("game {g}: {e}"));
-            }
-            assert!(live.is_over());
-            live
+            rinshan_engine::with_variant!(variant, v => {
+                let mut s: GameState = v::game_new(ResetInput {
+                    seed: [g as u32 + 11, 5],
+                    mode: kernel::MODE_HALF,
+                    dealer: 4,
+                    use_wall: 0,
+                    wall: [0; 136],
+                    uma: [0; 4],
+                    penalty: v::host::ILLEGAL_ACTION_PENALTY,
+                    auto_reset: 0,
+                });
+                let names = ["a", "b", "c", "d"].map(String::from);
+                let mut live = Live::new(&s, names, variant).expect("a fresh game is followed");
+                while s.terminated == 0 {
+                    check_each_step(&live, &s);
+                    let agent = agents[(s.current as usize + g as usize) % 4];
+                    let a = agent.act(variant, &s);
+                    let before = s;
+                    v::game_step(&mut s, a);
+                    live.step(&before, a, &s).unwrap_or_else(|e| panic!("game {g}: {e}"));
+                }
+                assert!(live.is_over());
+                live
+            })
         })
         .collect()
 }
 
 #[test]
 fn a_game_followed_live_sends_exactly_its_mjai_log() {
-    let mut kinds = std::collections::BTreeSet::new();
-    for live in live_games(40, |_, _| {}) {
-        let game = live.game().expect("the game ended by the rules");
-        assert_eq!(live.events(), game_events(game).expect("the game writes").as_slice());
-        kinds.extend(
-            live.events()
-                .iter()
-                .map(|e| serde_json::to_value(e).unwrap()["type"].to_string()),
-        );
-    }
-    // The games cover what the live order has to get right.
-    for kind in [
-        "chi",
-        "pon",
-        "daiminkan",
-        "kakan",
-        "ankan",
-        "dora",
-        "reach",
-        "reach_accepted",
-        "hora",
-        "ryukyoku",
-    ] {
-        assert!(
-            kinds.contains(&format!("\"{kind}\"")),
-            "no {kind} in the games: {kinds:?}"
-        );
+    for variant in [Variant::Red, Variant::Sanma] {
+        let mut kinds = std::collections::BTreeSet::new();
+        for live in live_games(variant, 40, |_, _| {}) {
+            let game = live.game().expect("the game ended by the rules");
+            assert_eq!(live.events(), game_events(game).expect("the game writes").as_slice());
+            kinds.extend(
+                live.events()
+                    .iter()
+                    .map(|e| serde_json::to_value(e).unwrap()["type"].to_string()),
+            );
+        }
+        // The games cover what the live order has to get right.
+        let three = variant.seats() == 3;
+        let calls = if three { "kita" } else { "chi" };
+        for kind in [
+            calls,
+            "pon",
+            "daiminkan",
+            "kakan",
+            "ankan",
+            "dora",
+            "reach",
+            "reach_accepted",
+            "hora",
+            "ryukyoku",
+        ] {
+            assert!(
+                kinds.contains(&format!("\"{kind}\"")),
+                "{variant}: no {kind} in the games: {kinds:?}"
+            );
+        }
+        assert_eq!(kinds.contains("\"chi\""), !three);
     }
 }
 
 #[test]
 fn at_each_decision_the_stream_ends_where_the_engines_ask() {
     use rinshan_engine::generated::kernel::{PHASE_CLAIM, PHASE_RIICHI_DISCARD};
-    live_games(10, |live, s| {
-        let p = u64::from(live.mjai_seat(s.current));
-        let last = serde_json::to_value(live.events().last().expect("a stream has events")).unwrap();
-        let kind = last["type"].as_str().unwrap();
-        let actor = last["actor"].as_u64();
-        if s.phase == PHASE_CLAIM {
-            // A claim is asked on a discard, or on an added kan's tile (chankan).
-            assert!(kind == "dahai" || kind == "kakan", "claim asked after {last}");
-            assert_ne!(actor, Some(p));
-        } else if s.phase == PHASE_RIICHI_DISCARD {
-            assert_eq!((kind, actor), ("reach", Some(p)));
-        } else {
-            // The seat's own turn: after its draw (a replacement after a closed kan comes after
-            // the kan's dora), or after its call.
-            assert!(matches!(kind, "tsumo" | "chi" | "pon"), "turn asked after {last}");
-            assert_eq!(actor, Some(p), "{last}");
-        }
-    });
+    for variant in [Variant::Red, Variant::Sanma] {
+        live_games(variant, 10, |live, s| {
+            let p = u64::from(live.mjai_seat(s.current));
+            let last = serde_json::to_value(live.events().last().expect("a stream has events")).unwrap();
+            let kind = last["type"].as_str().unwrap();
+            let actor = last["actor"].as_u64();
+            if s.phase == PHASE_CLAIM {
+                // A claim is asked on a discard, or on an added kan's tile (chankan), or on a North
+                // set aside (three players).
+                assert!(matches!(kind, "dahai" | "kakan" | "kita"), "claim asked after {last}");
+                assert_ne!(actor, Some(p));
+            } else if s.phase == PHASE_RIICHI_DISCARD {
+                assert_eq!((kind, actor), ("reach", Some(p)));
+            } else {
+                // The seat's own turn: after its draw (a replacement after a closed kan comes after
+                // the kan's dora), or after its call.
+                assert!(matches!(kind, "tsumo" | "chi" | "pon"), "turn asked after {last}");
+                assert_eq!(actor, Some(p), "{last}");
+            }
+        });
+    }
 }
 
 #[test]
 fn a_seat_sees_only_its_own_hand_and_draws() {
-    let live = live_games(1, |_, _| {}).remove(0);
+    let live = live_games(Variant::Red, 1, |_, _| {}).remove(0);
     for seat in 0..4u8 {
         for e in live.events() {
             match view(e, seat) {
@@ -415,7 +425,7 @@ fn a_seat_rebuilt_from_its_view_sees_and_may_do_what_the_engine_shows_it() {
     use rinshan_engine::generated::kernel::{OBSERVE_CURRENT, PHASE_CLAIM};
     use rinshan_engine::generated::red as v;
     let decisions = std::cell::Cell::new(0);
-    live_games(40, |live, s| {
+    live_games(Variant::Red, 40, |live, s| {
         let p = live.mjai_seat(s.current);
         let player = told(live, p);
         let r = player
@@ -469,4 +479,14 @@ fn a_seat_rebuilt_from_its_view_sees_and_may_do_what_the_engine_shows_it() {
         decisions.set(decisions.get() + 1);
     });
     assert!(decisions.get() > 1000);
+}
+
+#[test]
+fn the_player_says_it_does_not_sit_at_three_player_tables() {
+    let mut player = super::player::Player::new(Some(0));
+    let mut said = Vec::new();
+    let line = r#"[{"type":"start_game","names":["A","B","C"],"id":0}]"#;
+    let reply = player.respond(line, super::bot::Dialect::App, &mut |_| Ok(0), &mut |m| said.push(m));
+    assert_eq!(reply.as_deref(), Some(r#"{"type":"none"}"#));
+    assert!(said[0].contains("an event of a three-player game"), "{said:?}");
 }

@@ -1,7 +1,9 @@
 """A small MJAI bot for rinshan's tests (Python standard library only).
 
 It keeps its own hand from the events, discards what it draws, pons whenever it holds a pair of
-the discarded tile (then discards a tile of another kind) and passes everything else. Modes that
+the discarded tile (then discards a tile of another kind) and passes everything else. At a
+three-player table (`start_kyoku` lists three scores) it sets a drawn North aside (`kita`) in the
+first ten turns of a round, when the wall surely has a replacement tile. Modes that
 misbehave on purpose exercise the host's penalties: `garbage`, `sleep`, `die`, `flood`,
 `wrong-actor` and `illegal` do so at the bot's third decision.
 
@@ -23,11 +25,15 @@ class Bot:
         self.mode = mode
         self.hand = []
         self.turns = 0
+        self.three = False
+        self.round_turns = 0
 
     def update(self, e):
         t = e["type"]
         if t == "start_kyoku":
             self.hand = list(e["tehais"][self.seat])
+            self.three = len(e["scores"]) == 3
+            self.round_turns = 0
         elif e.get("actor") != self.seat:
             return
         elif t == "tsumo":
@@ -37,6 +43,8 @@ class Bot:
         elif t in ("pon", "chi"):
             for c in e["consumed"]:
                 self.hand.remove(c)
+        elif t == "kita":
+            self.hand.remove(e["pai"])
 
     def react(self, last):
         """The reaction to the event `last`, which the bot can act on."""
@@ -46,8 +54,11 @@ class Bot:
             return {"type": "none"}
         if t == "tsumo" and mine:
             self.turns += 1
+            self.round_turns += 1
             if self.turns == 3 and self.mode != "play":
                 return self.misbehave(last)
+            if self.three and last["pai"] == "N" and self.round_turns <= 10:
+                return {"type": "kita", "actor": self.seat, "pai": "N"}
             return {"type": "dahai", "actor": self.seat, "pai": last["pai"], "tsumogiri": True}
         if t == "pon" and mine:
             other = [x for x in self.hand if kind(x) != kind(last["pai"])]
