@@ -169,9 +169,7 @@ async fn a_whole_game_through_the_api_replays_from_its_log() {
     ranks.sort();
     assert_eq!(ranks, [0, 1, 2, 3]);
     // The downloaded log replays through the engine and agrees with it everywhere.
-    let (status, text) = get(&app, &format!("/api/games/{id}/log")).await;
-    assert_eq!(status, StatusCode::OK, "{text}");
-    let game = rinshan_logs::tenhou::log::parse_game("download", &text).expect("a Tenhou log");
+    let (text, game) = replayed_log(&app, &id).await;
     // The log numbers seats from the first dealer: the person's seat 2 is seat 2 - first there.
     assert_eq!(
         game.names[(2 + 4 - first) % 4],
@@ -179,9 +177,6 @@ async fn a_whole_game_through_the_api_replays_from_its_log() {
         "first dealer {first}: {:?}",
         game.names
     );
-    let report = rinshan_logs::tenhou::replay::replay(std::slice::from_ref(&game), rinshan_engine::env::Backend::Cpu)
-        .expect("it replays");
-    assert!(report.all_agree(), "the log replays exactly");
     // The replay page of that log.
     let (status, page) = send(&app, Method::POST, "/api/replay", Some(&text), false).await;
     assert_eq!(status, StatusCode::OK);
@@ -285,13 +280,19 @@ async fn a_sanma_game_is_played_and_logged() {
     let id = v["id"].as_str().expect("an id").to_string();
     let last = play_to_the_end(&app, &id).await;
     assert_eq!(last["scores"].as_array().map(Vec::len), Some(3), "{last}");
-    let (status, text) = get(&app, &format!("/api/games/{id}/log")).await;
+    let (_, game) = replayed_log(&app, &id).await;
+    assert_eq!(game.variant, rinshan_engine::Variant::Sanma);
+}
+
+/// Game `id`'s downloaded Tenhou log, checked to replay through the engine exactly.
+pub(crate) async fn replayed_log(app: &Router, id: &str) -> (String, rinshan_logs::tenhou::log::Game) {
+    let (status, text) = get(app, &format!("/api/games/{id}/log")).await;
     assert_eq!(status, StatusCode::OK, "{text}");
     let game = rinshan_logs::tenhou::log::parse_game("download", &text).expect("a Tenhou log");
-    assert_eq!(game.variant, rinshan_engine::Variant::Sanma);
     let report = rinshan_logs::tenhou::replay::replay(std::slice::from_ref(&game), rinshan_engine::env::Backend::Cpu)
         .expect("it replays");
-    assert!(report.all_agree(), "{report:?}");
+    assert!(report.all_agree(), "the log replays exactly: {report:?}");
+    (text, game)
 }
 
 /// Plays game `id` to its end, the person taking the first legal action; the last view.
@@ -324,14 +325,9 @@ async fn a_wrc_game_is_logged_under_its_rules() {
     let body = json!({"variant": "wrc", "mode": "east", "seat": 1, "agents": ["rule", "rule", "rule"], "delay_ms": 0});
     let id = new_game(&app, body).await["id"].as_str().expect("an id").to_string();
     play_to_the_end(&app, &id).await;
-    let (status, text) = get(&app, &format!("/api/games/{id}/log")).await;
-    assert_eq!(status, StatusCode::OK, "{text}");
+    let (text, game) = replayed_log(&app, &id).await;
     assert!(text.contains("\"variant\":\"wrc\""), "{text}");
-    let game = rinshan_logs::tenhou::log::parse_game("download", &text).expect("a Tenhou log");
     assert_eq!((game.variant, game.red_fives), (rinshan_engine::Variant::Wrc, false));
-    let report = rinshan_logs::tenhou::replay::replay(std::slice::from_ref(&game), rinshan_engine::env::Backend::Cpu)
-        .expect("it replays");
-    assert!(report.all_agree(), "{report:?}");
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]

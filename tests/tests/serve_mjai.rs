@@ -15,7 +15,7 @@ use rinshan_logs::tenhou::log::{Discard, Draw};
 use rinshan_serve::{app, Limits, NamedBot};
 use serde_json::{json, Value};
 
-use super::serve_http::{get, new_game, parsed, play_to_the_end, post, settled};
+use super::serve_http::{get, new_game, parsed, play_to_the_end, post, replayed_log, settled};
 
 fn simple_bot(name: &str, dialect: Dialect, mode: &str, timeout: Duration) -> NamedBot {
     let script: PathBuf = [env!("CARGO_MANIFEST_DIR"), "data", "mjai", "bots", "simple_bot.py"]
@@ -86,12 +86,7 @@ async fn bots_play_a_whole_game_with_a_person() {
     assert!(!last["events"].to_string().contains("failed"), "{}", last["events"]);
     // The log replays through the engine, and the bots' seats played the bot's policy: every
     // drawn tile discarded at once, a tile from the hand after each pon, no other call.
-    let (status, text) = get(&app, &format!("/api/games/{id}/log")).await;
-    assert_eq!(status, StatusCode::OK, "{text}");
-    let game = rinshan_logs::tenhou::log::parse_game("download", &text).expect("a Tenhou log");
-    let report = rinshan_logs::tenhou::replay::replay(std::slice::from_ref(&game), rinshan_engine::env::Backend::Cpu)
-        .expect("it replays");
-    assert!(report.all_agree(), "the log replays exactly");
+    let (_, game) = replayed_log(&app, &id).await;
     let mut pons = 0;
     for round in &game.rounds {
         for seat in [1, 3] {
@@ -124,13 +119,8 @@ async fn bots_play_a_three_player_game() {
     let id = v["id"].as_str().expect("an id").to_string();
     let last = play_to_the_end(&app, &id).await;
     assert!(!last["events"].to_string().contains("failed"), "{}", last["events"]);
-    let (status, text) = get(&app, &format!("/api/games/{id}/log")).await;
-    assert_eq!(status, StatusCode::OK, "{text}");
-    let game = rinshan_logs::tenhou::log::parse_game("download", &text).expect("a Tenhou log");
+    let (_, game) = replayed_log(&app, &id).await;
     assert_eq!(game.variant, rinshan_engine::Variant::Sanma);
-    let report = rinshan_logs::tenhou::replay::replay(std::slice::from_ref(&game), rinshan_engine::env::Backend::Cpu)
-        .expect("it replays");
-    assert!(report.all_agree(), "{report:?}");
     let north = rinshan_engine::tile::Tile::plain(rinshan_engine::tile::TileType::NORTH);
     let mut kitas = 0;
     // The log numbers seats from the first dealer: the bots' are found by their names.
