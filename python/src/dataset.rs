@@ -127,7 +127,8 @@ fn dataset_records<'py>(
                 d.set_item("seat", PyArray1::from_vec(py, rows.seat))?;
                 d.set_item("round", PyArray1::from_vec(py, rows.round))?;
                 d.set_item("scores", rows.scores.to_vec())?;
-                d.set_item("ranks", rows.ranks.to_vec())?;
+                // As a list of ints (a Vec<u8> would become Python bytes).
+                d.set_item("ranks", rows.ranks.map(u32::from).to_vec())?;
             }
         }
         list.append(d)?;

@@ -235,6 +235,8 @@ def test_a_three_player_log_makes_a_sanma_dataset(tmp_path, cli):
     want = [rnd["action"][rnd["legal_action_mask"].sum(axis=1) > 1] for rnd in game["rounds"]]
     np.testing.assert_array_equal(rows["action"], np.concatenate(want))
     assert set(np.unique(rows["seat"])) == {0, 1, 2}
+    (only,) = list(iterate(SANMA, observation=None, variant="sanma"))
+    assert only["ranks"] == list(rows["ranks"][0]) and only["ranks"][3] == 3
     assert rows["scores"][0][:3].sum() == 105_000 and sorted(rows["ranks"][0][:3]) == [0, 1, 2]
     # The CLI makes the same bytes.
     mine = tmp_path / "cli"
