@@ -60,11 +60,6 @@ impl Live {
         ((p + self.seats - self.first) % self.seats) as u8
     }
 
-    /// Players at the table.
-    pub fn seats(&self) -> usize {
-        self.seats as usize
-    }
-
     /// The game ended (by the rules, with `end_game` sent, or by an illegal action).
     pub fn is_over(&self) -> bool {
         self.over

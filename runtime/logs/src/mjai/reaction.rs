@@ -16,7 +16,7 @@ fn tile(p: &Pai, what: &str) -> Result<Tile, String> {
 
 /// Action `a` is legal in `s`.
 pub(super) fn legal(s: &GameState, a: u32) -> bool {
-    a < 96 && s.mask[(a / 32) as usize] >> (a % 32) & 1 == 1
+    s.mask.get((a / 32) as usize).is_some_and(|w| w >> (a % 32) & 1 == 1)
 }
 
 /// The action id of `reaction`, the reply of the bot in MJAI seat `seat` to state `s` of a game
@@ -57,15 +57,15 @@ pub fn action_of(reaction: &Event, seat: u8, s: &GameState, variant: Variant) ->
             let v = u32::from(tile(pai, "discarded")?.value());
             let from_hand = k::ACTION_DISCARD + v;
             let drawn = s.drawn == v;
-            let legal = |a: u32| ids.get(a).is_some_and(|a| legal(s, a));
+            let allowed = |a: u32| ids.get(a).is_some_and(|a| legal(s, a));
             let (stated, other) = if *tsumogiri {
                 (drawn.then_some(k::ACTION_TSUMOGIRI), Some(from_hand))
             } else {
                 (Some(from_hand), drawn.then_some(k::ACTION_TSUMOGIRI))
             };
             match (stated, other) {
-                (Some(a), _) if legal(a) => a,
-                (_, Some(a)) if legal(a) => a,
+                (Some(a), _) if allowed(a) => a,
+                (_, Some(a)) if allowed(a) => a,
                 (Some(a), _) => a,
                 (None, _) => return Err(format!("tsumogiri of {pai}, but the drawn tile is another")),
             }
