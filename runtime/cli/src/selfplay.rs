@@ -34,10 +34,11 @@ pub struct Args {
     /// Print the summary as JSON
     #[arg(long)]
     json: bool,
-    /// Who plays the four seats: built-in agents (random, rule, greedy, defensive) or MJAI bots
-    /// (`mjai:COMMAND`, see `arena`); env i seats agent (p + i) mod 4 of the list at seat p, so
-    /// over a batch of 4k envs each agent plays every seat equally; or `uniform` for a uniformly
-    /// random legal policy drawn on the host (most such games end in draws)
+    /// Who plays the seats: built-in agents (random, rule, greedy, defensive) or MJAI bots
+    /// (`mjai:COMMAND`, see `arena`), one per seat (three players: three, or four taking turns to
+    /// sit out); env i seats agent (p + i) mod n of the n listed at seat p, so over a batch of a
+    /// multiple of n envs each agent plays every seat equally; or `uniform` for a uniformly random
+    /// legal policy drawn on the host (most such games end in draws)
     #[arg(long, value_delimiter = ',', default_value = "defensive,greedy,rule,random")]
     agents: Vec<String>,
     #[command(flatten)]
@@ -134,52 +135,63 @@ impl AgentTally {
     }
 }
 
-/// The players of `--agents`, and each env's kernel seating (None: the host's uniform random
-/// policy). An MJAI bot's seats hold `random` in the kernel's seating: the bot's action replaces it.
+/// The players of `--agents` (one per seat at a table of `seats`, or four), and each env's
+/// kernel seating (None: the host's uniform random policy). An MJAI bot's seats hold `random` in
+/// the kernel's seating: the bot's action replaces it.
 #[allow(clippy::type_complexity)]
-fn seatings(agents: &[String], batch: usize) -> Result<Option<([SeatArg; 4], Vec<[Agent; 4]>)>, CliError> {
+fn seatings(
+    agents: &[String],
+    batch: usize,
+    seats: usize,
+) -> Result<Option<(Vec<SeatArg>, Vec<[Agent; 4]>)>, CliError> {
     if agents.len() == 1 && agents[0] == "uniform" {
         return Ok(None);
     }
-    let parsed: Vec<SeatArg> = agents
+    let players: Vec<SeatArg> = agents
         .iter()
         .map(|a| a.parse().map_err(CliError::input))
         .collect::<Result<_, _>>()?;
-    let Ok(four) = <[SeatArg; 4]>::try_from(parsed) else {
+    let n = players.len();
+    if n != seats && n != 4 {
+        let three = if seats == 3 {
+            " (three players: 3, or 4 taking turns to sit out)"
+        } else {
+            ""
+        };
         return Err(CliError::input(format!(
-            "--agents needs 4 agents (one per seat) or `uniform`, got {}",
-            agents.len()
+            "--agents needs {seats} agents, one per seat{three}, or `uniform`; got {n}"
         )));
-    };
-    let kernel = four.clone().map(|a| match a {
-        SeatArg::Builtin(a) => a,
-        SeatArg::Mjai(_) => Agent::Random,
-    });
-    Ok(Some((
-        four,
-        (0..batch)
-            .map(|i| std::array::from_fn(|p| kernel[(p + i) % 4]))
-            .collect(),
-    )))
+    }
+    let kernel: Vec<Agent> = players
+        .iter()
+        .map(|a| match a {
+            SeatArg::Builtin(a) => *a,
+            SeatArg::Mjai(_) => Agent::Random,
+        })
+        .collect();
+    // A place past the list (three players' fourth) is never played.
+    let seating = (0..batch)
+        .map(|i| std::array::from_fn(|p| if p < n { kernel[(p + i) % n] } else { Agent::Random }))
+        .collect();
+    Ok(Some((players, seating)))
 }
 
 pub fn run(args: Args) -> Result<(), CliError> {
     let config = args.game.config(args.batch);
-    let (players, seatings) = match seatings(&args.agents, args.batch)? {
+    let (players, seatings) = match seatings(&args.agents, args.batch, config.variant.seats() as usize)? {
         Some((players, seatings)) => (Some(players), Some(seatings)),
         None => (None, None),
     };
-    let entrants: [Option<MjaiEntrant>; 4] = match &players {
-        Some(players) => {
-            let mut out: [Option<MjaiEntrant>; 4] = Default::default();
-            for (slot, p) in out.iter_mut().zip(players) {
-                if let SeatArg::Mjai(cmd) = p {
-                    *slot = Some(args.mjai.entrant(cmd)?);
-                }
-            }
-            out
-        }
-        None => Default::default(),
+    // Per entry of --agents, its MJAI bot if it is one.
+    let entrants: Vec<Option<MjaiEntrant>> = match &players {
+        Some(players) => players
+            .iter()
+            .map(|p| match p {
+                SeatArg::Mjai(cmd) => args.mjai.entrant(cmd).map(Some),
+                SeatArg::Builtin(_) => Ok(None),
+            })
+            .collect::<Result<_, _>>()?,
+        None => Vec::new(),
     };
     let with_bots = entrants.iter().any(Option::is_some);
     if with_bots {
@@ -243,9 +255,9 @@ pub fn run(args: Args) -> Result<(), CliError> {
             let states = env.game_states().map_err(CliError::failure)?;
             // Env i seats the players rotated by i, as the kernel's agents are; a three-player
             // game's fourth place is never played.
-            let at_table = variant.seats() as usize;
+            let (at_table, n) = (variant.seats() as usize, entrants.len());
             let seating = (0..states.len())
-                .map(|i| std::array::from_fn(|p| entrants[(p + i) % 4].clone().filter(|_| p < at_table)))
+                .map(|i| std::array::from_fn(|p| entrants[(p + i) % n].clone().filter(|_| p < at_table)))
                 .collect();
             Some(BatchBots::new(seating, states, variant))
         }
@@ -325,10 +337,11 @@ pub fn run(args: Args) -> Result<(), CliError> {
                 // Games are counted in env order within a step, so the same seed counts the same games.
                 if games < args.games {
                     if let Some(players) = &players {
-                        // Three players: the agent the rotation puts in seat 3 sits this game out.
+                        // Three players with four listed: the agent the rotation puts in seat 3
+                        // sits this game out.
                         for p in 0..variant.seats() as usize {
-                            // Env i seats entry (p + i) mod 4 of --agents at seat p.
-                            let name = players[(p + i) % 4].to_string();
+                            // Env i seats entry (p + i) mod n of --agents at seat p.
+                            let name = players[(p + i) % players.len()].to_string();
                             if let Some(k) = agent_names.iter().position(|n| *n == name) {
                                 per_agent[k].add(&finished, p, step.ranks[i][p], start);
                             }
@@ -515,7 +528,7 @@ fn summary(
     );
     if !agent_names.is_empty() {
         let places = ["1st", "2nd", "3rd", "4th"][..seats].join("/");
-        if seats == 4 {
+        if args.agents.len() == seats {
             println!("  per agent (each plays every seat in turn; win and deal-in rates per round):");
         } else {
             println!(

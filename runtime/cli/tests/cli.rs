@@ -454,6 +454,42 @@ fn selfplay_rejects_bad_options() {
     }
 }
 
+/// Three players take three agents (each then plays every game) or four (each sits out one game in
+/// four); any other count is refused.
+#[test]
+fn selfplay_seats_three_agents_at_three_player_tables() {
+    let line = "selfplay --variant sanma --games 6 --batch 3 --seed 4 --json --agents rule,greedy,defensive";
+    let v = json(&rinshan(&line.split(' ').collect::<Vec<_>>()));
+    let agents = v["per_agent"].as_array().expect("per agent");
+    assert_eq!(agents.len(), 3, "{v}");
+    assert!(agents.iter().all(|a| a["games"] == 6), "{v}");
+    let four = json(&rinshan(&[
+        "selfplay",
+        "--variant",
+        "sanma",
+        "--games",
+        "8",
+        "--batch",
+        "4",
+        "--seed",
+        "4",
+        "--json",
+    ]));
+    let games: Vec<u64> = four["per_agent"]
+        .as_array()
+        .expect("per agent")
+        .iter()
+        .filter_map(|a| a["games"].as_u64())
+        .collect();
+    // Three seats a game: 24 seat-games among four agents, each sitting some games out.
+    assert_eq!((games.len(), games.iter().sum::<u64>()), (4, 24), "{four}");
+    assert!(games.iter().all(|&g| g < 8), "{four}");
+    let out = rinshan(&["selfplay", "--variant", "sanma", "--agents", "rule,greedy"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("--agents needs 3 agents"), "{err}");
+}
+
 /// Games of each rule set exported as tenhou.net/6 replay under that rule set, one folder at a
 /// time and all together.
 #[test]
