@@ -331,7 +331,7 @@ pub fn parse_game(path: &str, text: &str) -> Result<Game, LogError> {
                 game.rule = rule;
                 game.red_fives = red_fives;
                 game.variant = variant;
-                game.names = parse_names(record);
+                game.names = parse_names(record, variant.seats() as usize);
             }
             Some(first) if (&rule, red_fives, variant) != (&game.rule, game.red_fives, game.variant) => {
                 let message = format!(
@@ -431,11 +431,12 @@ fn parse_rule(record: &Value) -> Result<(String, bool, Variant), String> {
     Ok((disp.to_string(), red, variant))
 }
 
-/// Names are only for display, so a missing or odd `name` is no error.
-fn parse_names(record: &Value) -> [String; 4] {
+/// Names are only for display, so a missing or odd `name` is no error; a name past the table's
+/// `seats` (three players' fourth place) is left out, as every format leaves that place empty.
+fn parse_names(record: &Value, seats: usize) -> [String; 4] {
     let mut names: [String; 4] = Default::default();
     if let Some(Value::Array(list)) = record.get("name") {
-        for (name, value) in names.iter_mut().zip(list) {
+        for (name, value) in names.iter_mut().zip(list).take(seats) {
             *name = value.as_str().unwrap_or_default().to_string();
         }
     }
@@ -544,6 +545,18 @@ fn parse_round(ctx: &mut Ctx, index: Option<usize>, v: &Value, seats: usize) -> 
         return Err(ctx.err("dora", message));
     }
     let outcome = result::parse_result(item(16)).map_err(|m| ctx.err("result", m))?;
+    if seats == 3 {
+        let fourth = match &outcome {
+            Outcome::Wins(wins) => wins
+                .iter()
+                .any(|w| w.deltas[3] != 0 || w.winner == 3 || w.from == 3 || w.pao == 3),
+            Outcome::Draw { deltas, .. } => deltas.is_some_and(|d| d[3] != 0),
+        };
+        if fourth {
+            let message = "a win or a payment of the fourth place, which three players leave empty";
+            return Err(ctx.err("result", message));
+        }
+    }
     Ok(Round {
         line: ctx.line,
         seats,

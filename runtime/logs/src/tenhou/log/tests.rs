@@ -658,6 +658,16 @@ fn three_player_records() {
         "leave the fourth score 0",
     );
     refused(&|r| r["log"][0][0] = json!([3, 0, 0]), "kyoku 0-2, 4-6");
+    refused(
+        &|r| r["log"][0][16] = json!(["流局", [1000, -1000, -1000, 1000]]),
+        "a win or a payment of the fourth place, which three players leave empty",
+    );
+    // Names are for display: a fourth name at three players is left out (every format writes the
+    // fourth place empty), where a fourth score or hand is refused.
+    let mut named = sanma_record();
+    named["name"] = json!(["A", "B", "C", "D"]);
+    let game = parse_game("n.json", &named.to_string()).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(game.names, ["A", "B", "C", ""].map(String::from));
     // A four-player game has no one to set North aside for it, and no three-player log plays
     // under a four-player rule set.
     refused(&|r| r["log"][0][6] = json!(["f45", 60]), "not a discard letter");
