@@ -136,6 +136,7 @@ impl GameBuilder {
         if self.reader.started && !game.rule.starts_with('三') {
             game.rule.insert(0, '三');
         }
+        game.names[3].clear();
         self.reader.seats = 3;
     }
 
@@ -220,6 +221,11 @@ impl Reader {
                 }
                 self.started = true;
                 self.game.names = names;
+                // Names are only for display: a name for three players' empty fourth place (an
+                // mjlog's `n3`) is left out, as no format can write it back.
+                for name in &mut self.game.names[self.seats..] {
+                    name.clear();
+                }
                 self.game.red_fives = aka_flag.unwrap_or(true);
                 let length = if kyoku_first == Some(4) { "東" } else { "南" };
                 let red = if self.game.red_fives { "喰赤" } else { "喰" };

@@ -409,16 +409,8 @@ impl State {
         let mut events = Vec::new();
         if !self.started {
             self.started = true;
-            // Three players leave the fourth place's name empty, as every format does.
-            let seats = usize::from(self.seats);
             events.push(Event::StartGame {
-                names: std::array::from_fn(|s| {
-                    if s < seats {
-                        self.names[s].clone()
-                    } else {
-                        String::new()
-                    }
-                }),
+                names: self.names.clone(),
                 id: None,
                 kyoku_first: Some(if self.east_only { 4 } else { 0 }),
                 aka_flag: Some(self.red),
