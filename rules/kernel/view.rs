@@ -12,12 +12,14 @@
 struct Seen {
     seat: u32,
     hand: [u32; 34],
-    // counts by type of everything visible to the observer: own hand, rivers (not called), melds,
-    // indicators; and red fives among them outside the own hand, by suit.
-    seen: [u32; 34],
+    // The rows below are packed cells (`pack_cells`: four types to a word), the form the writers
+    // put them in: the hand; counts by type of everything visible to the observer (own hand,
+    // rivers not called, melds, indicators); dora multiplicity by type (revealed indicators).
+    hand_cells: [u32; 9],
+    seen_cells: [u32; 9],
+    dora_cells: [u32; 9],
+    // Red fives seen outside the own hand, by suit.
     red_seen: u32,
-    // dora multiplicity by type (revealed indicators only).
-    dora: [u32; 34],
     // The decision asked of the observer (DECISION_*).
     decision: u32,
 }
@@ -89,36 +91,40 @@ fn table_tiles(s: &mut GameState) -> TableTiles {
         }
     }
     TableTiles {
-        seen: seen,
+        seen: pack_cells(seen),
         red_seen: red_seen,
     }
 }
 
 // The observer's facts, given the tiles on the table: the indicators and its own hand are added
 // here.
+// Counts are added as packed cells, a word of four at a time: each stays below 256 (a table holds
+// at most 160 tiles, a hand 14), so no cell carries into the next.
 fn gather_with(s: &mut GameState, seat: u32, table: TableTiles) -> Seen {
-    let hand: [u32; 34] = hand_counts(s, seat);
-    let mut seen: [u32; 34] = table.seen;
+    let hand: [u32; 9] = hand_cells(s, seat);
+    let mut seen: [u32; 9] = table.seen;
     let mut red_seen: u32 = table.red_seen;
-    let mut dora: [u32; 34] = [0u32; 34];
+    let mut dora: [u32; 9] = [0u32; 9];
     for i in 0u32..s.dora_revealed {
         let v: u32 = wall_tile(s, WALL_DORA + i);
         let t: u32 = value_type(v);
-        seen[t as usize] += 1u32;
-        dora[dora_of(t) as usize] += 1u32;
+        let d: u32 = dora_of(t);
+        seen[(t / 4u32) as usize] += cell_one(t);
+        dora[(d / 4u32) as usize] += cell_one(d);
         if v >= 34u32 {
             red_seen |= 1u32 << (v - 34u32);
         }
     }
-    for t in 0u32..34u32 {
-        seen[t as usize] = (seen[t as usize] + hand[t as usize]).min(4u32);
+    for j in 0u32..9u32 {
+        seen[j as usize] = cells_at_most_4(seen[j as usize] + hand[j as usize]);
     }
     Seen {
         seat: seat,
-        hand: hand,
-        seen: seen,
+        hand: hand_counts(s, seat),
+        hand_cells: hand,
+        seen_cells: seen,
+        dora_cells: dora,
         red_seen: red_seen,
-        dora: dora,
         decision: decision_of(s, seat),
     }
 }
@@ -217,26 +223,44 @@ fn view_scalars(s: &mut GameState, v: Seen) -> [u32; 24] {
         last = last_round(s) as i32;
     }
     put_scalar(&mut sc, S_ROUNDS_LEFT, last - (s.round as i32));
-    let mut own: [u32; 34] = v.hand;
     let mut reds: u32 = 0u32;
     for suit in 0u32..3u32 {
         reds += holds_red(s, seat, suit) as u32;
     }
     for i in 0u32..meld_count(s, seat) {
-        let m: u32 = s.melds[(seat * 4u32 + i) as usize];
-        meld_types(m, &mut own);
-        reds += (m >> MELD_REDS_SHIFT) & 3u32;
+        reds += (s.melds[(seat * 4u32 + i) as usize] >> MELD_REDS_SHIFT) & 3u32;
     }
+    // Each indicator counts the seat's copies of its dora: at most five reads, where a count by
+    // type would sum 34 products.
     let mut dora: u32 = reds;
-    for t in 0u32..34u32 {
-        dora += own[t as usize] * v.dora[t as usize];
+    for i in 0u32..s.dora_revealed {
+        let d: u32 = dora_of(value_type(wall_tile(s, WALL_DORA + i)));
+        dora += own_count(s, seat, d);
     }
     // Each North set aside (three players) is a dora, and one more per indicator showing North.
-    dora += kita_count(s, seat) * (1u32 + v.dora[NORTH as usize]);
+    dora += kita_count(s, seat) * (1u32 + cell_of(v.dora_cells, NORTH));
     put_scalar(&mut sc, S_OWN_DORA, dora as i32);
     put_scalar(&mut sc, S_OWN_RED, reds as i32);
     put_scalar(&mut sc, S_EVENTS, log_count(s) as i32);
     sc
+}
+
+// Copies of type `t` in the seat's hand and melds.
+fn own_count(s: &mut GameState, seat: u32, t: u32) -> u32 {
+    let mut n: u32 = hand_count(s, seat, t);
+    for i in 0u32..meld_count(s, seat) {
+        let m: u32 = s.melds[(seat * 4u32 + i) as usize];
+        let k: u32 = meld_kind(m);
+        let u: u32 = meld_tile(m);
+        if k == MELD_CHI {
+            n += (t >= u && t <= u + 2u32) as u32;
+        } else if k == MELD_PON {
+            n += 3u32 * ((t == u) as u32);
+        } else {
+            n += 4u32 * ((t == u) as u32);
+        }
+    }
+    n
 }
 
 fn set_has(set: [u32; 2], t: u32) -> bool {
@@ -436,12 +460,11 @@ pub fn planes_but_seats_into(s: &mut GameState, arg: u32, table: TableTiles, o: 
 // Every planes row but the seat blocks, into zeroed rows.
 fn write_own_planes(s: &mut GameState, v: Seen, o: &mut ObsPlanes) {
     let seat: u32 = v.seat;
-    let hand: [u32; 9] = pack_cells(v.hand);
     for k in 0u32..4u32 {
-        put_row(o, P_HAND + k, cells_above(hand, k));
+        put_row(o, P_HAND + k, cells_above(v.hand_cells, k));
     }
-    put_row(o, P_SEEN, pack_cells(v.seen));
-    put_row(o, P_DORA, pack_cells(v.dora));
+    put_row(o, P_SEEN, v.seen_cells);
+    put_row(o, P_DORA, v.dora_cells);
     for suit in 0u32..3u32 {
         put_plane(o, P_RED, suit * 9u32 + 4u32, holds_red(s, seat, suit) as u32);
         put_plane(o, P_RED_SEEN, suit * 9u32 + 4u32, (v.red_seen >> suit) & 1u32);
@@ -575,11 +598,9 @@ pub fn tokens_but_events_into(s: &mut GameState, arg: u32, table: TableTiles, o:
 fn write_tokens_but_events(s: &mut GameState, v: Seen, o: &mut ObsTokens) {
     let seat: u32 = v.seat;
     // Both fields start on a word boundary (view_layout.rs).
-    let hand: [u32; 9] = pack_cells(v.hand);
-    let seen: [u32; 9] = pack_cells(v.seen);
     for j in 0u32..9u32 {
-        o.words[(T_HAND / 4u32 + j) as usize] |= hand[j as usize];
-        o.words[(T_SEEN / 4u32 + j) as usize] |= seen[j as usize];
+        o.words[(T_HAND / 4u32 + j) as usize] |= v.hand_cells[j as usize];
+        o.words[(T_SEEN / 4u32 + j) as usize] |= v.seen_cells[j as usize];
     }
     for suit in 0u32..3u32 {
         put_tok(o, T_HAND_RED + suit, holds_red(s, seat, suit) as u32);

@@ -23,6 +23,44 @@ fn pack_cells(v: [u32; 34]) -> [u32; 9] {
     p
 }
 
+// Cell `t` of packed cells.
+fn cell_of(p: [u32; 9], t: u32) -> u32 {
+    (p[(t / 4u32) as usize] >> ((t % 4u32) * 8u32)) & 255u32
+}
+
+// One in cell `t` of packed cells, in its word (t / 4).
+fn cell_one(t: u32) -> u32 {
+    1u32 << ((t % 4u32) * 8u32)
+}
+
+// Packed cells each capped at 4, whatever their values: a byte's top bit is set first when it is
+// 128 or more, or when its low seven bits minus 5 do not borrow (each byte is at least 128 once
+// or-ed with it, so no borrow crosses a byte).
+fn cells_at_most_4(x: u32) -> u32 {
+    let over: u32 = ((((x | 0x80808080u32) - 0x05050505u32) | x) & 0x80808080u32) >> 7u32;
+    let m: u32 = over * 255u32;
+    (x & !m) | (0x04040404u32 & m)
+}
+
+// The low 16 bits' four nibbles, each to the low nibble of a byte.
+fn nibbles_to_cells(x: u32) -> u32 {
+    let a: u32 = (x | (x << 8u32)) & 0x00ff00ffu32;
+    (a | (a << 4u32)) & 0x0f0f0f0fu32
+}
+
+// The seat's concealed counts as packed cells, straight from the hand's words (4 bits per type,
+// 8 types a word): `pack_cells(hand_counts(s, seat))` without the 34 counts between.
+fn hand_cells(s: &mut GameState, seat: u32) -> [u32; 9] {
+    let mut p: [u32; 9] = [0u32; 9];
+    for w in 0u32..4u32 {
+        let word: u32 = s.hands[(seat * 5u32 + w) as usize];
+        p[(w * 2u32) as usize] = nibbles_to_cells(word & 0xffffu32);
+        p[(w * 2u32 + 1u32) as usize] = nibbles_to_cells(word >> 16u32);
+    }
+    p[8] = nibbles_to_cells(s.hands[(seat * 5u32 + 4u32) as usize] & 0xffu32);
+    p
+}
+
 // Packed cells (`pack_cells`) as the nine words row `row` spans from its first word: 34 = 8 * 4 + 2,
 // so even rows start on a word boundary and odd rows half-way into one.
 fn at_row(p: [u32; 9], row: u32) -> [u32; 9] {

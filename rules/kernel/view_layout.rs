@@ -85,11 +85,12 @@ pub const RIICHI_DECLARED: u32 = 1;
 pub const RIICHI_ACCEPTED: u32 = 2;
 pub const RIICHI_DOUBLE: u32 = 3;
 
-// The tiles every seat sees on the table, by type: river tiles not called away and the melds'
-// tiles; and the suits (a bit each) with a red five among them.
+// The tiles every seat sees on the table, by type as packed cells (`pack_cells`: byte t % 4 of word
+// t / 4): river tiles not called away and the melds' tiles; and the suits (a bit each) with a red
+// five among them.
 #[derive(Clone, Copy)]
 pub struct TableTiles {
-    pub seen: [u32; 34],
+    pub seen: [u32; 9],
     pub red_seen: u32,
 }
 

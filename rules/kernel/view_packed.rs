@@ -86,8 +86,8 @@ fn write_own_packed(s: &mut GameState, v: Seen, o: &mut ObsPacked) {
     }
     let seen: u32 = packed_index(P_SEEN);
     let dora: u32 = packed_index(P_DORA);
-    put_count_row(o, seen, pack_cells(v.seen));
-    put_count_row(o, dora, pack_cells(v.dora));
+    put_count_row(o, seen, v.seen_cells);
+    put_count_row(o, dora, v.dora_cells);
     // Red fives are at their type's column: 4, 13, 22 (all in the low word).
     let mut red: u32 = 0u32;
     let mut red_seen: u32 = 0u32;

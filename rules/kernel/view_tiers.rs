@@ -34,7 +34,7 @@ fn analysis_of(s: &mut GameState, arg: u32) -> ObsAnalysis {
     let mut unseen: [u32; 34] = [0u32; 34];
     let mut tiles: u32 = 0u32;
     for t in 0u32..34u32 {
-        unseen[t as usize] = 4u32 - v.seen[t as usize];
+        unseen[t as usize] = 4u32 - cell_of(v.seen_cells, t);
         tiles += v.hand[t as usize];
     }
     let w: [u32; 2] = own_waits(s, seat);

@@ -1,5 +1,6 @@
 //! The bytes of the observation forms over random play are pinned, each seat's view at many
-//! positions of both four-player rule sets: making the view faster must keep them. The pinned
+//! positions of four rule sets (red, no-red and M-League for four players, sanma for three):
+//! making the view faster must keep them. The pinned
 //! values were computed by the per-tile view code that the bit-parallel one replaced; a change of
 //! meaning changes them, and its commit says why.
 
@@ -23,7 +24,7 @@ fn fingerprint(variant: Variant) -> u64 {
     let mut hash = Fingerprint::new();
     for step in 0..1600 {
         if step % 4 == 0 {
-            for seat in 0..4 {
+            for seat in 0..variant.seats() {
                 for form in [Form::Planes, Form::Tokens] {
                     hash.add_bytes(env.observe(form, Observer::Seat(seat)).expect("observe"));
                 }
@@ -58,4 +59,16 @@ fn red_observation_bytes_are_pinned() {
 #[test]
 fn no_red_observation_bytes_are_pinned() {
     assert_eq!(format!("{:016x}", fingerprint(Variant::NoRed)), "9fc4f0e155a7e0d7");
+}
+
+#[test]
+fn mleague_observation_bytes_are_pinned() {
+    assert_eq!(format!("{:016x}", fingerprint(Variant::Mleague)), "b60ce4613669aa65");
+}
+
+/// Three players' observations come from the kernel's writers on the CPU too (the views that
+/// follow the log take four seats).
+#[test]
+fn sanma_observation_bytes_are_pinned() {
+    assert_eq!(format!("{:016x}", fingerprint(Variant::Sanma)), "bc5e0ec6f1435117");
 }

@@ -370,8 +370,12 @@ impl TableView {
         for (suit, &n) in self.red_in_rivers.iter().enumerate() {
             red_seen |= u32::from(n > 0) << suit;
         }
+        let mut seen = [0u8; 36];
+        seen[..TYPES].copy_from_slice(&self.seen);
         k::TableTiles {
-            seen: self.seen.map(u32::from),
+            seen: std::array::from_fn(|j| {
+                u32::from_le_bytes([seen[4 * j], seen[4 * j + 1], seen[4 * j + 2], seen[4 * j + 3]])
+            }),
             red_seen,
         }
     }
