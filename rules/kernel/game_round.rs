@@ -343,6 +343,24 @@ pub fn uma_shares(scores: [i32; 4], ranks: [u32; 4], uma: [i32; 4]) -> [i32; 4] 
     out
 }
 
+// Every seat's place, as `seat_rank` gives each: one comparison per pair of seats instead of a
+// pass over the seats per seat (the observation's scalars hold all of them).
+fn seat_ranks(s: &mut GameState) -> [u32; 4] {
+    let first: u32 = first_dealer_seat(s);
+    let mut ranks: [u32; 4] = [0u32; 4];
+    for p in 0u32..SEATS {
+        for q in p + 1u32..SEATS {
+            let a: i32 = s.scores[p as usize];
+            let b: i32 = s.scores[q as usize];
+            let p_sits_first: bool = (p + SEATS - first) % SEATS < (q + SEATS - first) % SEATS;
+            let q_above: u32 = (b > a || (b == a && !p_sits_first)) as u32;
+            ranks[p as usize] += q_above;
+            ranks[q as usize] += 1u32 - q_above;
+        }
+    }
+    ranks
+}
+
 // Uma by rank and the leftover sticks to the top seat, paid in the game's final step.
 fn finish_game(s: &mut GameState) {
     let top: u32 = top_seat(s);

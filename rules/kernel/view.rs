@@ -183,11 +183,12 @@ fn riichi_state(s: &mut GameState, q: u32) -> u32 {
 fn view_scalars(s: &mut GameState, v: Seen) -> [u32; 24] {
     let seat: u32 = v.seat;
     let mut sc: [u32; 24] = [0u32; 24];
+    let ranks: [u32; 4] = seat_ranks(s);
     for j in 0u32..SEATS {
         let p: u32 = (seat + j) % SEATS;
         let f: u32 = s.seat_flags[p as usize];
         put_scalar(&mut sc, S_SCORE + j, s.scores[p as usize] / 100i32);
-        put_scalar(&mut sc, S_RANK + j, seat_rank(s, p) as i32);
+        put_scalar(&mut sc, S_RANK + j, ranks[p as usize] as i32);
         put_scalar(&mut sc, S_RIICHI + j, riichi_state(s, p) as i32);
         put_scalar(&mut sc, S_IPPATSU + j, ((f & SEAT_IPPATSU) != 0u32) as i32);
         put_scalar(&mut sc, S_CONCEALED + j, ((f & SEAT_CONCEALED) != 0u32) as i32);
