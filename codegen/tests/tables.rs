@@ -6,7 +6,7 @@ use std::sync::OnceLock;
 use std::time::Instant;
 
 use rinshan_codegen::tables::{
-    self, cost_d, decomp, honor_code, pack_costs, suit_code, CostRow, Tables, HONOR_CODES, SUIT_CODES,
+    self, cost_d, decomp, honor_code, pack_costs, pairs, suit_code, CostRow, Tables, HONOR_CODES, SUIT_CODES,
 };
 
 fn tables() -> &'static Tables {
@@ -371,7 +371,7 @@ fn check_packing(rows: &[CostRow], word_of: impl Fn(usize) -> u32) {
         }
         let word = pack_costs(row).expect("an in-range row packs");
         assert!(word < 1 << 18, "code {code}: {word:#x} uses more than 18 bits");
-        assert_eq!(word, word_of(code), "code {code}: table word");
+        assert_eq!(word, word_of(code) & pairs::COST_MASK, "code {code}: table word");
         for m in 0..5 {
             for h in 0..2 {
                 assert_eq!(cost_d(word, m, h), u32::from(row[2 * m + h]), "code {code}: D({m},{h})");
@@ -465,13 +465,18 @@ fn layout_and_exports() {
     assert_eq!(t.honor_cost as usize, SUIT_CODES);
     assert_eq!(t.decomp_index as usize, SUIT_CODES + HONOR_CODES);
     assert_eq!(t.decomps as usize, t.decomp_index as usize + SUIT_CODES);
-    assert_eq!(t.words.len(), t.decomps as usize + 2 * t.n_decomps as usize);
+    let (s, h) = (t.suit_rows.len(), t.honor_rows.len());
+    assert_eq!(t.suit_pairs as usize, t.decomps as usize + 2 * t.n_decomps as usize);
+    assert_eq!(t.suit_honor_pairs as usize, t.suit_pairs as usize + s * s);
+    assert_eq!(t.words.len(), t.suit_honor_pairs as usize + s * h);
     assert_eq!(
         t.kernel_consts(),
         format!(
             "const T_SUIT_COST: u32 = 0u32;\nconst T_HONOR_COST: u32 = {}u32;\n\
-             const T_DECOMP_INDEX: u32 = {}u32;\nconst T_DECOMPS: u32 = {}u32;\n",
-            t.honor_cost, t.decomp_index, t.decomps
+             const T_DECOMP_INDEX: u32 = {}u32;\nconst T_DECOMPS: u32 = {}u32;\n\
+             const T_SUIT_PAIRS: u32 = {}u32;\nconst T_SUIT_HONOR_PAIRS: u32 = {}u32;\n\
+             const T_SUIT_ROWS: u32 = {s}u32;\nconst T_HONOR_ROWS: u32 = {h}u32;\nconst T_ROW_SHIFT: u32 = 18u32;\n",
+            t.honor_cost, t.decomp_index, t.decomps, t.suit_pairs, t.suit_honor_pairs
         )
     );
     let bytes = t.to_le_bytes();
@@ -492,6 +497,71 @@ fn layout_and_exports() {
     assert_eq!(next, t.n_decomps);
 }
 
+/// D(m, h) of two groups taken as one, by brute force over the targets' splits between them:
+/// the fewest tiles over every way to build `m1` of the sets and `h1` of the pairs in the first.
+fn brute_combined(a: u32, b: u32, m: usize, h: usize) -> u32 {
+    (0..=m)
+        .flat_map(|m1| (0..=h).map(move |h1| (m1, h1)))
+        .map(|(m1, h1)| cost_d(a, m1, h1) + cost_d(b, m - m1, h - h1))
+        .min()
+        .expect("at least one split")
+}
+
+/// Every cost word carries the number of its row among the distinct rows of its kind, and the
+/// pair tables hold, for every two rows, the row of the two groups taken as one.
+#[test]
+fn pair_tables_combine_every_two_rows() {
+    let t = tables();
+    // Few distinct rows: what makes a table of every pair small (its size is in the docs).
+    assert_eq!((t.suit_rows.len(), t.honor_rows.len()), (126, 55));
+    for (rows, words) in [
+        (
+            &t.suit_rows,
+            (0..SUIT_CODES).map(|c| t.suit_cost_word(c)).collect::<Vec<_>>(),
+        ),
+        (&t.honor_rows, (0..HONOR_CODES).map(|c| t.honor_cost_word(c)).collect()),
+    ] {
+        assert!(rows.windows(2).all(|w| w[0] < w[1]), "rows ascending and distinct");
+        for (code, w) in words.iter().enumerate() {
+            let n = (w >> pairs::ROW_SHIFT) as usize;
+            assert_eq!(
+                rows.get(n),
+                Some(&(w & pairs::COST_MASK)),
+                "code {code}: row number {n}"
+            );
+        }
+    }
+    let check = |a: u32, b: u32, word: u32| {
+        for m in 0..5 {
+            for h in 0..2 {
+                assert_eq!(
+                    cost_d(word, m, h),
+                    brute_combined(a, b, m, h),
+                    "rows {a:#x} and {b:#x}: D({m},{h})"
+                );
+            }
+        }
+    };
+    for (i, &a) in t.suit_rows.iter().enumerate() {
+        for (j, &b) in t.suit_rows.iter().enumerate() {
+            check(a, b, t.suit_pair_word(i, j));
+        }
+        for (j, &b) in t.honor_rows.iter().enumerate() {
+            check(a, b, t.suit_honor_pair_word(i, j));
+        }
+    }
+    // By hand: an empty suit and the honors' 1-1-1 (three honor singles) need a set and the
+    // pair from somewhere: two tiles turn two singles into a triplet, one more pairs the third.
+    let empty = t.suit_cost_word(0) & pairs::COST_MASK;
+    let singles = t.honor_cost_word(honor_code(&[1, 1, 1, 0, 0, 0, 0])) & pairs::COST_MASK;
+    let (i, j) = (
+        t.suit_rows.binary_search(&empty).expect("a row"),
+        t.honor_rows.binary_search(&singles).expect("a row"),
+    );
+    assert_eq!(cost_d(t.suit_honor_pair_word(i, j), 1, 1), 3);
+    assert_eq!(cost_d(t.suit_honor_pair_word(i, j), 0, 0), 0);
+}
+
 #[test]
 fn region_hashes_are_pinned() {
     let got = tables().region_hashes();
@@ -499,10 +569,13 @@ fn region_hashes_are_pinned() {
     assert_eq!(
         got,
         [
-            ("suit_cost", 0x5927_4ac1_8f49_ddde),
-            ("honor_cost", 0x0c37_c429_6d29_9aaf),
+            // The cost words carry their rows' numbers since the pair tables came.
+            ("suit_cost", 0xfff5_422e_f38e_ab32),
+            ("honor_cost", 0xbd85_c3bf_1d52_db13),
             ("decomp_index", 0x3c6c_3388_ab75_fba0),
             ("decomps", 0x473f_b73d_ba79_a3b0),
+            ("suit_pairs", 0x8c50_af7d_cffe_a599),
+            ("suit_honor_pairs", 0x453b_87ca_1345_d7cb),
         ]
     );
 }

@@ -35,6 +35,17 @@ fn group_costs(w: u32) -> [u32; 10] {
     c
 }
 
+// The combined row of two suits' cost words (`combine_costs` of their rows, packed as a cost word),
+// read by the rows' numbers that the words carry above their costs.
+fn suit_pair(a: u32, b: u32) -> u32 {
+    table(T_SUIT_PAIRS + (a >> T_ROW_SHIFT) * T_SUIT_ROWS + (b >> T_ROW_SHIFT))
+}
+
+// The same for a suit's and the honors' cost words.
+fn suit_honor_pair(a: u32, b: u32) -> u32 {
+    table(T_SUIT_HONOR_PAIRS + (a >> T_ROW_SHIFT) * T_HONOR_ROWS + (b >> T_ROW_SHIFT))
+}
+
 // Min-plus combination of two groups' costs: out[m * 2 + h] is the cheapest split of m sets and
 // h pairs between them.
 fn combine_costs(a: [u32; 10], b: [u32; 10]) -> [u32; 10] {
@@ -60,9 +71,10 @@ fn shanten_normal(hand: [u32; 34], tiles: u32) -> i32 {
     let w1: u32 = table(T_SUIT_COST + suit_code(hand, 1u32));
     let w2: u32 = table(T_SUIT_COST + suit_code(hand, 2u32));
     let w3: u32 = table(T_HONOR_COST + honor_code(hand));
-    // Two independent pairs, then only the entries of the final combination that are needed.
-    let a: [u32; 10] = combine_costs(group_costs(w0), group_costs(w1));
-    let b: [u32; 10] = combine_costs(group_costs(w2), group_costs(w3));
+    // Two pairs of groups, combined ahead of time, then only the entries of the final
+    // combination that are needed.
+    let a: [u32; 10] = group_costs(suit_pair(w0, w1));
+    let b: [u32; 10] = group_costs(suit_honor_pair(w2, w3));
     missing(a, b, sets) - 1i32
 }
 
@@ -152,12 +164,16 @@ fn shanten_after_draws(hand: [u32; 34]) -> [i32; 34] {
     let c1: u32 = suit_code(hand, 1u32);
     let c2: u32 = suit_code(hand, 2u32);
     let c3: u32 = honor_code(hand);
-    let g0: [u32; 10] = group_costs(table(T_SUIT_COST + c0));
-    let g1: [u32; 10] = group_costs(table(T_SUIT_COST + c1));
-    let g2: [u32; 10] = group_costs(table(T_SUIT_COST + c2));
-    let g3: [u32; 10] = group_costs(table(T_HONOR_COST + c3));
-    let c01: [u32; 10] = combine_costs(g0, g1);
-    let c23: [u32; 10] = combine_costs(g2, g3);
+    let w0: u32 = table(T_SUIT_COST + c0);
+    let w1: u32 = table(T_SUIT_COST + c1);
+    let w2: u32 = table(T_SUIT_COST + c2);
+    let w3: u32 = table(T_HONOR_COST + c3);
+    let g0: [u32; 10] = group_costs(w0);
+    let g1: [u32; 10] = group_costs(w1);
+    let g2: [u32; 10] = group_costs(w2);
+    let g3: [u32; 10] = group_costs(w3);
+    let c01: [u32; 10] = group_costs(suit_pair(w0, w1));
+    let c23: [u32; 10] = group_costs(suit_honor_pair(w2, w3));
     // Kinds and pairs of the whole hand and of its terminals and honors, for the other two forms.
     let kp: [u32; 2] = kinds_and_pairs(hand, 0u32, N_TYPES);
     let op: [u32; 2] = orphan_kinds_and_pairs(hand);

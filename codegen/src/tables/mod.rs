@@ -5,10 +5,12 @@
 //!
 //! | region | words per entry | content |
 //! |---|---|---|
-//! | `suit_cost` | 1 per suit code | D as increments: D(m, 0) - D(m-1, 0) at bits `2(m-1)..2m` (m = 1..=4), D(m, 1) - D(m, 0) at bits `8+2m..10+2m` (m = 0..=4) |
+//! | `suit_cost` | 1 per suit code | D as increments: D(m, 0) - D(m-1, 0) at bits `2(m-1)..2m` (m = 1..=4), D(m, 1) - D(m, 0) at bits `8+2m..10+2m` (m = 0..=4); the row's number from bit 18 (see [`pairs`]) |
 //! | `honor_cost` | 1 per honor code | the same for honors (triplets and pairs only) |
 //! | `decomp_index` | 1 per suit code | `(first << 4) \| count` into `decomps` |
 //! | `decomps` | 2 per decomposition | word 0: pair and sets; word 1: yaku bits (see [`decomp`]) |
+//! | `suit_pairs` | 1 per pair of suit rows | the two rows combined, packed as a cost word (no number) |
+//! | `suit_honor_pairs` | 1 per suit row and honor row | the same for a suit and the honors |
 //!
 //! D is exact (see the `cost` module), so per-suit costs can be combined exactly by the shanten kernel.
 //! D(0, 0) is always 0 and every increment fits 2 bits (checked on every code at every build), so a
@@ -17,6 +19,7 @@
 mod code;
 mod cost;
 pub mod decomp;
+pub mod pairs;
 
 pub use code::{honor_code, suit_code, HONOR_CODES, SUIT_CODES};
 pub use cost::{pack as pack_costs, CostRow};
@@ -34,6 +37,11 @@ pub struct Tables {
     pub decomps: u32,
     /// Number of decompositions (the `decomps` region holds twice as many words).
     pub n_decomps: u32,
+    pub suit_pairs: u32,
+    pub suit_honor_pairs: u32,
+    /// The distinct suit and honor cost rows (cost words without their numbers), by number.
+    pub suit_rows: Vec<u32>,
+    pub honor_rows: Vec<u32>,
 }
 
 /// Builds every table. Deterministic: the same words on every run and machine.
@@ -45,10 +53,22 @@ pub fn build() -> Tables {
     let honor_cost = suit_cost + SUIT_CODES;
     let decomp_index = honor_cost + HONOR_CODES;
     let decomps_at = decomp_index + SUIT_CODES;
-    let mut words = vec![0u32; decomps_at + 2 * n_decomps];
+    let pairs_at = decomps_at + 2 * n_decomps;
+    let mut words = vec![0u32; pairs_at];
 
     cost::build::<9>(&cost::suit_sets(), &mut words[suit_cost..honor_cost]);
     cost::build::<7>(&cost::honor_sets(), &mut words[honor_cost..decomp_index]);
+    let suit_rows = pairs::distinct(&words[suit_cost..honor_cost]);
+    let honor_rows = pairs::distinct(&words[honor_cost..decomp_index]);
+    let mut suit_pairs = vec![0u32; suit_rows.len() * suit_rows.len()];
+    let mut suit_honor_pairs = vec![0u32; suit_rows.len() * honor_rows.len()];
+    pairs::build(&suit_rows, &suit_rows, &mut suit_pairs);
+    pairs::build(&suit_rows, &honor_rows, &mut suit_honor_pairs);
+    pairs::number(&mut words[suit_cost..honor_cost], &suit_rows);
+    pairs::number(&mut words[honor_cost..decomp_index], &honor_rows);
+    let suit_honor_at = pairs_at + suit_pairs.len();
+    words.extend(suit_pairs);
+    words.extend(suit_honor_pairs);
 
     let (index, list) = words[decomp_index..].split_at_mut(SUIT_CODES);
     // `decomps` is sorted by code, so each code's decompositions are one contiguous run.
@@ -73,15 +93,28 @@ pub fn build() -> Tables {
         decomp_index: offset(decomp_index),
         decomps: offset(decomps_at),
         n_decomps: offset(n_decomps),
+        suit_pairs: offset(pairs_at),
+        suit_honor_pairs: offset(suit_honor_at),
+        suit_rows,
+        honor_rows,
     }
 }
 
 impl Tables {
-    /// Kernel-subset Rust consts for the region offsets, one `const NAME: u32 = <n>u32;` a line.
+    /// Kernel-subset Rust consts, one `const NAME: u32 = <n>u32;` a line: the region offsets, then
+    /// the numbers of suit and honor rows (the pair tables' strides) and where a cost word's row
+    /// number starts.
     pub fn kernel_consts(&self) -> String {
+        let counts = [
+            ("SUIT_ROWS", self.suit_rows.len()),
+            ("HONOR_ROWS", self.honor_rows.len()),
+            ("ROW_SHIFT", pairs::ROW_SHIFT as usize),
+        ];
         self.regions()
             .iter()
-            .map(|(name, at, _)| format!("const T_{}: u32 = {at}u32;\n", name.to_uppercase()))
+            .map(|&(name, at, _)| (name.to_uppercase(), at as usize))
+            .chain(counts.map(|(name, n)| (name.to_string(), n)))
+            .map(|(name, n)| format!("const T_{name}: u32 = {n}u32;\n"))
             .collect()
     }
 
@@ -98,7 +131,7 @@ impl Tables {
             .collect()
     }
 
-    /// The packed cost word of a suit code.
+    /// The packed cost word of a suit code (its row's number from bit [`pairs::ROW_SHIFT`]).
     pub fn suit_cost_word(&self, code: usize) -> u32 {
         self.words[self.suit_cost as usize + code]
     }
@@ -116,12 +149,25 @@ impl Tables {
         &self.words[self.decomps as usize + 2 * first..][..2 * count]
     }
 
-    fn regions(&self) -> [(&'static str, u32, usize); 4] {
+    /// The combined row of suit rows `i` and `j` (by number).
+    pub fn suit_pair_word(&self, i: usize, j: usize) -> u32 {
+        self.words[self.suit_pairs as usize + i * self.suit_rows.len() + j]
+    }
+
+    /// The combined row of suit row `i` and honor row `j`.
+    pub fn suit_honor_pair_word(&self, i: usize, j: usize) -> u32 {
+        self.words[self.suit_honor_pairs as usize + i * self.honor_rows.len() + j]
+    }
+
+    fn regions(&self) -> [(&'static str, u32, usize); 6] {
+        let (s, h) = (self.suit_rows.len(), self.honor_rows.len());
         [
             ("suit_cost", self.suit_cost, SUIT_CODES),
             ("honor_cost", self.honor_cost, HONOR_CODES),
             ("decomp_index", self.decomp_index, SUIT_CODES),
             ("decomps", self.decomps, 2 * self.n_decomps as usize),
+            ("suit_pairs", self.suit_pairs, s * s),
+            ("suit_honor_pairs", self.suit_honor_pairs, s * h),
         ]
     }
 }
