@@ -11,7 +11,6 @@
 #[derive(Clone, Copy)]
 struct Seen {
     seat: u32,
-    hand: [u32; 34],
     // The rows below are packed cells (`pack_cells`: four types to a word), the form the writers
     // put them in: the hand; counts by type of everything visible to the observer (own hand,
     // rivers not called, melds, indicators); dora multiplicity by type (revealed indicators).
@@ -120,7 +119,6 @@ fn gather_with(s: &mut GameState, seat: u32, table: TableTiles) -> Seen {
     }
     Seen {
         seat: seat,
-        hand: hand_counts(s, seat),
         hand_cells: hand,
         seen_cells: seen,
         dora_cells: dora,
@@ -180,7 +178,7 @@ fn riichi_state(s: &mut GameState, q: u32) -> u32 {
     0u32
 }
 
-fn view_scalars(s: &mut GameState, v: Seen) -> [u32; 24] {
+fn view_scalars(s: &mut GameState, v: &mut Seen) -> [u32; 24] {
     let seat: u32 = v.seat;
     let mut sc: [u32; 24] = [0u32; 24];
     let ranks: [u32; 4] = seat_ranks(s);
@@ -204,7 +202,7 @@ fn view_scalars(s: &mut GameState, v: Seen) -> [u32; 24] {
     put_scalar(&mut sc, S_TILES_LEFT, (s.live_end - s.next_draw) as i32);
     put_scalar(&mut sc, S_KANS, s.kans as i32);
     put_scalar(&mut sc, S_DORA_REVEALED, s.dora_revealed as i32);
-    put_scalar(&mut sc, S_SHANTEN, shanten(ShantenInput { hand: v.hand }).shanten);
+    put_scalar(&mut sc, S_SHANTEN, shanten(ShantenInput { hand: hand_counts(s, seat) }).shanten);
     let w: [u32; 2] = own_waits(s, seat);
     let f: u32 = s.seat_flags[seat as usize];
     let furiten_now: bool = (f & (SEAT_FURITEN_TEMP | SEAT_FURITEN_RIICHI)) != 0u32
@@ -441,10 +439,10 @@ fn legal_self_kans(s: &mut GameState) -> [u32; 2] {
 // Writes the planes into a zeroed record.
 fn write_planes(s: &mut GameState, arg: u32, o: &mut ObsPlanes) {
     let seat: u32 = observer(s, arg);
-    let v: Seen = gather(s, seat);
-    write_own_planes(s, v, o);
+    let mut v: Seen = gather(s, seat);
+    write_own_planes(s, &mut v, o);
     view_seat_planes(s, seat, o);
-    o.scalars = view_scalars(s, v);
+    o.scalars = view_scalars(s, &mut v);
 }
 
 // The host's form of the planes for a game whose seat blocks and table tiles it keeps up to date
@@ -453,13 +451,13 @@ fn write_planes(s: &mut GameState, arg: u32, o: &mut ObsPlanes) {
 // expects the other rows zeroed), and the scalars.
 pub fn planes_but_seats_into(s: &mut GameState, arg: u32, table: TableTiles, o: &mut ObsPlanes) {
     let seat: u32 = observer(s, arg);
-    let v: Seen = gather_with(s, seat, table);
-    write_own_planes(s, v, o);
-    o.scalars = view_scalars(s, v);
+    let mut v: Seen = gather_with(s, seat, table);
+    write_own_planes(s, &mut v, o);
+    o.scalars = view_scalars(s, &mut v);
 }
 
 // Every planes row but the seat blocks, into zeroed rows.
-fn write_own_planes(s: &mut GameState, v: Seen, o: &mut ObsPlanes) {
+fn write_own_planes(s: &mut GameState, v: &mut Seen, o: &mut ObsPlanes) {
     let seat: u32 = v.seat;
     for k in 0u32..4u32 {
         put_row(o, P_HAND + k, cells_above(v.hand_cells, k));
@@ -580,8 +578,8 @@ pub fn tokens_into(s: &mut GameState, arg: u32, o: &mut ObsTokens) {
 // Writes the tokens into a zeroed record.
 fn write_tokens(s: &mut GameState, arg: u32, o: &mut ObsTokens) {
     let seat: u32 = observer(s, arg);
-    let v: Seen = gather(s, seat);
-    write_tokens_but_events(s, v, o);
+    let mut v: Seen = gather(s, seat);
+    write_tokens_but_events(s, &mut v, o);
     let n: u32 = view_events(s, seat, o);
     put_tok(o, T_EVENTS_LEN, n);
 }
@@ -592,11 +590,11 @@ fn write_tokens(s: &mut GameState, arg: u32, o: &mut ObsTokens) {
 pub fn tokens_but_events_into(s: &mut GameState, arg: u32, table: TableTiles, o: &mut ObsTokens) {
     o.words = [0u32; 254];
     let seat: u32 = observer(s, arg);
-    let v: Seen = gather_with(s, seat, table);
-    write_tokens_but_events(s, v, o);
+    let mut v: Seen = gather_with(s, seat, table);
+    write_tokens_but_events(s, &mut v, o);
 }
 
-fn write_tokens_but_events(s: &mut GameState, v: Seen, o: &mut ObsTokens) {
+fn write_tokens_but_events(s: &mut GameState, v: &mut Seen, o: &mut ObsTokens) {
     let seat: u32 = v.seat;
     // Both fields start on a word boundary (view_layout.rs).
     for j in 0u32..9u32 {

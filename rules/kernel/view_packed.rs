@@ -61,10 +61,10 @@ pub fn packed_into(s: &mut GameState, arg: u32, o: &mut ObsPacked) {
 // Writes the packed planes into a zeroed record.
 fn write_packed(s: &mut GameState, arg: u32, o: &mut ObsPacked) {
     let seat: u32 = observer(s, arg);
-    let v: Seen = gather(s, seat);
-    write_own_packed(s, v, o);
+    let mut v: Seen = gather(s, seat);
+    write_own_packed(s, &mut v, o);
     packed_seat_rows(s, seat, o);
-    o.scalars = view_scalars(s, v);
+    o.scalars = view_scalars(s, &mut v);
 }
 
 // The host's form for a game whose seat rows it keeps up to date, as `planes_but_seats_into`:
@@ -72,15 +72,15 @@ fn write_packed(s: &mut GameState, arg: u32, o: &mut ObsPacked) {
 // scalars.
 pub fn packed_but_seats_into(s: &mut GameState, arg: u32, table: TableTiles, o: &mut ObsPacked) {
     let seat: u32 = observer(s, arg);
-    let v: Seen = gather_with(s, seat, table);
-    write_own_packed(s, v, o);
-    o.scalars = view_scalars(s, v);
+    let mut v: Seen = gather_with(s, seat, table);
+    write_own_packed(s, &mut v, o);
+    o.scalars = view_scalars(s, &mut v);
 }
 
 // Every row but the seat blocks', into zeroed rows.
-fn write_own_packed(s: &mut GameState, v: Seen, o: &mut ObsPacked) {
+fn write_own_packed(s: &mut GameState, v: &mut Seen, o: &mut ObsPacked) {
     let seat: u32 = v.seat;
-    let held: [u32; 8] = held_sets(v.hand);
+    let held: [u32; 8] = held_sets(hand_counts(s, v.seat));
     for k in 0u32..4u32 {
         put_bits(o, P_HAND + k, [held[(k * 2u32) as usize], held[(k * 2u32 + 1u32) as usize]]);
     }

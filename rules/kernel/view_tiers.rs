@@ -30,12 +30,13 @@ pub fn observe_analysis(state: GameState, arg: u32) -> ObsAnalysis {
 fn analysis_of(s: &mut GameState, arg: u32) -> ObsAnalysis {
     let seat: u32 = observer(s, arg);
     let v: Seen = gather(s, seat);
+    let hand: [u32; 34] = hand_counts(s, seat);
     let mut out: [u32; 34] = [0u32; 34];
     let mut unseen: [u32; 34] = [0u32; 34];
     let mut tiles: u32 = 0u32;
     for t in 0u32..34u32 {
         unseen[t as usize] = 4u32 - cell_of(v.seen_cells, t);
-        tiles += v.hand[t as usize];
+        tiles += hand[t as usize];
     }
     let w: [u32; 2] = own_waits(s, seat);
     for t in 0u32..34u32 {
@@ -45,8 +46,8 @@ fn analysis_of(s: &mut GameState, arg: u32) -> ObsAnalysis {
         for t in 0u32..34u32 {
             let mut sh: u32 = NO_TILE_BYTE;
             let mut uk: u32 = 0u32;
-            if v.hand[t as usize] > 0u32 {
-                let mut h: [u32; 34] = v.hand;
+            if hand[t as usize] > 0u32 {
+                let mut h: [u32; 34] = hand;
                 h[t as usize] -= 1u32;
                 let base: i32 = shanten(ShantenInput { hand: h }).shanten;
                 sh = base as u32;
@@ -62,8 +63,8 @@ fn analysis_of(s: &mut GameState, arg: u32) -> ObsAnalysis {
         for t in 0u32..34u32 {
             put_word_byte(&mut out, A_DISCARD_SHANTEN + t, NO_TILE_BYTE);
         }
-        let base: i32 = shanten(ShantenInput { hand: v.hand }).shanten;
-        let imp: [u32; 34] = improving_tiles(v.hand, base, unseen);
+        let base: i32 = shanten(ShantenInput { hand: hand }).shanten;
+        let imp: [u32; 34] = improving_tiles(hand, base, unseen);
         for t in 0u32..34u32 {
             put_word_byte(&mut out, A_IMPROVING + t, imp[t as usize]);
         }
