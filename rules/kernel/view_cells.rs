@@ -106,6 +106,9 @@ pub fn set_cells(set: [u32; 2]) -> [u32; 9] {
 }
 
 // Sets the cells of row `row` whose types are in `set` (34 bits) to 1, four cells a word.
+// The rows are zeroed, so an empty set (most waits and kan rows) writes nothing.
 fn put_set(o: &mut ObsPlanes, row: u32, set: [u32; 2]) {
-    put_row(o, row, set_cells(set));
+    if (set[0] | set[1]) != 0u32 {
+        put_row(o, row, set_cells(set));
+    }
 }

@@ -303,9 +303,14 @@ impl TableView {
                 c[row(k::P_SEAT_FIRST_TURN) + t] = turn;
             }
             c[row(k::P_SEAT_LAST_TURN) + t] = turn;
+            // The last discard's row holds one cell: the previous discard's is cleared.
+            if i > 0 {
+                let before = k::value_type(u32::from(self.last_values[a])) as usize;
+                c[row(k::P_SEAT_LAST_DISCARD) + before] = 0;
+            }
+            c[row(k::P_SEAT_LAST_DISCARD) + t] = 1;
             self.last_values[a] = v as u8;
             self.river_lens[a] += 1;
-            self.put_row(a, k::P_SEAT_LAST_DISCARD, bit);
             self.seen[t] = self.seen[t].wrapping_add(1);
             if v >= 34 {
                 self.red_in_rivers[(v - 34) as usize] += 1;
