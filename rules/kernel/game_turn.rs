@@ -86,7 +86,7 @@ fn riichi_possible(s: &mut GameState, p: u32) -> bool {
     // A 14-tile hand (less three a closed kan) at shanten <= 0 has a discard leaving a hand at
     // shanten 0, and (the shanten's targets respecting the four copies of a concealed tile, as
     // `waits_of` does) such a hand has a wait that counts: no per-discard waits search.
-    shanten(ShantenInput { hand: hand_counts(s, p) }).shanten <= 0i32
+    hand_shanten(s, p) <= 0i32
 }
 
 // In riichi a closed kan is allowed only of the drawn tile and only if the waits stay the same.

@@ -65,12 +65,17 @@ fn combine_costs(a: [u32; 10], b: [u32; 10]) -> [u32; 10] {
 }
 
 fn shanten_normal(hand: [u32; 34], tiles: u32) -> i32 {
+    normal_of_codes(suit_code(hand, 0u32), suit_code(hand, 1u32), suit_code(hand, 2u32), honor_code(hand), tiles)
+}
+
+// The normal form's shanten of `tiles` tiles whose three suits and honors have these codes.
+fn normal_of_codes(c0: u32, c1: u32, c2: u32, c3: u32, tiles: u32) -> i32 {
     let sets: u32 = tiles / 3u32;
     // All four loads first, so their cache misses overlap.
-    let w0: u32 = table(T_SUIT_COST + suit_code(hand, 0u32));
-    let w1: u32 = table(T_SUIT_COST + suit_code(hand, 1u32));
-    let w2: u32 = table(T_SUIT_COST + suit_code(hand, 2u32));
-    let w3: u32 = table(T_HONOR_COST + honor_code(hand));
+    let w0: u32 = table(T_SUIT_COST + c0);
+    let w1: u32 = table(T_SUIT_COST + c1);
+    let w2: u32 = table(T_SUIT_COST + c2);
+    let w3: u32 = table(T_HONOR_COST + c3);
     // Two pairs of groups, combined ahead of time, then only the entries of the final
     // combination that are needed.
     let a: [u32; 10] = group_costs(suit_pair(w0, w1));
@@ -147,6 +152,62 @@ pub fn shanten(inp: ShantenInput) -> ShantenOutput {
         chiitoitsu: chiitoitsu,
         kokushi: kokushi,
     }
+}
+
+// The code (`suit_code`, `honor_code`) of the `n` types from `first` on, read from the seat's packed
+// hand words (4 bits a type, 8 types a word).
+fn hand_group_code(s: &mut GameState, seat: u32, first: u32, n: u32) -> u32 {
+    let mut code: u32 = 0u32;
+    for i in 0u32..n {
+        let t: u32 = first + i;
+        code = code * 5u32 + ((s.hands[(seat * 5u32 + t / 8u32) as usize] >> ((t % 8u32) * 4u32)) & 15u32);
+    }
+    code
+}
+
+// `shanten(ShantenInput { hand: hand_counts(s, seat) }).shanten`, read from the hand's packed words
+// without the 34 counts between: the tiles, kinds and pairs that the seven pairs and thirteen
+// orphans count are nibble sums and bit counts of whole words.
+pub fn hand_shanten(s: &mut GameState, seat: u32) -> i32 {
+    let mut tiles: u32 = 0u32;
+    let mut kinds: u32 = 0u32;
+    let mut pairs: u32 = 0u32;
+    let mut orphan_kinds: u32 = 0u32;
+    let mut orphan_pairs: u32 = 0u32;
+    for w in 0u32..5u32 {
+        let mut x: u32 = s.hands[(seat * 5u32 + w) as usize];
+        // The last word holds types 32 and 33 only.
+        let mut orphans: u32 = 0x11u32;
+        if w == 4u32 {
+            x &= 0xffu32;
+        } else if w == 0u32 {
+            orphans = 0x1u32;
+        } else if w == 2u32 {
+            orphans = 0x110u32;
+        } else if w == 3u32 {
+            orphans = 0x11111100u32;
+        }
+        let bytes: u32 = (x & 0x0f0f0f0fu32) + ((x >> 4u32) & 0x0f0f0f0fu32);
+        tiles += bytes.wrapping_mul(0x01010101u32) >> 24u32;
+        // The low bit of each nibble: the type is held; held twice or more.
+        let held: u32 = (x | (x >> 1u32) | (x >> 2u32) | (x >> 3u32)) & 0x11111111u32;
+        let two: u32 = ((x >> 1u32) | (x >> 2u32) | (x >> 3u32)) & 0x11111111u32;
+        kinds += held.count_ones();
+        pairs += two.count_ones();
+        orphan_kinds += (held & orphans).count_ones();
+        orphan_pairs += (two & orphans).count_ones();
+    }
+    let codes: [u32; 4] = [
+        hand_group_code(s, seat, 0u32, 9u32),
+        hand_group_code(s, seat, 9u32, 9u32),
+        hand_group_code(s, seat, 18u32, 9u32),
+        hand_group_code(s, seat, FIRST_HONOR, 7u32),
+    ];
+    let normal: i32 = normal_of_codes(codes[0], codes[1], codes[2], codes[3], tiles);
+    if tiles < 13u32 {
+        return normal;
+    }
+    normal.min(chiitoitsu_shanten(kinds, pairs)).min(orphans_shanten(orphan_kinds, orphan_pairs))
 }
 
 // The shanten of `hand` with one more tile of each type, as `shanten` would compute it for each

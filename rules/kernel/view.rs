@@ -202,7 +202,7 @@ fn view_scalars(s: &mut GameState, v: &mut Seen) -> [u32; 24] {
     put_scalar(&mut sc, S_TILES_LEFT, (s.live_end - s.next_draw) as i32);
     put_scalar(&mut sc, S_KANS, s.kans as i32);
     put_scalar(&mut sc, S_DORA_REVEALED, s.dora_revealed as i32);
-    put_scalar(&mut sc, S_SHANTEN, shanten(ShantenInput { hand: hand_counts(s, seat) }).shanten);
+    put_scalar(&mut sc, S_SHANTEN, hand_shanten(s, seat));
     let w: [u32; 2] = own_waits(s, seat);
     let f: u32 = s.seat_flags[seat as usize];
     let furiten_now: bool = (f & (SEAT_FURITEN_TEMP | SEAT_FURITEN_RIICHI)) != 0u32

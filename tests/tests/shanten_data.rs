@@ -85,3 +85,38 @@ fn small_hands_have_no_seven_pairs_or_orphans() {
     // third 1m or 2m to become set + pair: tenpai already.
     assert_eq!(s.normal, 0);
 }
+
+/// The observation's and the turn's shanten read the hand's packed words straight from the game
+/// state (`hand_shanten`): at every seat, the published cases' overall shanten, and those of their
+/// first 13, 11, 8, 5 and 2 tiles (hands with melds) as `shanten` gives them.
+#[test]
+fn packed_hand_words_give_the_cases_shanten() {
+    use rinshan_engine::generated::kernel::{hand_shanten, GameState};
+    let mut state: GameState = bytemuck::Zeroable::zeroed();
+    for (counts, expected, at) in &cases() {
+        let tiles: Vec<usize> = (0..34)
+            .flat_map(|t| std::iter::repeat_n(t, usize::from(counts[t])))
+            .collect();
+        for n in [14, 13, 11, 8, 5, 2] {
+            let mut part = [0u8; 34];
+            for &t in &tiles[..n] {
+                part[t] += 1;
+            }
+            let want = if n == 14 {
+                *expected.iter().min().expect("three forms")
+            } else {
+                shanten(&part).shanten
+            };
+            let seat = n % 4;
+            state.hands = [0; 20];
+            for (t, &c) in part.iter().enumerate() {
+                state.hands[seat * 5 + t / 8] |= u32::from(c) << (t % 8 * 4);
+            }
+            assert_eq!(
+                hand_shanten(&mut state, seat as u32),
+                want,
+                "{at}: first {n} tiles at seat {seat}"
+            );
+        }
+    }
+}
