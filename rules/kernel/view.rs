@@ -614,23 +614,22 @@ fn write_tokens_but_events(s: &mut GameState, v: &mut Seen, o: &mut ObsTokens) {
         target = s.claim_tile;
     }
     put_tok(o, T_TARGET, target);
+    // A meld's four tokens fill one word (T_MELDS starts on a word boundary): kind, tile, red
+    // fives, and whom it was called from; an empty slot is all 255.
     for j in 0u32..SEATS {
         let q: u32 = (seat + j) % SEATS;
         for i in 0u32..4u32 {
-            let at: u32 = T_MELDS + (j * 4u32 + i) * 4u32;
+            let at: u32 = T_MELDS / 4u32 + j * 4u32 + i;
+            let mut word: u32 = 0xffffffffu32;
             if i < meld_count(s, q) {
                 let m: u32 = s.melds[(q * 4u32 + i) as usize];
-                put_tok(o, at, meld_kind(m));
-                put_tok(o, at + 1u32, meld_tile(m));
-                put_tok(o, at + 2u32, (m >> MELD_REDS_SHIFT) & 3u32);
                 let mut from: u32 = NO_TILE_BYTE;
                 if meld_kind(m) != MELD_CLOSED_KAN {
                     from = (m >> MELD_FROM_SHIFT) & 3u32;
                 }
-                put_tok(o, at + 3u32, from);
-            } else {
-                o.words[(at / 4u32) as usize] = 0xffffffffu32;
+                word = meld_kind(m) | (meld_tile(m) << 8u32) | (((m >> MELD_REDS_SHIFT) & 3u32) << 16u32) | (from << 24u32);
             }
+            o.words[at as usize] = word;
         }
     }
     for i in 0u32..5u32 {
