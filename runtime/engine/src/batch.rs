@@ -26,17 +26,18 @@ pub(crate) fn each<T: bytemuck::Pod + Send>(
 
 /// `f(&mut state, arg, view, &mut out[i])` over the batch, in parallel unless `serial`, for a
 /// writer that fills its record in place and reads each state's [`TableView`], brought up to that
-/// state's log first. The kernel takes states as `&mut`: it gets a copy of each.
+/// state's log first with the `parts` the writer reads. The kernel takes states as `&mut`: it gets a copy of each.
 pub(crate) fn each_followed<T: bytemuck::Pod + Send>(
     out: &mut [u32],
     sts: &[kernel::GameState],
     args: &[u32],
     tables: &mut [TableView],
+    parts: u8,
     serial: bool,
     f: impl Fn(&mut kernel::GameState, u32, &TableView, &mut T) + Sync + Send,
 ) {
     rows(out, sts, args, tables, serial, |o: &mut T, s, a, t: &mut TableView| {
-        t.follow(s);
+        t.follow(s, parts);
         f(&mut { *s }, a, t, o);
     });
 }

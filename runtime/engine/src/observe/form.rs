@@ -1,7 +1,7 @@
 //! The observation forms, and writing them on the CPU.
 
 use super::fields::{Field, ANALYSIS_FIELDS, ORACLE_FIELDS, PACKED_FIELDS, PLANES_FIELDS, TOKENS_FIELDS};
-use super::table_view::TableView;
+use super::table_view::{TableView, EVENT_LIST, SEAT_ROWS};
 use crate::batch::{each, each_followed};
 use crate::generated::kernel as k;
 use crate::names::UnknownName;
@@ -139,20 +139,20 @@ pub(crate) fn observe_cpu<S: bytemuck::Pod>(
     }
     with_variant!(variant, v => match form {
         Form::Planes => {
-            each_followed(out, sts, args, tables, serial, |s, arg, table, o: &mut k::ObsPlanes| {
+            each_followed(out, sts, args, tables, SEAT_ROWS, serial, |s, arg, table, o: &mut k::ObsPlanes| {
                 table.write_seats(v::observer(s, arg), o);
                 v::planes_but_seats_into(s, arg, table.tiles(), o);
             })
         }
         Form::Tokens => {
-            each_followed(out, sts, args, tables, serial, |s, arg, table, o: &mut k::ObsTokens| {
+            each_followed(out, sts, args, tables, EVENT_LIST, serial, |s, arg, table, o: &mut k::ObsTokens| {
                 v::tokens_but_events_into(s, arg, table.tiles(), o);
                 let observer = v::observer(s, arg);
                 table.write_events(s, observer, o);
             })
         }
         Form::Packed => {
-            each_followed(out, sts, args, tables, serial, |s, arg, table, o: &mut k::ObsPacked| {
+            each_followed(out, sts, args, tables, SEAT_ROWS, serial, |s, arg, table, o: &mut k::ObsPacked| {
                 table.write_packed_seats(v::observer(s, arg), o);
                 v::packed_but_seats_into(s, arg, table.tiles(), o);
             })

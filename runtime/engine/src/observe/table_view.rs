@@ -7,6 +7,11 @@
 //! `view_events` of `rules/kernel/view.rs`, which the GPU still runs, and which the tests below
 //! hold this to).
 //!
+//! A view keeps the parts its forms read ([`SEAT_ROWS`] for the planes and packed planes,
+//! [`EVENT_LIST`] for the tokens; the tile counts always): an env observed in the tokens alone does
+//! not keep the seat blocks up to date at every discard. A form that needs a part the view has not
+//! kept makes it read the round again, keeping that part too from then on.
+//!
 //! A view is a function of the log entries it has read and nothing else. Before reading on, it
 //! checks that the state's log still begins with those entries (a new round, a new game, a
 //! loaded snapshot or a forced deal all change them) and starts over where it does not, so no
@@ -49,6 +54,11 @@ const COUNT_ROWS: [u32; 6] = [
     k::P_SEAT_CALLED_AWAY,
 ];
 
+/// The seat blocks and the sets they are written from (the planes' and the packed planes' part).
+pub(crate) const SEAT_ROWS: u8 = 1;
+/// The tokens' event list.
+pub(crate) const EVENT_LIST: u8 = 2;
+
 const fn row(r: u32) -> usize {
     r as usize * TYPES
 }
@@ -74,6 +84,8 @@ pub(crate) struct TableView {
     /// The log's words as last read: the first `read` entries are what this view is made of.
     log: [u32; LOG_WORDS],
     read: u32,
+    /// The parts kept ([`SEAT_ROWS`], [`EVENT_LIST`]).
+    parts: u8,
     /// Each seat's block of the planes (rows `P_SEAT_*`, bytes), by absolute seat: its rows of
     /// counts and turn numbers ([`COUNT_ROWS`]), and its yes/no rows, kept equal to the sets below
     /// (`seat_sets`) as they change. An observation copies four blocks.
@@ -120,6 +132,7 @@ impl Default for TableView {
         TableView {
             log: [0; LOG_WORDS],
             read: 0,
+            parts: 0,
             blocks: [[0; BLOCK]; 4],
             last_values: [0; 4],
             called: [0; 4],
@@ -152,15 +165,25 @@ fn entry_of(log: &[u32; LOG_WORDS], i: u32) -> u32 {
 }
 
 impl TableView {
-    /// Brings the view up to `s`'s log: reads the entries logged since the last call, or every
-    /// entry where `s` is not the round this view has read.
-    pub(crate) fn follow(&mut self, s: &k::GameState) {
+    /// Brings the view up to `s`'s log, with the `parts` a form reads among those it keeps: reads
+    /// the entries logged since the last call, or every entry where `s` is not the round this view
+    /// has read or a part was not kept.
+    pub(crate) fn follow(&mut self, s: &k::GameState, parts: u8) {
+        if parts & !self.parts != 0 {
+            *self = TableView {
+                parts: self.parts | parts,
+                ..TableView::default()
+            };
+        }
         let n = (s.log_len & k::LOG_LEN_MASK).min(k::LOG_CAPACITY);
         // The log's words this view holds from here on (a word half read is read again).
         let mut from = (self.read / 2) as usize;
         if n < self.read || self.log[..from] != s.log[..from] || !self.continued_by(s, from) {
             if n < self.read || !self.continued_by(s, 0) {
-                *self = TableView::default();
+                *self = TableView {
+                    parts: self.parts,
+                    ..TableView::default()
+                };
             }
             from = 0;
         }
@@ -202,20 +225,25 @@ impl TableView {
         let v = k::log_tile(e);
         let f = k::log_flags(e);
         let kind = k::log_kind(e);
-        self.add_events(kind, a as u32, v, f);
+        if self.parts & EVENT_LIST != 0 {
+            self.add_events(kind, a as u32, v, f);
+        }
         // Only the entries the view reads carry tiles; a game never logs a value past the red
         // fives, and a state that does (none loads: saved states are checked) is left unread.
         if v > 36 && kind != k::EV_RIICHI {
             return;
         }
+        let rows = self.parts & SEAT_ROWS != 0;
         match kind {
-            k::EV_DISCARD => self.discard(a, v, f),
-            kind @ (k::EV_CHI | k::EV_PON | k::EV_OPEN_KAN) => self.call(a, kind, v, f),
+            k::EV_DISCARD => self.discard(a, v, f, rows),
+            kind @ (k::EV_CHI | k::EV_PON | k::EV_OPEN_KAN) => self.call(a, kind, v, f, rows),
             k::EV_CLOSED_KAN => {
                 let t = k::value_type(v) as usize;
                 self.meld_tiles(a, t, 4);
-                self.closed_kans[a] |= 1 << t;
-                self.blocks[a][row(k::P_SEAT_CLOSED_KAN) + t] = 1;
+                if rows {
+                    self.closed_kans[a] |= 1 << t;
+                    self.blocks[a][row(k::P_SEAT_CLOSED_KAN) + t] = 1;
+                }
                 self.red_meld(t, (f & k::LOG_WITH_RED) != 0);
             }
             k::EV_ADDED_KAN => {
@@ -223,7 +251,7 @@ impl TableView {
                 self.meld_tiles(a, t, 1);
                 self.red_meld(t, v >= 34);
             }
-            k::EV_RIICHI => {
+            k::EV_RIICHI if rows => {
                 self.riichi |= 1 << a;
                 self.after_riichi[a] = 0;
                 self.put_row(a, k::P_SEAT_SAFE, self.safe(a));
@@ -271,8 +299,49 @@ impl TableView {
         }
     }
 
-    fn discard(&mut self, a: usize, v: u32, f: u32) {
+    /// A discard: the river and the tile counts, and with `rows` the seat blocks and safe tiles.
+    fn discard(&mut self, a: usize, v: u32, f: u32, rows: bool) {
         let t = k::value_type(v) as usize;
+        self.last_discarder = a as u8;
+        if rows {
+            self.safe_after_discard(a, t, f);
+        }
+        let i = self.river_lens[a] as usize;
+        if i >= RIVER {
+            return;
+        }
+        if rows {
+            self.river_cells(a, t, i, f);
+        }
+        self.last_values[a] = v as u8;
+        self.river_lens[a] += 1;
+        self.seen[t] = self.seen[t].wrapping_add(1);
+        if v >= 34 {
+            self.red_in_rivers[(v - 34) as usize] += 1;
+        }
+    }
+
+    /// Seat `a`'s river rows after its `i`th discard (from 0), of type `t`: before its river's
+    /// last value moves on.
+    fn river_cells(&mut self, a: usize, t: usize, i: usize, f: u32) {
+        let before = k::value_type(u32::from(self.last_values[a])) as usize;
+        let c = &mut self.blocks[a];
+        let turn = i as u8 + 1;
+        c[row(k::P_SEAT_DISCARDED) + t] += 1;
+        c[row(k::P_SEAT_TEDASHI) + t] += u8::from((f & k::LOG_TSUMOGIRI) == 0);
+        if c[row(k::P_SEAT_FIRST_TURN) + t] == 0 {
+            c[row(k::P_SEAT_FIRST_TURN) + t] = turn;
+        }
+        c[row(k::P_SEAT_LAST_TURN) + t] = turn;
+        // The last discard's row holds one cell: the previous discard's is cleared.
+        if i > 0 {
+            c[row(k::P_SEAT_LAST_DISCARD) + before] = 0;
+        }
+        c[row(k::P_SEAT_LAST_DISCARD) + t] = 1;
+    }
+
+    /// The tiles safe against each seat after seat `a` discards type `t`, and `a`'s riichi tile.
+    fn safe_after_discard(&mut self, a: usize, t: usize, f: u32) {
         let bit = 1u64 << t;
         for q in 0..4 {
             self.since[q] |= bit;
@@ -282,7 +351,6 @@ impl TableView {
         }
         self.since[a] = 0;
         self.own[a] |= bit;
-        self.last_discarder = a as u8;
         for q in 0..4 {
             if q != a {
                 self.blocks[q][row(k::P_SEAT_SAFE) + t] = 1;
@@ -293,32 +361,9 @@ impl TableView {
             self.riichi_tiles[a] |= bit;
             self.blocks[a][row(k::P_SEAT_RIICHI_TILE) + t] = 1;
         }
-        let i = self.river_lens[a] as usize;
-        if i < RIVER {
-            let c = &mut self.blocks[a];
-            let turn = i as u8 + 1;
-            c[row(k::P_SEAT_DISCARDED) + t] += 1;
-            c[row(k::P_SEAT_TEDASHI) + t] += u8::from((f & k::LOG_TSUMOGIRI) == 0);
-            if c[row(k::P_SEAT_FIRST_TURN) + t] == 0 {
-                c[row(k::P_SEAT_FIRST_TURN) + t] = turn;
-            }
-            c[row(k::P_SEAT_LAST_TURN) + t] = turn;
-            // The last discard's row holds one cell: the previous discard's is cleared.
-            if i > 0 {
-                let before = k::value_type(u32::from(self.last_values[a])) as usize;
-                c[row(k::P_SEAT_LAST_DISCARD) + before] = 0;
-            }
-            c[row(k::P_SEAT_LAST_DISCARD) + t] = 1;
-            self.last_values[a] = v as u8;
-            self.river_lens[a] += 1;
-            self.seen[t] = self.seen[t].wrapping_add(1);
-            if v >= 34 {
-                self.red_in_rivers[(v - 34) as usize] += 1;
-            }
-        }
     }
 
-    fn call(&mut self, a: usize, kind: u32, v: u32, f: u32) {
+    fn call(&mut self, a: usize, kind: u32, v: u32, f: u32, rows: bool) {
         // As the game marks it: the last entry of the discarder's river is called away.
         let from = self.last_discarder as usize;
         let len = self.river_lens[from] as usize;
@@ -326,16 +371,20 @@ impl TableView {
             self.called[from] |= 1 << (len - 1);
             let w = u32::from(self.last_values[from]);
             let u = k::value_type(w) as usize;
-            let away = &mut self.blocks[from][row(k::P_SEAT_CALLED_AWAY) + u];
-            *away = away.wrapping_add(1);
+            if rows {
+                let away = &mut self.blocks[from][row(k::P_SEAT_CALLED_AWAY) + u];
+                *away = away.wrapping_add(1);
+            }
             self.seen[u] = self.seen[u].wrapping_sub(1);
             if w >= 34 {
                 self.red_in_rivers[(w - 34) as usize] -= 1;
             }
         }
         let t = k::value_type(v) as usize;
-        self.called_in[a] |= 1 << t;
-        self.blocks[a][row(k::P_SEAT_CALLED_IN) + t] = 1;
+        if rows {
+            self.called_in[a] |= 1 << t;
+            self.blocks[a][row(k::P_SEAT_CALLED_IN) + t] = 1;
+        }
         match kind {
             k::EV_CHI => {
                 let low = t.saturating_sub((f & 3) as usize).min(TYPES - 3);
@@ -570,6 +619,35 @@ mod tests {
                 }
             }
             assert!(checked.iter().all(|&n| n > 5_000), "{variant}: {checked:?} records");
+        }
+    }
+
+    /// Views kept for the tokens alone (which do not keep the seat blocks) write the kernel's
+    /// planes once asked for them, mid-round, and views kept for the packed planes the kernel's
+    /// tokens.
+    #[test]
+    fn a_view_takes_on_the_part_a_new_form_reads() {
+        const BATCH: usize = 16;
+        for (first, then) in [(Form::Tokens, Form::Planes), (Form::Packed, Form::Tokens)] {
+            let mut env = Env::new(Config::new(crate::Variant::Red, BATCH)).expect("env");
+            env.reset().expect("reset");
+            let mut rng = Rng::new(3);
+            for step in 0..400 {
+                let actions: Vec<u32> = env.last().legal_action_mask.iter().map(|m| rng.pick_legal(m)).collect();
+                env.step(&actions).expect("legal random actions");
+                let form = if step < 300 { first } else { then };
+                let out = env.observe(form, Observer::Current).expect("observe").to_vec();
+                let words = env.states_words().expect("states");
+                let states: &[k::GameState] = bytemuck::cast_slice(&words);
+                for (i, (state, record)) in states.iter().zip(out.chunks(form.bytes())).enumerate() {
+                    let want = kernel_record(crate::Variant::Red, form, state, k::OBSERVE_CURRENT);
+                    assert!(
+                        record == want.as_slice(),
+                        "{form} after {first}, step {step}, env {i}: {}",
+                        first_difference(form, record, &want)
+                    );
+                }
+            }
         }
     }
 
