@@ -294,17 +294,7 @@ fn game_is_over(s: &mut GameState, flags: u32) -> bool {
 // The seat's place by score, 0 = first; ties go to the seat nearer the first dealer of the game
 // (East 1's dealer is round 0's). Uma, observations and the arena all rank by it.
 pub fn seat_rank(s: &mut GameState, p: u32) -> u32 {
-    let first: u32 = first_dealer_seat(s);
-    let mut rank: u32 = 0u32;
-    for q in 0u32..SEATS {
-        let above: bool = s.scores[q as usize] > s.scores[p as usize];
-        let tie_before: bool = s.scores[q as usize] == s.scores[p as usize]
-            && (q + SEATS - first) % SEATS < (p + SEATS - first) % SEATS;
-        if q != p && (above || tie_before) {
-            rank += 1u32;
-        }
-    }
-    rank
+    seat_ranks(s)[p as usize]
 }
 
 // The uma each seat is paid for its place `ranks[p]` under `scores` (the points before uma). With
@@ -343,8 +333,9 @@ pub fn uma_shares(scores: [i32; 4], ranks: [u32; 4], uma: [i32; 4]) -> [i32; 4] 
     out
 }
 
-// Every seat's place, as `seat_rank` gives each: one comparison per pair of seats instead of a
-// pass over the seats per seat (the observation's scalars hold all of them).
+// Every seat's place (`seat_rank`), one comparison per pair of seats: seat q is above seat p with
+// more points, or as many and nearer the first dealer. A seat past the table's (three players)
+// gets 0.
 fn seat_ranks(s: &mut GameState) -> [u32; 4] {
     let first: u32 = first_dealer_seat(s);
     let mut ranks: [u32; 4] = [0u32; 4];
@@ -365,9 +356,8 @@ fn seat_ranks(s: &mut GameState) -> [u32; 4] {
 fn finish_game(s: &mut GameState) {
     let top: u32 = top_seat(s);
     collect_sticks(s, top);
-    let mut ranks: [u32; 4] = [0u32; 4];
+    let ranks: [u32; 4] = seat_ranks(s);
     for p in 0u32..SEATS {
-        ranks[p as usize] = seat_rank(s, p);
         s.ranks |= ranks[p as usize] << (p * RANK_SHIFT);
     }
     // A seat past the table's (three players) holds the place no one does.
