@@ -291,12 +291,6 @@ fn game_is_over(s: &mut GameState, flags: u32) -> bool {
     !WEST_EXTENSION || reached
 }
 
-// The seat's place by score, 0 = first; ties go to the seat nearer the first dealer of the game
-// (East 1's dealer is round 0's). Uma, observations and the arena all rank by it.
-pub fn seat_rank(s: &mut GameState, p: u32) -> u32 {
-    seat_ranks(s)[p as usize]
-}
-
 // The uma each seat is paid for its place `ranks[p]` under `scores` (the points before uma). With
 // TIED_SEATS_SHARE_UMA, seats tied on points share the uma of the places they hold equally in
 // whole hundreds; the hundreds that do not divide go one each to the tied seats first in rank
@@ -333,10 +327,10 @@ pub fn uma_shares(scores: [i32; 4], ranks: [u32; 4], uma: [i32; 4]) -> [i32; 4] 
     out
 }
 
-// Every seat's place (`seat_rank`), one comparison per pair of seats: seat q is above seat p with
-// more points, or as many and nearer the first dealer. A seat past the table's (three players)
-// gets 0.
-fn seat_ranks(s: &mut GameState) -> [u32; 4] {
+// Each seat's place by score, 0 = first; ties go to the seat nearer the first dealer of the game
+// (East 1's dealer is round 0's). One comparison per pair of seats; a seat past the table's (three
+// players) gets 0. Uma, observations and the arena all rank by it.
+pub fn seat_ranks(s: &mut GameState) -> [u32; 4] {
     let first: u32 = first_dealer_seat(s);
     let mut ranks: [u32; 4] = [0u32; 4];
     for p in 0u32..SEATS {

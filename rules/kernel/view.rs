@@ -96,10 +96,9 @@ fn table_tiles(s: &mut GameState) -> TableTiles {
 }
 
 // The observer's facts, given the tiles on the table: the indicators and its own hand are added
-// here.
-// Counts are added as packed cells, a word of four at a time: each stays below 256 in any state
-// (at most 160 of a type in the rivers and melds, 15 in a hand's 4 bits, 5 indicators), so no
-// cell carries into the next.
+// here, as packed cells a word of four at a time. Each count stays below 256 in any state (at most
+// 160 of a type in the rivers and melds, 15 in a hand's 4 bits, 5 indicators), so no cell carries
+// into the next.
 fn gather_with(s: &mut GameState, seat: u32, table: TableTiles) -> Seen {
     let hand: [u32; 9] = hand_cells(s, seat);
     let mut seen: [u32; 9] = table.seen;

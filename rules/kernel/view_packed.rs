@@ -80,7 +80,7 @@ pub fn packed_but_seats_into(s: &mut GameState, arg: u32, table: TableTiles, o: 
 // Every row but the seat blocks', into zeroed rows.
 fn write_own_packed(s: &mut GameState, v: &mut Seen, o: &mut ObsPacked) {
     let seat: u32 = v.seat;
-    let held: [u32; 8] = held_sets(hand_counts(s, v.seat));
+    let held: [u32; 8] = held_sets(hand_counts(s, seat));
     for k in 0u32..4u32 {
         put_bits(o, P_HAND + k, [held[(k * 2u32) as usize], held[(k * 2u32 + 1u32) as usize]]);
     }

@@ -261,7 +261,7 @@ fn play(arena: &Arena, seed: u64, seating: &[Player; 4], game: u64, faults: &mut
                 riichi = [false; 4];
             }
         }
-        let ranks: [u32; 4] = std::array::from_fn(|q| v::seat_rank(&mut s, q as u32));
+        let ranks: [u32; 4] = v::seat_ranks(&mut s);
         for (q, tq) in t.iter_mut().enumerate() {
             tq.rank = match s.illegal.checked_sub(1) {
                 // A game lost to an illegal action places its player last and the others in

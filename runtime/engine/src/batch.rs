@@ -26,7 +26,8 @@ pub(crate) fn each<T: bytemuck::Pod + Send>(
 
 /// `f(&mut state, arg, view, &mut out[i])` over the batch, in parallel unless `serial`, for a
 /// writer that fills its record in place and reads each state's [`TableView`], brought up to that
-/// state's log first with the `parts` the writer reads. The kernel takes states as `&mut`: it gets a copy of each.
+/// state's log first with the `parts` the writer reads. The kernel takes states as `&mut`: it gets
+/// a copy of each.
 pub(crate) fn each_followed<T: bytemuck::Pod + Send>(
     out: &mut [u32],
     sts: &[kernel::GameState],
