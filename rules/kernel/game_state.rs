@@ -305,8 +305,18 @@ fn gather_nibble_bits(x: u32) -> u32 {
 // from the packed words: counts are at most 4, so bits 7 means "held" and bits 4 "all four held".
 fn hand_types_with(s: &mut GameState, seat: u32, bits: u32) -> [u32; 2] {
     let mut set: [u32; 2] = [0u32; 2];
+    let mut masked: [u32; 5] = [0u32; 5];
+    let mut any: u32 = 0u32;
     for w in 0u32..5u32 {
-        let x: u32 = s.hands[(seat * 5u32 + w) as usize] & (bits * 0x11111111u32);
+        masked[w as usize] = s.hands[(seat * 5u32 + w) as usize] & (bits * 0x11111111u32);
+        any |= masked[w as usize];
+    }
+    // Most hands hold no four of a kind: settled before the bits are gathered.
+    if any == 0u32 {
+        return set;
+    }
+    for w in 0u32..5u32 {
+        let x: u32 = masked[w as usize];
         let g: u32 = gather_nibble_bits((x | (x >> 1u32) | (x >> 2u32)) & 0x11111111u32);
         if w < 4u32 {
             set[0] |= g << (w * 8u32);
@@ -335,12 +345,17 @@ fn isolated_and_orphans(s: &mut GameState, seat: u32) -> [u32; 2] {
             single[1] = one;
         }
     }
-    let mut isolated: u32 = (single[0] >> 27u32).count_ones() + single[1].count_ones();
-    for suit in 0u32..3u32 {
-        let h: u32 = (held[0] >> (suit * 9u32)) & 511u32;
-        let near: u32 = (h << 1u32) | (h << 2u32) | (h >> 1u32) | (h >> 2u32);
-        isolated += ((single[0] >> (suit * 9u32)) & 511u32 & !near).count_ones();
-    }
+    // The suits' tiles held within two steps, the three suits at once: each shift drops the bits it
+    // carries from one suit into the next (a suit's first types from the one before, its last from
+    // the one after). Any single honor (types 27-31 here) stays isolated.
+    let h: u32 = held[0] & 0x07ffffffu32;
+    let firsts: u32 = 1u32 | (1u32 << 9u32) | (1u32 << 18u32);
+    let lasts: u32 = firsts << 8u32;
+    let near: u32 = ((h << 1u32) & !firsts)
+        | ((h << 2u32) & !(firsts | (firsts << 1u32)))
+        | ((h >> 1u32) & !lasts)
+        | ((h >> 2u32) & !(lasts | (lasts >> 1u32)));
+    let isolated: u32 = (single[0] & !(near & 0x07ffffffu32)).count_ones() + single[1].count_ones();
     let terminals: u32 = 1u32 | (1u32 << 8u32) | (1u32 << 9u32) | (1u32 << 17u32) | (1u32 << 18u32) | (1u32 << 26u32);
     let orphans: u32 = (held[0] & (terminals | (31u32 << 27u32))).count_ones() + held[1].count_ones();
     [isolated, orphans]

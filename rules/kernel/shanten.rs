@@ -154,22 +154,30 @@ pub fn shanten(inp: ShantenInput) -> ShantenOutput {
     }
 }
 
-// The code (`suit_code`, `honor_code`) of the `n` types from `first` on, read from the seat's packed
-// hand words (4 bits a type, 8 types a word).
-fn hand_group_code(s: &mut GameState, seat: u32, first: u32, n: u32) -> u32 {
-    let mut code: u32 = 0u32;
-    for i in 0u32..n {
-        let t: u32 = first + i;
-        code = code * 5u32 + ((s.hands[(seat * 5u32 + t / 8u32) as usize] >> ((t % 8u32) * 4u32)) & 15u32);
-    }
-    code
+// Eight types' counts, a packed word's nibbles (the first type lowest), as a code with the first
+// type most significant, as `suit_code` counts: neighbouring digits are merged in every lane of the
+// word at once. No lane carries into the next for any nibbles (15 x 5 + 15 < 256, 90 x 25 + 90 <
+// 65536), so the code is `suit_code`'s for any counts, as on the GPU.
+fn code_of_nibbles(x: u32) -> u32 {
+    let two: u32 = (x & 0x0f0f0f0fu32) * 5u32 + ((x >> 4u32) & 0x0f0f0f0fu32);
+    let four: u32 = (two & 0x00ff00ffu32) * 25u32 + ((two >> 8u32) & 0x00ff00ffu32);
+    (four & 0xffffu32) * 625u32 + (four >> 16u32)
+}
+
+// The sum of a word's nibbles, each at most 5 (bits gathered from five words): at most 40, so the
+// bytes' sum fits the top byte.
+fn nibble_sum(x: u32) -> u32 {
+    (((x & 0x0f0f0f0fu32) + ((x >> 4u32) & 0x0f0f0f0fu32)).wrapping_mul(0x01010101u32)) >> 24u32
 }
 
 // `shanten(ShantenInput { hand: hand_counts(s, seat) }).shanten`, read from the hand's packed words
-// without the 34 counts between: the tiles, kinds and pairs that the seven pairs and thirteen
-// orphans count are nibble sums and bit counts of whole words.
+// without the 34 counts between: the groups' codes are merged a word at a time, and the tiles,
+// kinds and pairs that the seven pairs and thirteen orphans count are nibble sums of whole words.
 pub fn hand_shanten(s: &mut GameState, seat: u32) -> i32 {
+    let mut h: [u32; 5] = [0u32; 5];
     let mut tiles: u32 = 0u32;
+    // Bit 0 of each nibble, summed over the words: the type is held; held twice or more; the same
+    // for the terminals and honors.
     let mut kinds: u32 = 0u32;
     let mut pairs: u32 = 0u32;
     let mut orphan_kinds: u32 = 0u32;
@@ -187,27 +195,28 @@ pub fn hand_shanten(s: &mut GameState, seat: u32) -> i32 {
         } else if w == 3u32 {
             orphans = 0x11111100u32;
         }
+        h[w as usize] = x;
         let bytes: u32 = (x & 0x0f0f0f0fu32) + ((x >> 4u32) & 0x0f0f0f0fu32);
         tiles += bytes.wrapping_mul(0x01010101u32) >> 24u32;
-        // The low bit of each nibble: the type is held; held twice or more.
         let held: u32 = (x | (x >> 1u32) | (x >> 2u32) | (x >> 3u32)) & 0x11111111u32;
         let two: u32 = ((x >> 1u32) | (x >> 2u32) | (x >> 3u32)) & 0x11111111u32;
-        kinds += held.count_ones();
-        pairs += two.count_ones();
-        orphan_kinds += (held & orphans).count_ones();
-        orphan_pairs += (two & orphans).count_ones();
+        kinds += held;
+        pairs += two;
+        orphan_kinds += held & orphans;
+        orphan_pairs += two & orphans;
     }
-    let codes: [u32; 4] = [
-        hand_group_code(s, seat, 0u32, 9u32),
-        hand_group_code(s, seat, 9u32, 9u32),
-        hand_group_code(s, seat, 18u32, 9u32),
-        hand_group_code(s, seat, FIRST_HONOR, 7u32),
-    ];
-    let normal: i32 = normal_of_codes(codes[0], codes[1], codes[2], codes[3], tiles);
+    // Types 0-8, 9-17 and 18-26 start at nibbles 0, 9 and 18 (words 0, 1 and 2); the honors, 27-33,
+    // are read with a zero digit before them.
+    let c0: u32 = code_of_nibbles(h[0]) * 5u32 + (h[1] & 15u32);
+    let c1: u32 = code_of_nibbles((h[1] >> 4u32) | (h[2] << 28u32)) * 5u32 + ((h[2] >> 4u32) & 15u32);
+    let c2: u32 = code_of_nibbles((h[2] >> 8u32) | (h[3] << 24u32)) * 5u32 + ((h[3] >> 8u32) & 15u32);
+    let c3: u32 = code_of_nibbles((((h[3] >> 12u32) | (h[4] << 20u32)) & 0x0fffffffu32) << 4u32);
+    let normal: i32 = normal_of_codes(c0, c1, c2, c3, tiles);
     if tiles < 13u32 {
         return normal;
     }
-    normal.min(chiitoitsu_shanten(kinds, pairs)).min(orphans_shanten(orphan_kinds, orphan_pairs))
+    let chiitoitsu: i32 = chiitoitsu_shanten(nibble_sum(kinds), nibble_sum(pairs));
+    normal.min(chiitoitsu).min(orphans_shanten(nibble_sum(orphan_kinds), nibble_sum(orphan_pairs)))
 }
 
 // The shanten of `hand` with one more tile of each type, as `shanten` would compute it for each
