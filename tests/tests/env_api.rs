@@ -1,7 +1,8 @@
 //! The batched environment's public API on the CPU backend: determinism whatever the thread
 //! count, dealing a given wall, typed errors for bad input, and illegal actions as outcomes.
 
-use rinshan_engine::env::{Config, Deal, Env, EnvError, Mode, Step};
+use rinshan_engine::env::{Config, Deal, Env, EnvError, Mode, Observer, Step};
+use rinshan_engine::observe::Form;
 use rinshan_engine::random::Rng;
 use rinshan_engine::{Tile, TileType, Variant};
 
@@ -51,6 +52,48 @@ fn same_seeds_give_the_same_games_on_one_and_two_threads() {
         let second = env.reset().expect("reset").clone();
         assert_eq!(first, one[0]);
         assert_ne!(first.legal_action_mask, second.legal_action_mask);
+    }
+}
+
+/// The kernel's observation writers take each game's state by `&mut` (WGSL's pointers) and are
+/// given the state itself, not a copy: one that wrote to it would change the game. Every form, of
+/// every seat and of the current player every step, on one and two threads: the games stay those
+/// of an env that observes nothing.
+#[test]
+fn observing_leaves_every_game_as_it_was() {
+    for &v in Variant::ALL {
+        for threads in [Some(1), Some(2)] {
+            let mut plain = Env::new(config(v, 16, threads)).expect("env");
+            let mut watched = Env::new(Config {
+                observe: Form::OBSERVATIONS.to_vec(),
+                ..config(v, 16, threads)
+            })
+            .expect("env");
+            let mut rngs: Vec<Rng> = (0..16).map(|i| Rng::new(500 + i)).collect();
+            let mut last = plain.reset().expect("reset").clone();
+            assert_eq!(&last, watched.reset().expect("reset"));
+            for k in 0..300 {
+                let actions: Vec<u32> = (0..16)
+                    .map(|i| rngs[i].pick_legal(&last.legal_action_mask[i]))
+                    .collect();
+                last = plain.step(&actions).expect("step").clone();
+                assert_eq!(&last, watched.step(&actions).expect("step"), "{v}: step {k}");
+                for form in Form::ALL {
+                    let all = watched.observe_all(form).expect("every seat");
+                    assert_eq!(
+                        all.len(),
+                        16 * v.seats() as usize * form.bytes(),
+                        "{v}: a record a seat"
+                    );
+                    watched.observe(form, Observer::Current).expect("the player to move");
+                }
+                assert_eq!(
+                    plain.states_words().expect("states"),
+                    watched.states_words().expect("states"),
+                    "{v}, {threads:?} threads: observing at step {k} changed a game"
+                );
+            }
+        }
     }
 }
 

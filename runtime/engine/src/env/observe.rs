@@ -85,16 +85,18 @@ impl Env {
         r.map(|()| self.observed.as_slice())
     }
 
-    /// Every seat's observation of every env in `form` (centralised critics): `batch * 4` records,
-    /// env-major (env 0 seats 0..3, then env 1 ...), each in its seat's own ego frame.
+    /// Every seat's observation of every env in `form` (centralised critics): `batch * seats`
+    /// records (four seats, three in sanma), env-major (env 0 seats 0..3, then env 1 ...), each in
+    /// its seat's own ego frame.
     pub fn observe_all(&mut self, form: Form) -> Result<Vec<u8>, EnvError> {
         let n = form.bytes();
-        let mut all = vec![0u8; self.batch() * 4 * n];
+        let seats = self.variant().seats() as usize;
+        let mut all = vec![0u8; self.batch() * seats * n];
         let mut one = vec![0u8; self.batch() * n];
-        for seat in 0..4 {
-            self.observe_into(form, Observer::Seat(seat), &mut one)?;
+        for seat in 0..seats {
+            self.observe_into(form, Observer::Seat(seat as u32), &mut one)?;
             for (env, record) in one.chunks(n).enumerate() {
-                let at = (env * 4 + seat as usize) * n;
+                let at = (env * seats + seat) * n;
                 all[at..at + n].copy_from_slice(record);
             }
         }
@@ -148,8 +150,10 @@ impl Env {
         match &mut self.backing {
             Backing::Cpu(cpu) => {
                 let mut out = vec![0u32; b];
-                let sts: &[kernel::GameState] = bytemuck::cast_slice(&cpu.states);
+                let mut states = std::mem::take(&mut cpu.states);
+                let sts: &mut [kernel::GameState] = bytemuck::cast_slice_mut(&mut states);
                 with_variant!(variant, v => cpu.install(|| each(&mut out, sts, &args, cpu.serial, v::game_agent_action)));
+                cpu.states = states;
                 Ok(out)
             }
             Backing::Gpu(gpu) => Ok(gpu.agent_actions(&args)?.to_vec()),
