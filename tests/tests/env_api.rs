@@ -55,10 +55,10 @@ fn same_seeds_give_the_same_games_on_one_and_two_threads() {
     }
 }
 
-/// The kernel's observation writers take each game's state by `&mut` (WGSL's pointers) and are
-/// given the state itself, not a copy: one that wrote to it would change the game. Every form, of
-/// every seat and of the current player every step, on one and two threads: the games stay those
-/// of an env that observes nothing.
+/// The kernel's observation writers take each game's state by `&mut` (WGSL's pointers), and an
+/// optimiser may hand them the state itself rather than a copy: observing must not change a game.
+/// Every form, of every seat and of the current player every step, on one and two threads: the
+/// games stay those of an env that observes nothing.
 #[test]
 fn observing_leaves_every_game_as_it_was() {
     for &v in Variant::ALL {

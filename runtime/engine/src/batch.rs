@@ -8,7 +8,7 @@ use crate::observe::TableView;
 /// `out[i] = f(states[i], args[i])` over the batch, in parallel unless `serial`.
 pub(crate) fn each<T: bytemuck::Pod + Send>(
     out: &mut [u32],
-    sts: &mut [kernel::GameState],
+    sts: &[kernel::GameState],
     args: &[u32],
     serial: bool,
     f: fn(kernel::GameState, u32) -> T,
@@ -26,12 +26,11 @@ pub(crate) fn each<T: bytemuck::Pod + Send>(
 
 /// `f(&mut state, arg, view, &mut out[i])` over the batch, in parallel unless `serial`, for a
 /// writer that fills its record in place and reads each state's [`TableView`], brought up to that
-/// state's log first with the `parts` the writer reads. The kernel takes states as `&mut` (WGSL's
-/// pointers) but its writers only read them: each gets the state itself, not a copy of its 1 KB
-/// (a test holds every game unchanged by its observations).
+/// state's log first with the `parts` the writer reads. The kernel takes states as `&mut`: it gets
+/// a copy of each.
 pub(crate) fn each_followed<T: bytemuck::Pod + Send>(
     out: &mut [u32],
-    sts: &mut [kernel::GameState],
+    sts: &[kernel::GameState],
     args: &[u32],
     tables: &mut [TableView],
     parts: u8,
@@ -40,30 +39,26 @@ pub(crate) fn each_followed<T: bytemuck::Pod + Send>(
 ) {
     rows(out, sts, args, tables, serial, |o: &mut T, s, a, t: &mut TableView| {
         t.follow(s, parts);
-        f(s, a, t, o);
+        f(&mut { *s }, a, t, o);
     });
 }
 
 /// `one(record i, state i, arg i, item i)` over the batch, in parallel unless `serial`.
 fn rows<T: bytemuck::Pod + Send, X: Send>(
     out: &mut [u32],
-    sts: &mut [kernel::GameState],
+    sts: &[kernel::GameState],
     args: &[u32],
     items: &mut [X],
     serial: bool,
-    one: impl Fn(&mut T, &mut kernel::GameState, u32, &mut X) + Sync + Send,
+    one: impl Fn(&mut T, &kernel::GameState, u32, &mut X) + Sync + Send,
 ) {
     let outs: &mut [T] = bytemuck::cast_slice_mut(out);
-    let one = |(((o, s), a), x): (((&mut T, &mut kernel::GameState), &u32), &mut X)| one(o, s, *a, x);
+    let one = |(((o, s), a), x): (((&mut T, &kernel::GameState), &u32), &mut X)| one(o, s, *a, x);
     if serial {
-        outs.iter_mut()
-            .zip(sts.iter_mut())
-            .zip(args)
-            .zip(items.iter_mut())
-            .for_each(one);
+        outs.iter_mut().zip(sts).zip(args).zip(items.iter_mut()).for_each(one);
     } else {
         outs.par_iter_mut()
-            .zip(sts.par_iter_mut())
+            .zip(sts.par_iter())
             .zip(args.par_iter())
             .zip(items.par_iter_mut())
             .with_min_len(8)

@@ -81,9 +81,7 @@ impl CpuEnv {
     /// Writes `form` observations of every game for the seats in `args` into `out`.
     pub(super) fn observe(&mut self, variant: Variant, form: Form, args: &[u32], out: &mut [u32]) {
         let mut tables = std::mem::take(&mut self.tables);
-        let mut states = std::mem::take(&mut self.states);
-        self.install(|| observe_cpu(variant, form, &mut states, args, out, &mut tables, self.serial));
-        self.states = states;
+        self.install(|| observe_cpu(variant, form, &self.states, args, out, &mut tables, self.serial));
         self.tables = tables;
     }
 

@@ -150,10 +150,8 @@ impl Env {
         match &mut self.backing {
             Backing::Cpu(cpu) => {
                 let mut out = vec![0u32; b];
-                let mut states = std::mem::take(&mut cpu.states);
-                let sts: &mut [kernel::GameState] = bytemuck::cast_slice_mut(&mut states);
+                let sts: &[kernel::GameState] = bytemuck::cast_slice(&cpu.states);
                 with_variant!(variant, v => cpu.install(|| each(&mut out, sts, &args, cpu.serial, v::game_agent_action)));
-                cpu.states = states;
                 Ok(out)
             }
             Backing::Gpu(gpu) => Ok(gpu.agent_actions(&args)?.to_vec()),

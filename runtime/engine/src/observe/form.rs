@@ -100,7 +100,7 @@ pub fn record(variant: crate::Variant, form: Form, state: &k::GameState, seat: u
     observe_cpu(
         variant,
         form,
-        bytemuck::bytes_of_mut(&mut { *state }),
+        bytemuck::bytes_of(state),
         &[seat],
         &mut words,
         &mut Vec::new(),
@@ -111,18 +111,17 @@ pub fn record(variant: crate::Variant, form: Form, state: &k::GameState, seat: u
 
 /// Writes `form` observations of `states` (GameState words) for the seats in `args` into `out`.
 /// `tables` holds a [`TableView`] per state, made here on first use, that the planes, packed planes
-/// and tokens follow from one call to the next. The states are `&mut` for the kernel's writers,
-/// which read them in place and change nothing.
+/// and tokens follow from one call to the next.
 pub(crate) fn observe_cpu<S: bytemuck::Pod>(
     variant: crate::Variant,
     form: Form,
-    states: &mut [S],
+    states: &[S],
     args: &[u32],
     out: &mut [u32],
     tables: &mut Vec<TableView>,
     serial: bool,
 ) {
-    let sts: &mut [k::GameState] = bytemuck::cast_slice_mut(states);
+    let sts: &[k::GameState] = bytemuck::cast_slice(states);
     // The views follow four-player rounds; three players' observations come from the kernel's
     // own writers, which rescan the round (the GPU's, and the views' oracle).
     if variant.seats() != 4 {
