@@ -467,16 +467,21 @@ fn layout_and_exports() {
     assert_eq!(t.decomps as usize, t.decomp_index as usize + SUIT_CODES);
     let (s, h) = (t.suit_rows.len(), t.honor_rows.len());
     assert_eq!(t.suit_pairs as usize, t.decomps as usize + 2 * t.n_decomps as usize);
+    let (sp, shp) = (t.suit_pair_rows.len(), t.suit_honor_pair_rows.len());
     assert_eq!(t.suit_honor_pairs as usize, t.suit_pairs as usize + s * s);
-    assert_eq!(t.words.len(), t.suit_honor_pairs as usize + s * h);
+    assert_eq!(t.missing as usize, t.suit_honor_pairs as usize + s * h);
+    assert_eq!(t.words.len(), t.missing as usize + sp * shp);
     assert_eq!(
         t.kernel_consts(),
         format!(
             "const T_SUIT_COST: u32 = 0u32;\nconst T_HONOR_COST: u32 = {}u32;\n\
              const T_DECOMP_INDEX: u32 = {}u32;\nconst T_DECOMPS: u32 = {}u32;\n\
              const T_SUIT_PAIRS: u32 = {}u32;\nconst T_SUIT_HONOR_PAIRS: u32 = {}u32;\n\
-             const T_SUIT_ROWS: u32 = {s}u32;\nconst T_HONOR_ROWS: u32 = {h}u32;\nconst T_ROW_SHIFT: u32 = 18u32;\n",
-            t.honor_cost, t.decomp_index, t.decomps, t.suit_pairs, t.suit_honor_pairs
+             const T_MISSING: u32 = {}u32;\n\
+             const T_SUIT_ROWS: u32 = {s}u32;\nconst T_HONOR_ROWS: u32 = {h}u32;\n\
+             const T_SUIT_PAIR_ROWS: u32 = {sp}u32;\nconst T_SUIT_HONOR_PAIR_ROWS: u32 = {shp}u32;\n\
+             const T_ROW_SHIFT: u32 = 18u32;\nconst T_MISSING_BITS: u32 = 4u32;\n",
+            t.honor_cost, t.decomp_index, t.decomps, t.suit_pairs, t.suit_honor_pairs, t.missing
         )
     );
     let bytes = t.to_le_bytes();
@@ -507,19 +512,30 @@ fn brute_combined(a: u32, b: u32, m: usize, h: usize) -> u32 {
         .expect("at least one split")
 }
 
-/// Every cost word carries the number of its row among the distinct rows of its kind, and the
-/// pair tables hold, for every two rows, the row of the two groups taken as one.
+/// Every cost word and every pair table word carries the number of its row among the distinct
+/// rows of its kind, and the pair tables hold, for every two rows, the row of the two groups taken
+/// as one.
 #[test]
 fn pair_tables_combine_every_two_rows() {
     let t = tables();
     // Few distinct rows: what makes a table of every pair small (its size is in the docs).
     assert_eq!((t.suit_rows.len(), t.honor_rows.len()), (126, 55));
+    assert_eq!((t.suit_pair_rows.len(), t.suit_honor_pair_rows.len()), (180, 165));
+    let (s, h) = (t.suit_rows.len(), t.honor_rows.len());
     for (rows, words) in [
         (
             &t.suit_rows,
             (0..SUIT_CODES).map(|c| t.suit_cost_word(c)).collect::<Vec<_>>(),
         ),
         (&t.honor_rows, (0..HONOR_CODES).map(|c| t.honor_cost_word(c)).collect()),
+        (
+            &t.suit_pair_rows,
+            (0..s * s).map(|i| t.suit_pair_word(i / s, i % s)).collect(),
+        ),
+        (
+            &t.suit_honor_pair_rows,
+            (0..s * h).map(|i| t.suit_honor_pair_word(i / h, i % h)).collect(),
+        ),
     ] {
         assert!(rows.windows(2).all(|w| w[0] < w[1]), "rows ascending and distinct");
         for (code, w) in words.iter().enumerate() {
@@ -562,6 +578,78 @@ fn pair_tables_combine_every_two_rows() {
     assert_eq!(cost_d(t.suit_honor_pair_word(i, j), 0, 0), 0);
 }
 
+/// The fewest tiles that complete `m` sets and the pair, by brute force over the ways to take the
+/// sets and the pair from each of two groups: ten values of D for each group, no table.
+fn brute_missing(a: u32, b: u32, m: usize) -> u32 {
+    (0..=m)
+        .flat_map(|m1| (0..2).map(move |h1| (m1, h1)))
+        .map(|(m1, h1)| cost_d(a, m1, h1) + cost_d(b, m - m1, 1 - h1))
+        .min()
+        .expect("at least one split")
+}
+
+/// The `missing` table holds, for every combined suit row and combined suit-honor row, the tiles
+/// the two miss together for each number of sets with the pair; and the whole chain the shanten
+/// kernel reads (four cost words, two pair words, one `missing` word) gives the brute-force
+/// combination of the four groups' rows on sampled hands.
+#[test]
+fn missing_table_combines_the_pair_rows() {
+    let t = tables();
+    let bits = pairs::MISSING_BITS as usize;
+    for (i, &a) in t.suit_pair_rows.iter().enumerate() {
+        for (j, &b) in t.suit_honor_pair_rows.iter().enumerate() {
+            let word = t.missing_word(i, j);
+            assert_eq!(word >> (5 * bits), 0, "rows {i} and {j}: bits above m = 4");
+            for m in 0..5 {
+                assert_eq!(
+                    (word >> (bits * m)) as usize & ((1 << bits) - 1),
+                    brute_missing(a, b, m) as usize,
+                    "rows {i} and {j}, {m} sets"
+                );
+            }
+        }
+    }
+    let mut rng = Rng(17);
+    let number = |w: u32| (w >> pairs::ROW_SHIFT) as usize;
+    for _ in 0..SAMPLES {
+        let codes: [usize; 4] = [
+            rng.below(SUIT_CODES),
+            rng.below(SUIT_CODES),
+            rng.below(SUIT_CODES),
+            rng.below(HONOR_CODES),
+        ];
+        let w = [
+            t.suit_cost_word(codes[0]),
+            t.suit_cost_word(codes[1]),
+            t.suit_cost_word(codes[2]),
+            t.honor_cost_word(codes[3]),
+        ];
+        let a = t.suit_pair_word(number(w[0]), number(w[1]));
+        let b = t.suit_honor_pair_word(number(w[2]), number(w[3]));
+        let word = t.missing_word(number(a), number(b));
+        for m in 0..5 {
+            // Every split of the sets and the pair among the four groups.
+            let mut best = u32::MAX;
+            for m0 in 0..=m {
+                for m1 in 0..=m - m0 {
+                    for m2 in 0..=m - m0 - m1 {
+                        for pair in 0..4 {
+                            let ms = [m0, m1, m2, m - m0 - m1 - m2];
+                            let cost: u32 = (0..4).map(|g| cost_d(w[g], ms[g], usize::from(g == pair))).sum();
+                            best = best.min(cost);
+                        }
+                    }
+                }
+            }
+            assert_eq!(
+                (word >> (bits * m)) & ((1 << bits) - 1),
+                best,
+                "codes {codes:?}, {m} sets"
+            );
+        }
+    }
+}
+
 #[test]
 fn region_hashes_are_pinned() {
     let got = tables().region_hashes();
@@ -574,8 +662,10 @@ fn region_hashes_are_pinned() {
             ("honor_cost", 0xbd85_c3bf_1d52_db13),
             ("decomp_index", 0x3c6c_3388_ab75_fba0),
             ("decomps", 0x473f_b73d_ba79_a3b0),
-            ("suit_pairs", 0x8c50_af7d_cffe_a599),
-            ("suit_honor_pairs", 0x453b_87ca_1345_d7cb),
+            // The pair tables' words carry their rows' numbers since the `missing` table came.
+            ("suit_pairs", 0xb3d3_a91b_9935_4a50),
+            ("suit_honor_pairs", 0x35b7_a55f_289c_9560),
+            ("missing", 0xa7bf_b3e1_62b9_fa35),
         ]
     );
 }

@@ -1,6 +1,8 @@
 // Exact shanten from the per-group cost tables. A group's table row gives, for m sets and h pairs,
 // the fewest tiles that must be added to that group; combining the four groups by min-plus over
 // (m, h) gives the exact number of tiles missing for the whole hand, and shanten = missing - 1.
+// The combinations are tables too (codegen's `tables::pairs`): the two suits' rows and the third
+// suit's with the honors' each give a combined row, and the two combined rows the tiles missing.
 
 #[derive(Clone, Copy)]
 #[repr(C)]
@@ -20,23 +22,8 @@ pub struct ShantenOutput {
 // Reported for chiitoitsu and kokushi when the hand has too few tiles for them (it has melds).
 pub const SHANTEN_NOT_APPLICABLE: i32 = 99;
 
-// Costs of one group, index m * 2 + h, decoded from its packed table word: bits 2(m-1)..2m hold
-// D(m, 0) - D(m-1, 0) for m = 1..4 (D(0, 0) is 0) and bits 8+2m..10+2m hold D(m, 1) - D(m, 0).
-fn group_costs(w: u32) -> [u32; 10] {
-    let mut c: [u32; 10] = [0u32; 10];
-    let mut d: u32 = 0u32;
-    for m in 0u32..5u32 {
-        if m > 0u32 {
-            d += (w >> (m * 2u32 - 2u32)) & 3u32;
-        }
-        c[(m * 2u32) as usize] = d;
-        c[(m * 2u32 + 1u32) as usize] = d + ((w >> (m * 2u32 + 8u32)) & 3u32);
-    }
-    c
-}
-
-// The combined row of two suits' cost words (`combine_costs` of their rows, packed as a cost word),
-// read by the rows' numbers that the words carry above their costs.
+// The combined row of two suits' cost words (the min-plus combination of their rows, packed as a
+// cost word with its own number above), read by the rows' numbers that the words carry.
 fn suit_pair(a: u32, b: u32) -> u32 {
     table(T_SUIT_PAIRS + (a >> T_ROW_SHIFT) * T_SUIT_ROWS + (b >> T_ROW_SHIFT))
 }
@@ -46,53 +33,32 @@ fn suit_honor_pair(a: u32, b: u32) -> u32 {
     table(T_SUIT_HONOR_PAIRS + (a >> T_ROW_SHIFT) * T_HONOR_ROWS + (b >> T_ROW_SHIFT))
 }
 
-// Min-plus combination of two groups' costs: out[m * 2 + h] is the cheapest split of m sets and
-// h pairs between them.
-fn combine_costs(a: [u32; 10], b: [u32; 10]) -> [u32; 10] {
-    let mut out: [u32; 10] = [255u32; 10];
-    for m1 in 0u32..5u32 {
-        for h1 in 0u32..2u32 {
-            for m2 in 0u32..5u32 - m1 {
-                for h2 in 0u32..2u32 - h1 {
-                    let i: u32 = (m1 + m2) * 2u32 + h1 + h2;
-                    let v: u32 = a[(m1 * 2u32 + h1) as usize] + b[(m2 * 2u32 + h2) as usize];
-                    out[i as usize] = out[i as usize].min(v);
-                }
-            }
-        }
-    }
-    out
-}
-
 fn shanten_normal(hand: [u32; 34], tiles: u32) -> i32 {
     normal_of_codes(suit_code(hand, 0u32), suit_code(hand, 1u32), suit_code(hand, 2u32), honor_code(hand), tiles)
 }
 
+// The tiles a hand misses for `sets` sets and the pair, given the combined rows of its two suits
+// (`suit_pair`) and of its third suit with the honors (`suit_honor_pair`): one word of the
+// `missing` table, read by the two rows' numbers.
+fn pairs_missing(a: u32, b: u32, sets: u32) -> i32 {
+    let m: u32 = table(T_MISSING + (a >> T_ROW_SHIFT) * T_SUIT_HONOR_PAIR_ROWS + (b >> T_ROW_SHIFT));
+    ((m >> (sets * T_MISSING_BITS)) & ((1u32 << T_MISSING_BITS) - 1u32)) as i32
+}
+
+// The sets a hand of `tiles` tiles is built of with its pair (at most 4: a forged hand with more
+// tiles reads the table's last count).
+fn sets_of(tiles: u32) -> u32 {
+    (tiles / 3u32).min(4u32)
+}
+
 // The normal form's shanten of `tiles` tiles whose three suits and honors have these codes.
 fn normal_of_codes(c0: u32, c1: u32, c2: u32, c3: u32, tiles: u32) -> i32 {
-    let sets: u32 = tiles / 3u32;
     // All four loads first, so their cache misses overlap.
     let w0: u32 = table(T_SUIT_COST + c0);
     let w1: u32 = table(T_SUIT_COST + c1);
     let w2: u32 = table(T_SUIT_COST + c2);
     let w3: u32 = table(T_HONOR_COST + c3);
-    // Two pairs of groups, combined ahead of time, then only the entries of the final
-    // combination that are needed.
-    let a: [u32; 10] = group_costs(suit_pair(w0, w1));
-    let b: [u32; 10] = group_costs(suit_honor_pair(w2, w3));
-    missing(a, b, sets) - 1i32
-}
-
-// The tiles missing for `sets` sets and the pair in all, split between two combined costs.
-fn missing(a: [u32; 10], b: [u32; 10], sets: u32) -> i32 {
-    let mut best: u32 = 255u32;
-    for m in 0u32..sets + 1u32 {
-        let j: u32 = (sets - m) * 2u32;
-        let v: u32 =
-            (a[(m * 2u32) as usize] + b[(j + 1u32) as usize]).min(a[(m * 2u32 + 1u32) as usize] + b[j as usize]);
-        best = best.min(v);
-    }
-    best as i32
+    pairs_missing(suit_pair(w0, w1), suit_honor_pair(w2, w3), sets_of(tiles)) - 1i32
 }
 
 // Kinds held (at most one per type) and of those, kinds held twice or more; straight-line counting
@@ -221,15 +187,16 @@ pub fn hand_shanten(s: &mut GameState, seat: u32) -> i32 {
 
 // The shanten of `hand` with one more tile of each type, as `shanten` would compute it for each
 // (SHANTEN_NOT_APPLICABLE for a type held four times). A drawn tile changes one group's table word
-// and the kind counts only, so the three other groups are combined once per group, and each type
-// costs one table read and one final combination instead of a whole `shanten`: the analysis tier
+// and the kind counts only: its group is paired again with the group it shares a pair table with,
+// and the other pair's row is the hand's, so each type costs three table reads (the new group's
+// cost word, its pair word, the `missing` word) instead of a whole `shanten`: the analysis tier
 // asks this for every discard.
 fn shanten_after_draws(hand: [u32; 34]) -> [i32; 34] {
     let mut tiles: u32 = 0u32;
     for t in 0u32..N_TYPES {
         tiles += hand[t as usize];
     }
-    let sets: u32 = (tiles + 1u32) / 3u32;
+    let sets: u32 = sets_of(tiles + 1u32);
     let c0: u32 = suit_code(hand, 0u32);
     let c1: u32 = suit_code(hand, 1u32);
     let c2: u32 = suit_code(hand, 2u32);
@@ -238,30 +205,22 @@ fn shanten_after_draws(hand: [u32; 34]) -> [i32; 34] {
     let w1: u32 = table(T_SUIT_COST + c1);
     let w2: u32 = table(T_SUIT_COST + c2);
     let w3: u32 = table(T_HONOR_COST + c3);
-    let g0: [u32; 10] = group_costs(w0);
-    let g1: [u32; 10] = group_costs(w1);
-    let g2: [u32; 10] = group_costs(w2);
-    let g3: [u32; 10] = group_costs(w3);
-    let c01: [u32; 10] = group_costs(suit_pair(w0, w1));
-    let c23: [u32; 10] = group_costs(suit_honor_pair(w2, w3));
+    let p01: u32 = suit_pair(w0, w1);
+    let p23: u32 = suit_honor_pair(w2, w3);
     // Kinds and pairs of the whole hand and of its terminals and honors, for the other two forms.
     let kp: [u32; 2] = kinds_and_pairs(hand, 0u32, N_TYPES);
     let op: [u32; 2] = orphan_kinds_and_pairs(hand);
     let mut out: [i32; 34] = [SHANTEN_NOT_APPLICABLE; 34];
     for g in 0u32..4u32 {
-        // The other three groups, and the place value of the group's first type in its code.
-        let mut rest: [u32; 10] = combine_costs(c01, g2);
+        // The group's code, and the place value of its first type in the code.
         let mut code: u32 = T_HONOR_COST + c3;
         let mut place: u32 = 15625u32;
         let mut n: u32 = 7u32;
         if g == 0u32 {
-            rest = combine_costs(g1, c23);
             code = T_SUIT_COST + c0;
         } else if g == 1u32 {
-            rest = combine_costs(g0, c23);
             code = T_SUIT_COST + c1;
         } else if g == 2u32 {
-            rest = combine_costs(c01, g3);
             code = T_SUIT_COST + c2;
         }
         if g < 3u32 {
@@ -272,7 +231,19 @@ fn shanten_after_draws(hand: [u32; 34]) -> [i32; 34] {
             let t: u32 = g * 9u32 + i;
             let c: u32 = hand[t as usize];
             if c < 4u32 {
-                let mut best: i32 = missing(rest, group_costs(table(code + place)), sets) - 1i32;
+                let w: u32 = table(code + place);
+                let mut a: u32 = p01;
+                let mut b: u32 = p23;
+                if g == 0u32 {
+                    a = suit_pair(w, w1);
+                } else if g == 1u32 {
+                    a = suit_pair(w0, w);
+                } else if g == 2u32 {
+                    b = suit_honor_pair(w, w3);
+                } else {
+                    b = suit_honor_pair(w2, w);
+                }
+                let mut best: i32 = pairs_missing(a, b, sets) - 1i32;
                 if tiles + 1u32 >= 13u32 {
                     // The drawn tile is a new kind if none was held, a new pair if one was.
                     let new_kind: u32 = (c == 0u32) as u32;

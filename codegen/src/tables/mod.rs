@@ -9,8 +9,9 @@
 //! | `honor_cost` | 1 per honor code | the same for honors (triplets and pairs only) |
 //! | `decomp_index` | 1 per suit code | `(first << 4) \| count` into `decomps` |
 //! | `decomps` | 2 per decomposition | word 0: pair and sets; word 1: yaku bits (see [`decomp`]) |
-//! | `suit_pairs` | 1 per pair of suit rows | the two rows combined, packed as a cost word (no number) |
+//! | `suit_pairs` | 1 per pair of suit rows | the two rows combined, packed as a cost word; its number among the distinct combined rows from bit 18 |
 //! | `suit_honor_pairs` | 1 per suit row and honor row | the same for a suit and the honors |
+//! | `missing` | 1 per combined suit row and combined suit-honor row (by number) | the tiles missing for m sets and the pair, the two combined rows together, at bits `4m..4m+4` (m = 0..=4) |
 //!
 //! D is exact (see the `cost` module), so per-suit costs can be combined exactly by the shanten kernel.
 //! D(0, 0) is always 0 and every increment fits 2 bits (checked on every code at every build), so a
@@ -39,9 +40,13 @@ pub struct Tables {
     pub n_decomps: u32,
     pub suit_pairs: u32,
     pub suit_honor_pairs: u32,
+    pub missing: u32,
     /// The distinct suit and honor cost rows (cost words without their numbers), by number.
     pub suit_rows: Vec<u32>,
     pub honor_rows: Vec<u32>,
+    /// The distinct rows of the two pair tables (combined rows without their numbers), by number.
+    pub suit_pair_rows: Vec<u32>,
+    pub suit_honor_pair_rows: Vec<u32>,
 }
 
 /// Builds every table. Deterministic: the same words on every run and machine.
@@ -66,9 +71,16 @@ pub fn build() -> Tables {
     pairs::build(&suit_rows, &honor_rows, &mut suit_honor_pairs);
     pairs::number(&mut words[suit_cost..honor_cost], &suit_rows);
     pairs::number(&mut words[honor_cost..decomp_index], &honor_rows);
+    let suit_pair_rows = pairs::distinct(&suit_pairs);
+    let suit_honor_pair_rows = pairs::distinct(&suit_honor_pairs);
+    let missing = pairs::missing(&suit_pair_rows, &suit_honor_pair_rows);
+    pairs::number(&mut suit_pairs, &suit_pair_rows);
+    pairs::number(&mut suit_honor_pairs, &suit_honor_pair_rows);
     let suit_honor_at = pairs_at + suit_pairs.len();
+    let missing_at = suit_honor_at + suit_honor_pairs.len();
     words.extend(suit_pairs);
     words.extend(suit_honor_pairs);
+    words.extend(missing);
 
     let (index, list) = words[decomp_index..].split_at_mut(SUIT_CODES);
     // `decomps` is sorted by code, so each code's decompositions are one contiguous run.
@@ -95,20 +107,27 @@ pub fn build() -> Tables {
         n_decomps: offset(n_decomps),
         suit_pairs: offset(pairs_at),
         suit_honor_pairs: offset(suit_honor_at),
+        missing: offset(missing_at),
         suit_rows,
         honor_rows,
+        suit_pair_rows,
+        suit_honor_pair_rows,
     }
 }
 
 impl Tables {
     /// Kernel-subset Rust consts, one `const NAME: u32 = <n>u32;` a line: the region offsets, then
-    /// the numbers of suit and honor rows (the pair tables' strides) and where a cost word's row
-    /// number starts.
+    /// the numbers of suit and honor rows and of the two pair tables' rows (the strides of the
+    /// tables indexed by them), where a cost word's row number starts, and the bits of each count
+    /// of a `missing` word.
     pub fn kernel_consts(&self) -> String {
         let counts = [
             ("SUIT_ROWS", self.suit_rows.len()),
             ("HONOR_ROWS", self.honor_rows.len()),
+            ("SUIT_PAIR_ROWS", self.suit_pair_rows.len()),
+            ("SUIT_HONOR_PAIR_ROWS", self.suit_honor_pair_rows.len()),
             ("ROW_SHIFT", pairs::ROW_SHIFT as usize),
+            ("MISSING_BITS", pairs::MISSING_BITS as usize),
         ];
         self.regions()
             .iter()
@@ -159,8 +178,14 @@ impl Tables {
         self.words[self.suit_honor_pairs as usize + i * self.honor_rows.len() + j]
     }
 
-    fn regions(&self) -> [(&'static str, u32, usize); 6] {
+    /// The `missing` word of combined suit row `i` and combined suit-honor row `j` (by number).
+    pub fn missing_word(&self, i: usize, j: usize) -> u32 {
+        self.words[self.missing as usize + i * self.suit_honor_pair_rows.len() + j]
+    }
+
+    fn regions(&self) -> [(&'static str, u32, usize); 7] {
         let (s, h) = (self.suit_rows.len(), self.honor_rows.len());
+        let (sp, shp) = (self.suit_pair_rows.len(), self.suit_honor_pair_rows.len());
         [
             ("suit_cost", self.suit_cost, SUIT_CODES),
             ("honor_cost", self.honor_cost, HONOR_CODES),
@@ -168,6 +193,7 @@ impl Tables {
             ("decomps", self.decomps, 2 * self.n_decomps as usize),
             ("suit_pairs", self.suit_pairs, s * s),
             ("suit_honor_pairs", self.suit_honor_pairs, s * h),
+            ("missing", self.missing, sp * shp),
         ]
     }
 }

@@ -5,8 +5,16 @@
 //! the min-plus combination of any two rows, itself a row of the same shape, is one word of a
 //! table indexed by the two numbers. The shanten kernel then reads two combined rows (the two
 //! number suits; the third with the honors) where it combined four rows itself.
+//!
+//! The combined rows are few too (180 of two suits, 165 of a suit and the honors), so the pair
+//! tables' words carry their numbers the same way, and the last step, the tiles a whole hand
+//! misses for each number of sets, is one word of a third table indexed by the two numbers
+//! ([`missing`]): the kernel reads it where it unpacked two rows and took the cheapest split.
 
 use super::cost::{pack, unpack, CostRow, MAX_SETS};
+
+/// Bits per entry of a [`missing`] word.
+pub const MISSING_BITS: u32 = 4;
 
 /// Bit of a cost word where its row's number starts: the costs use the 18 bits below.
 pub const ROW_SHIFT: u32 = 18;
@@ -60,4 +68,36 @@ pub(crate) fn build(left: &[u32], right: &[u32], out: &mut [u32]) {
                 pack(&c).unwrap_or_else(|| panic!("rows {l:#x} and {r:#x}: combined row {c:?} does not pack"));
         }
     }
+}
+
+/// The fewest tiles that complete `m` sets and the pair from two groups whose rows (costs
+/// without numbers) are `a` and `b`: the cheapest split of the sets, the pair in either.
+pub fn missing_tiles(a: u32, b: u32, m: usize) -> u32 {
+    (0..=m)
+        .map(|m1| (unpack(a, m1, 0) + unpack(b, m - m1, 1)).min(unpack(a, m1, 1) + unpack(b, m - m1, 0)))
+        .min()
+        .expect("at least one split")
+}
+
+/// The `missing` table: for every row of `left` and of `right` (row-major by the left row's
+/// number), [`missing_tiles`] for m = 0..=4 at bits `4m..4m + 4`. Panics if a count does not fit
+/// its bits: a hand of m sets and the pair has 3m + 2 tiles, and no tile already held makes a
+/// completion cost more, so each count is at most 14 (checked on every entry at every build).
+pub(crate) fn missing(left: &[u32], right: &[u32]) -> Vec<u32> {
+    let mut out = Vec::with_capacity(left.len() * right.len());
+    for &a in left {
+        for &b in right {
+            let mut word = 0;
+            for m in 0..=MAX_SETS {
+                let n = missing_tiles(a, b, m);
+                assert!(
+                    n < 1 << MISSING_BITS && n <= 3 * m as u32 + 2,
+                    "rows {a:#x} and {b:#x}: {n} tiles missing for {m} sets and the pair"
+                );
+                word |= n << (MISSING_BITS * m as u32);
+            }
+            out.push(word);
+        }
+    }
+    out
 }
