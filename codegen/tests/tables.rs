@@ -578,16 +578,6 @@ fn pair_tables_combine_every_two_rows() {
     assert_eq!(cost_d(t.suit_honor_pair_word(i, j), 0, 0), 0);
 }
 
-/// The fewest tiles that complete `m` sets and the pair, by brute force over the ways to take the
-/// sets and the pair from each of two groups: ten values of D for each group, no table.
-fn brute_missing(a: u32, b: u32, m: usize) -> u32 {
-    (0..=m)
-        .flat_map(|m1| (0..2).map(move |h1| (m1, h1)))
-        .map(|(m1, h1)| cost_d(a, m1, h1) + cost_d(b, m - m1, 1 - h1))
-        .min()
-        .expect("at least one split")
-}
-
 /// The `missing` table holds, for every combined suit row and combined suit-honor row, the tiles
 /// the two miss together for each number of sets with the pair; and the whole chain the shanten
 /// kernel reads (four cost words, two pair words, one `missing` word) gives the brute-force
@@ -603,7 +593,7 @@ fn missing_table_combines_the_pair_rows() {
             for m in 0..5 {
                 assert_eq!(
                     (word >> (bits * m)) as usize & ((1 << bits) - 1),
-                    brute_missing(a, b, m) as usize,
+                    brute_combined(a, b, m, 1) as usize,
                     "rows {i} and {j}, {m} sets"
                 );
             }

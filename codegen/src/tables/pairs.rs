@@ -60,7 +60,6 @@ pub fn combine(a: &CostRow, b: &CostRow) -> CostRow {
 /// (checked here on every pair at every build).
 pub(crate) fn build(left: &[u32], right: &[u32], out: &mut [u32]) {
     assert_eq!(out.len(), left.len() * right.len());
-    let row = |w: u32| -> CostRow { std::array::from_fn(|i| unpack(w, i / 2, i % 2) as u8) };
     for (i, &l) in left.iter().enumerate() {
         for (j, &r) in right.iter().enumerate() {
             let c = combine(&row(l), &row(r));
@@ -70,26 +69,24 @@ pub(crate) fn build(left: &[u32], right: &[u32], out: &mut [u32]) {
     }
 }
 
-/// The fewest tiles that complete `m` sets and the pair from two groups whose rows (costs
-/// without numbers) are `a` and `b`: the cheapest split of the sets, the pair in either.
-pub fn missing_tiles(a: u32, b: u32, m: usize) -> u32 {
-    (0..=m)
-        .map(|m1| (unpack(a, m1, 0) + unpack(b, m - m1, 1)).min(unpack(a, m1, 1) + unpack(b, m - m1, 0)))
-        .min()
-        .expect("at least one split")
+/// The ten costs of a packed cost word.
+fn row(w: u32) -> CostRow {
+    std::array::from_fn(|i| unpack(w, i / 2, i % 2) as u8)
 }
 
 /// The `missing` table: for every row of `left` and of `right` (row-major by the left row's
-/// number), [`missing_tiles`] for m = 0..=4 at bits `4m..4m + 4`. Panics if a count does not fit
+/// number), D(m, 1) of the two rows combined (the tiles that complete m sets and the pair) for
+/// m = 0..=4 at bits `4m..4m + 4`. Panics if a count does not fit
 /// its bits: a hand of m sets and the pair has 3m + 2 tiles, and no tile already held makes a
 /// completion cost more, so each count is at most 14 (checked on every entry at every build).
 pub(crate) fn missing(left: &[u32], right: &[u32]) -> Vec<u32> {
     let mut out = Vec::with_capacity(left.len() * right.len());
     for &a in left {
         for &b in right {
+            let c = combine(&row(a), &row(b));
             let mut word = 0;
             for m in 0..=MAX_SETS {
-                let n = missing_tiles(a, b, m);
+                let n = u32::from(c[2 * m + 1]);
                 assert!(
                     n < 1 << MISSING_BITS && n <= 3 * m as u32 + 2,
                     "rows {a:#x} and {b:#x}: {n} tiles missing for {m} sets and the pair"
