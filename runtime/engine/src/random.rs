@@ -40,20 +40,30 @@ impl Rng {
         if n == 0 {
             return 0;
         }
-        let mut k = self.below(n);
-        for (i, &w) in mask.iter().enumerate() {
-            let c = w.count_ones();
-            if k < c {
-                let mut w = w;
-                for _ in 0..k {
-                    w &= w - 1;
-                }
-                return i as u32 * 32 + w.trailing_zeros();
-            }
-            k -= c;
-        }
-        unreachable!("k < n")
+        // The word and the bit are found without branches on k: a branch (or a loop of k steps)
+        // taken at random was mispredicted on most calls.
+        let k = self.below(n);
+        let c0 = mask[0].count_ones();
+        let c1 = mask[1].count_ones();
+        let in1 = u32::from(k >= c0);
+        let in2 = u32::from(k >= c0 + c1);
+        let i = in1 + in2;
+        i * 32 + nth_set_bit(mask[i as usize], k - c0 * in1 - c1 * in2)
     }
+}
+
+/// The position of the `k`-th (from 0) set bit of `w`, which has more than `k` set bits: a binary
+/// search over halves, quarters and so on of the word.
+fn nth_set_bit(mut w: u32, mut k: u32) -> u32 {
+    let mut at = 0;
+    for width in [16, 8, 4, 2, 1] {
+        let low = (w & ((1u32 << width) - 1)).count_ones();
+        let up = u32::from(k >= low);
+        k -= low * up;
+        w >>= width * up;
+        at += width * up;
+    }
+    at
 }
 
 /// A uniformly shuffled wall's first `n` tiles as counts (n <= 136).
@@ -215,4 +225,43 @@ fn try_random_win(rng: &mut Rng) -> Option<Win> {
         aka,
         context: c,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Rng;
+
+    /// The set bits of the mask as action ids, in order: the brute-force list `pick_legal` picks
+    /// from.
+    fn legal_ids(mask: &[u32; 3]) -> Vec<u32> {
+        (0..96)
+            .filter(|&a| (mask[a as usize / 32] >> (a % 32)) & 1 != 0)
+            .collect()
+    }
+
+    #[test]
+    fn pick_legal_takes_the_drawn_index_among_the_set_bits() {
+        let mut masks = Rng::new(7);
+        for case in 0..20_000u64 {
+            // Sparse and dense words, and whole words empty, as legal-action masks are.
+            let mut mask = [0u32; 3];
+            for w in &mut mask {
+                let density = masks.below(4);
+                *w = (0..density).fold(u32::MAX, |x, _| x & masks.next_u64() as u32);
+                if masks.chance(30) {
+                    *w = 0;
+                }
+            }
+            let ids = legal_ids(&mask);
+            let mut rng = Rng::new(case);
+            let mut twin = rng.clone();
+            let picked = rng.pick_legal(&mask);
+            if ids.is_empty() {
+                assert_eq!(picked, 0);
+            } else {
+                let k = twin.below(ids.len() as u32);
+                assert_eq!(picked, ids[k as usize], "mask {mask:08x?}, k {k}");
+            }
+        }
+    }
 }
