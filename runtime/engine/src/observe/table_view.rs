@@ -351,10 +351,10 @@ impl TableView {
         }
         self.since[a] = 0;
         self.own[a] |= bit;
+        // Every seat's cell, the discarder's too (a branch on the discarder was mispredicted):
+        // its row is then written whole from its set.
         for q in 0..4 {
-            if q != a {
-                self.blocks[q][row(k::P_SEAT_SAFE) + t] = 1;
-            }
+            self.blocks[q][row(k::P_SEAT_SAFE) + t] = 1;
         }
         self.put_row(a, k::P_SEAT_SAFE, self.safe(a));
         if (f & k::LOG_RIICHI_TILE) != 0 {
