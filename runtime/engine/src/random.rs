@@ -36,15 +36,14 @@ impl Rng {
 
     /// A uniformly random action among the set bits of a legal-action mask (0 when none is set).
     pub fn pick_legal(&mut self, mask: &[u32; 3]) -> u32 {
-        let n: u32 = mask.iter().map(|w| w.count_ones()).sum();
+        let [c0, c1, c2] = mask.map(u32::count_ones);
+        let n = c0 + c1 + c2;
         if n == 0 {
             return 0;
         }
         // The word and the bit are found without branches on k: a branch (or a loop of k steps)
         // taken at random was mispredicted on most calls.
         let k = self.below(n);
-        let c0 = mask[0].count_ones();
-        let c1 = mask[1].count_ones();
         let in1 = u32::from(k >= c0);
         let in2 = u32::from(k >= c0 + c1);
         let i = in1 + in2;
