@@ -205,16 +205,7 @@ fn random_legal(mask: [u32; 3], seed: [u32; 2], nonce: u32) -> u32 {
         return ACTION_PASS;
     }
     let mut rng: Rng = rng_new(seed, RNG_AGENT, nonce, 0u32);
-    let mut k: u32 = random_below(&mut rng, n);
-    for a in 0u32..NUM_ACTIONS {
-        if mask_has(mask, a) {
-            if k == 0u32 {
-                return a;
-            }
-            k -= 1u32;
-        }
-    }
-    ACTION_PASS
+    nth_legal(mask, random_below(&mut rng, n))
 }
 
 // The discard a seat picks: folding by danger, else by the agent's own order.
@@ -318,8 +309,24 @@ fn pon_keeps_shanten(hand: [u32; 34], t: u32) -> bool {
     best <= shanten_of(hand)
 }
 
+// Whether the agent plays a uniformly random legal action (the random agent, and any number that
+// names no agent): it reads no observation.
+fn plays_at_random(agent: u32) -> bool {
+    agent == AGENT_RANDOM || agent == AGENT_CALLER || agent >= AGENT_KINDS
+}
+
+// The action of the agent seated at the player to move of `s`. The planes are built only for an
+// agent that reads them: a random seat's decision cost as much as the others' without it.
+fn seat_act(s: &mut GameState, agent: u32) -> u32 {
+    if plays_at_random(agent) {
+        return random_legal(s.mask, s.seed, s.steps);
+    }
+    let mut o: ObsPlanes = planes_of(s, OBSERVE_CURRENT);
+    agent_act(agent, &mut o, s.mask, s.seed, s.steps)
+}
+
 pub fn agent_act(agent: u32, o: &mut ObsPlanes, mask: [u32; 3], seed: [u32; 2], nonce: u32) -> u32 {
-    if agent == AGENT_RANDOM || agent == AGENT_CALLER || agent >= AGENT_KINDS {
+    if plays_at_random(agent) {
         return random_legal(mask, seed, nonce);
     }
     if mask_has(mask, ACTION_TSUMO) {
@@ -417,9 +424,7 @@ fn play_action(s: &mut GameState, arg: u32) -> u32 {
     if !first && (waits || s.terminated != 0u32) {
         return PLAY_DONE;
     }
-    let mut o: ObsPlanes = planes_of(s, OBSERVE_CURRENT);
-    let a: u32 = agent_act(agent, &mut o, s.mask, s.seed, s.steps);
-    a | (PLAY_ADD * ((!first) as u32))
+    seat_act(s, agent) | (PLAY_ADD * ((!first) as u32))
 }
 
 pub fn game_play_action(state: GameState, arg: u32) -> u32 {
@@ -455,6 +460,5 @@ pub fn game_advance(s: &mut GameState, arg: u32) {
 pub fn game_agent_action(state: GameState, arg: u32) -> u32 {
     let mut s: GameState = state;
     let agent: u32 = (arg >> (s.current * 4u32)) & 15u32;
-    let mut o: ObsPlanes = planes_of(&mut s, OBSERVE_CURRENT);
-    agent_act(agent, &mut o, s.mask, s.seed, s.steps)
+    seat_act(&mut s, agent)
 }

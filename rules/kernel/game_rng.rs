@@ -113,3 +113,27 @@ pub fn random_below(r: &mut Rng, bound: u32) -> u32 {
     }
     m[0]
 }
+
+// The k-th (from 0) legal action of a mask that has more than k: the word by its bit counts, then
+// the bit by a binary search over the word's halves, quarters and so on. No branch on k, which is
+// random: a loop over the actions (or the bits) ends at a random place, and its exit was
+// mispredicted on most calls. The host's random policy (`Rng::pick_legal`) uses it too.
+pub fn nth_legal(mask: [u32; 3], k: u32) -> u32 {
+    let c0: u32 = mask[0].count_ones();
+    let c1: u32 = mask[1].count_ones();
+    let in1: u32 = (k >= c0) as u32;
+    let in2: u32 = (k >= c0 + c1) as u32;
+    let i: u32 = in1 + in2;
+    let mut w: u32 = mask[i as usize];
+    let mut left: u32 = k - c0 * in1 - c1 * in2;
+    let mut at: u32 = 0u32;
+    for step in 0u32..5u32 {
+        let width: u32 = 16u32 >> step;
+        let low: u32 = (w & ((1u32 << width) - 1u32)).count_ones();
+        let up: u32 = (left >= low) as u32;
+        left -= low * up;
+        w = w >> (width * up);
+        at += width * up;
+    }
+    i * 32u32 + at
+}

@@ -34,35 +34,15 @@ impl Rng {
         self.below(100) < percent
     }
 
-    /// A uniformly random action among the set bits of a legal-action mask (0 when none is set).
+    /// A uniformly random action among the set bits of a legal-action mask (0 when none is set):
+    /// the kernel's `nth_legal` of a uniform draw below their count.
     pub fn pick_legal(&mut self, mask: &[u32; 3]) -> u32 {
-        let [c0, c1, c2] = mask.map(u32::count_ones);
-        let n = c0 + c1 + c2;
+        let n = mask.iter().map(|w| w.count_ones()).sum();
         if n == 0 {
             return 0;
         }
-        // The word and the bit are found without branches on k: a branch (or a loop of k steps)
-        // taken at random was mispredicted on most calls.
-        let k = self.below(n);
-        let in1 = u32::from(k >= c0);
-        let in2 = u32::from(k >= c0 + c1);
-        let i = in1 + in2;
-        i * 32 + nth_set_bit(mask[i as usize], k - c0 * in1 - c1 * in2)
+        crate::generated::kernel::nth_legal(*mask, self.below(n))
     }
-}
-
-/// The position of the `k`-th (from 0) set bit of `w`, which has more than `k` set bits: a binary
-/// search over halves, quarters and so on of the word.
-fn nth_set_bit(mut w: u32, mut k: u32) -> u32 {
-    let mut at = 0;
-    for width in [16, 8, 4, 2, 1] {
-        let low = (w & ((1u32 << width) - 1)).count_ones();
-        let up = u32::from(k >= low);
-        k -= low * up;
-        w >>= width * up;
-        at += width * up;
-    }
-    at
 }
 
 /// A uniformly shuffled wall's first `n` tiles as counts (n <= 136).
