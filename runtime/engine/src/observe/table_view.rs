@@ -31,6 +31,8 @@ const _: () = assert!(
 );
 
 const TYPES: usize = 34;
+/// The counts by type as the kernel's cells, four to a word.
+const SEEN_BYTES: usize = TYPES.next_multiple_of(4);
 /// Bytes of one seat block (rows `P_SEAT_*` of one seat).
 const BLOCK: usize = k::P_SEAT_ROWS as usize * TYPES;
 /// Discards a river holds (`GameState.rivers`: 24 per seat); later ones are not in it.
@@ -107,8 +109,9 @@ pub(crate) struct TableView {
     riichi_tiles: [u64; 4],
     called_in: [u64; 4],
     closed_kans: [u64; 4],
-    /// Counts by type of the river tiles not called away and of the melds' tiles.
-    seen: [u8; TYPES],
+    /// Counts by type of the river tiles not called away and of the melds' tiles, padded with
+    /// zeros to the kernel's nine words of cells ([`TableView::tiles`] copies them whole).
+    seen: [u8; SEEN_BYTES],
     /// Red fives by suit: in rivers and not called away (a count), and in any meld (a bit).
     red_in_rivers: [u8; 3],
     red_in_melds: u32,
@@ -145,7 +148,7 @@ impl Default for TableView {
             riichi_tiles: [0; 4],
             called_in: [0; 4],
             closed_kans: [0; 4],
-            seen: [0; TYPES],
+            seen: [0; SEEN_BYTES],
             red_in_rivers: [0; 3],
             red_in_melds: 0,
             events: [0; EVENTS],
@@ -424,12 +427,11 @@ impl TableView {
         for (suit, &n) in self.red_in_rivers.iter().enumerate() {
             red_seen |= u32::from(n > 0) << suit;
         }
-        let mut seen = [0u8; 36];
-        seen[..TYPES].copy_from_slice(&self.seen);
+        // Whole words, copied as they are. Built from the 34 counts with two zero bytes stored
+        // beside them, the last word could not be forwarded from the store buffer to the kernel's
+        // load of it, which then waited behind the record's stores (docs/speed.md, a seventh pass).
         k::TableTiles {
-            seen: std::array::from_fn(|j| {
-                u32::from_le_bytes([seen[4 * j], seen[4 * j + 1], seen[4 * j + 2], seen[4 * j + 3]])
-            }),
+            seen: bytemuck::cast(self.seen),
             red_seen,
         }
     }
