@@ -309,14 +309,15 @@ fn pon_keeps_shanten(hand: [u32; 34], t: u32) -> bool {
     best <= shanten_of(hand)
 }
 
-// Whether the agent plays a uniformly random legal action (the random agent, and any number that
-// names no agent): it reads no observation.
+// Whether the seat plays a uniformly random legal action, reading no observation: the random
+// agent, the caller's seat when an agent is asked for it, and any number that names no agent.
 fn plays_at_random(agent: u32) -> bool {
     agent == AGENT_RANDOM || agent == AGENT_CALLER || agent >= AGENT_KINDS
 }
 
-// The action of the agent seated at the player to move of `s`. The planes are built only for an
-// agent that reads them: a random seat's decision cost as much as the others' without it.
+// The action of the agent seated at the player to move of `s`. Only an agent that reads the
+// planes has them built: for a random seat they were four fifths of the step's instructions
+// (docs/speed.md).
 fn seat_act(s: &mut GameState, agent: u32) -> u32 {
     if plays_at_random(agent) {
         return random_legal(s.mask, s.seed, s.steps);
