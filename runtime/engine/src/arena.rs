@@ -207,10 +207,13 @@ fn play(arena: &Arena, seed: u64, seating: &[Player; 4], game: u64, faults: &mut
         let round_end = kernel::EVENT_RON | kernel::EVENT_TSUMO | kernel::EVENT_EXHAUSTIVE_DRAW | kernel::EVENT_ABORTIVE_DRAW;
         while s.terminated == 0 {
             let p = s.current as usize;
-            let mut planes = v::observe_planes(s, kernel::OBSERVE_CURRENT);
             let a = match seating[p] {
-                Player::Builtin(agent) => v::agent_act(agent.kernel(), &mut planes, s.mask, s.seed, s.steps),
-                Player::Policy { policy, .. } => policy.act(bytemuck::bytes_of(&planes), &s.mask),
+                // Built only where read: a random seat and an MJAI entrant read no planes.
+                Player::Builtin(agent) => v::seat_act(&mut { s }, agent.kernel()),
+                Player::Policy { policy, .. } => {
+                    let planes = v::observe_planes(s, kernel::OBSERVE_CURRENT);
+                    policy.act(bytemuck::bytes_of(&planes), &s.mask)
+                }
                 Player::Entrant { .. } => match seats[p].as_mut().map(|seat| seat.act(&s)) {
                     Some(Ok(a)) => a,
                     Some(Err(message)) => {
