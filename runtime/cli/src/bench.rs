@@ -170,9 +170,7 @@ fn env_bench(
             let gpu = Gpu::new().map_err(CliError::failure)?;
             let adapter = gpu.adapter();
             if gpu.is_software() {
-                println!(
-                    "note: {adapter} is a software adapter: compiling the game's step shader takes it 5 to 15 minutes the first time (cached afterwards; GALLIVM_PERF=nopt compiles it about 4x faster, into unoptimised code)"
-                );
+                println!("{}", crate::selfplay::software_adapter_note(&adapter));
             }
             vec![(format!("gpu ({adapter})"), None)]
         }

@@ -209,10 +209,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
         _ => CliError::input(e),
     })?;
     if env.gpu_is_software() {
-        eprintln!(
-            "note: {} is a software adapter: compiling the game's step shader takes it 5 to 15 minutes the first time (cached afterwards; GALLIVM_PERF=nopt makes it about 4x faster)",
-            env.adapter().unwrap_or_default()
-        );
+        eprintln!("{}", software_adapter_note(&env.adapter().unwrap_or_default()));
     }
     let yaku_names: &[&str] = rinshan_engine::env::yaku_names(variant);
     let b = env.batch();
@@ -561,4 +558,12 @@ fn summary(
     for (name, n) in &yaku {
         println!("    {name:<22} {n:>8}  {:>6.2}%", pct(*n, wins));
     }
+}
+
+/// What a run on Mesa's software driver pays first, and the settings that cut it (README, "The
+/// GPU tests"; docs/speed.md, "How long each pipeline takes to compile").
+pub(crate) fn software_adapter_note(adapter: &str) -> String {
+    format!(
+        "note: {adapter} is a software adapter: it compiles the game's pipelines the first time, minutes of one core (cached afterwards); LP_NATIVE_VECTOR_WIDTH=128 and GALLIVM_PERF=nopt make that several times faster"
+    )
 }
