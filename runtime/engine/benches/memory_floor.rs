@@ -1,0 +1,131 @@
+//! What the memory of an observed step costs on this machine: one random step with the planes of
+//! each env's current player, beside the same step without them, and loops that move the bytes of
+//! a step and of an observed step and compute nothing; at a batch that stays in the core's cache
+//! from one step to the next and at batches that do not:
+//! `cargo bench -p rinshan-engine --bench memory_floor`. The step plus the planes' bytes less the
+//! step's is a floor under the observed step that no change of the kernels' code goes below while
+//! the records stay the same bytes.
+
+use std::hint::black_box;
+use std::mem::size_of;
+
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use rinshan_engine::env::{Config, Env};
+use rinshan_engine::generated::kernel as k;
+use rinshan_engine::observe::Form;
+use rinshan_engine::random::Rng;
+use rinshan_engine::Variant;
+
+const BATCHES: [usize; 3] = [64, 1024, 4096];
+const LINE: usize = 64;
+
+/// Random self-play writing the `observe` forms every step, run until the games are spread over
+/// rounds and turns.
+fn random_env(batch: usize, observe: &[Form]) -> (Env, Rng) {
+    let mut config = Config::new(Variant::Red, batch);
+    config.threads = Some(1);
+    config.auto_reset = true;
+    config.observe = observe.to_vec();
+    let mut env = Env::new(config).expect("an env of the default rules");
+    env.reset().expect("reset");
+    let mut rng = Rng::new(7);
+    for _ in 0..300 {
+        random_step(&mut env, &mut rng);
+    }
+    (env, rng)
+}
+
+fn random_step(env: &mut Env, rng: &mut Rng) {
+    let actions: Vec<u32> = env.last().legal_action_mask.iter().map(|m| rng.pick_legal(m)).collect();
+    env.step(&actions).expect("legal random actions");
+}
+
+/// The bytes of one env that an observed step touches, as the CPU backend lays them out: its
+/// state, its step view, the part of its table view that every planes observation reads (the
+/// four seat blocks it copies, and the log it checks the state's against), and its record.
+struct Traffic {
+    states: Vec<u8>,
+    views: Vec<u8>,
+    tables: Vec<u8>,
+    records: Vec<u8>,
+    record: Vec<u8>,
+}
+
+const STATE: usize = size_of::<k::GameState>();
+const VIEW: usize = size_of::<k::StepView>();
+// The log's words end where its length begins.
+const LOG: usize = std::mem::offset_of!(k::GameState, log_len) - std::mem::offset_of!(k::GameState, log);
+const TABLE: usize = 4 * k::P_SEAT_ROWS as usize * 34 + LOG;
+const RECORD: usize = Form::Planes.bytes();
+
+impl Traffic {
+    fn new(batch: usize) -> Traffic {
+        Traffic {
+            states: vec![1; batch * STATE],
+            views: vec![1; batch * VIEW],
+            tables: vec![1; batch * TABLE],
+            records: vec![1; batch * RECORD],
+            record: vec![2; RECORD],
+        }
+    }
+
+    /// The step's share: each state read and written a word a cache line, and its view written.
+    fn step_bytes(&mut self) {
+        for (state, view) in self
+            .states
+            .chunks_exact_mut(STATE)
+            .zip(self.views.chunks_exact_mut(VIEW))
+        {
+            for line in state.chunks_exact_mut(LINE) {
+                line[0] = line[0].wrapping_add(1);
+            }
+            view.fill(line_sum(state));
+        }
+        black_box(&mut *self);
+    }
+
+    /// A whole observed step's worth: the step's share, then, env by env, its state and table
+    /// view read a word a cache line and its record written.
+    fn observed_step_bytes(&mut self) {
+        self.step_bytes();
+        let mut sum = 0u8;
+        let envs = self.states.chunks_exact(STATE).zip(self.tables.chunks_exact(TABLE));
+        for ((state, table), record) in envs.zip(self.records.chunks_exact_mut(RECORD)) {
+            sum = sum.wrapping_add(line_sum(state)).wrapping_add(line_sum(table));
+            // A byte that depends on what was read: the copy cannot start before the reads end.
+            self.record[0] = sum;
+            record.copy_from_slice(&self.record);
+        }
+        black_box(&mut *self);
+    }
+}
+
+/// A byte of every cache line of `bytes`, summed.
+fn line_sum(bytes: &[u8]) -> u8 {
+    bytes.iter().step_by(LINE).fold(0u8, |s, &b| s.wrapping_add(b))
+}
+
+fn memory_floor(c: &mut Criterion) {
+    let mut group = c.benchmark_group("observed step");
+    for batch in BATCHES {
+        group.throughput(Throughput::Elements(batch as u64));
+        for (name, observe) in [("step", &[][..]), ("planes", &[Form::Planes][..])] {
+            let (mut env, mut rng) = random_env(batch, observe);
+            group.bench_function(BenchmarkId::new(name, batch), |b| {
+                b.iter(|| random_step(&mut env, &mut rng))
+            });
+        }
+        let mut traffic = Traffic::new(batch);
+        group.bench_function(BenchmarkId::new("step's bytes", batch), |b| {
+            b.iter(|| traffic.step_bytes())
+        });
+        let mut traffic = Traffic::new(batch);
+        group.bench_function(BenchmarkId::new("planes' bytes", batch), |b| {
+            b.iter(|| traffic.observed_step_bytes())
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, memory_floor);
+criterion_main!(benches);
