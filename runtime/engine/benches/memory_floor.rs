@@ -1,8 +1,8 @@
-//! What the memory of an observed step costs on this machine: one random step with the planes of
-//! each env's current player, beside the same step without them, and loops that move the bytes of
-//! a step and of an observed step and compute nothing; at a batch that stays in the core's cache
-//! from one step to the next and at batches that do not:
-//! `cargo bench -p rinshan-engine --bench memory_floor`. The step plus the planes' bytes less the
+//! What the memory of an observed step costs on this machine: one random step with the planes (or
+//! the tokens) of each env's current player, beside the same step without them, and loops that move
+//! the bytes of a step and of an observed step and compute nothing; at a batch that stays in the
+//! core's cache from one step to the next and at batches that do not:
+//! `cargo bench -p rinshan-engine --bench memory_floor`. The step plus a form's bytes less the
 //! step's is a floor under the observed step that no change of the kernels' code goes below while
 //! the records stay the same bytes.
 
@@ -41,31 +41,39 @@ fn random_step(env: &mut Env, rng: &mut Rng) {
 }
 
 /// The bytes of one env that an observed step touches, as the CPU backend lays them out: its
-/// state, its step view, the part of its table view that every planes observation reads (the
-/// four seat blocks it copies, and the log it checks the state's against), and its record.
+/// state, its step view, the part of its table view that every observation in the form reads, and
+/// its record.
 struct Traffic {
     states: Vec<u8>,
     views: Vec<u8>,
     tables: Vec<u8>,
     records: Vec<u8>,
     record: Vec<u8>,
+    table: usize,
 }
 
 const STATE: usize = size_of::<k::GameState>();
 const VIEW: usize = size_of::<k::StepView>();
-// The log's words end where its length begins.
+// The log's words end where its length begins. Every observation checks the state's log against it.
 const LOG: usize = std::mem::offset_of!(k::GameState, log_len) - std::mem::offset_of!(k::GameState, log);
-const TABLE: usize = 4 * k::P_SEAT_ROWS as usize * 34 + LOG;
-const RECORD: usize = Form::Planes.bytes();
+
+/// The forms measured, with the bytes of its table view that each observation reads: the four
+/// seat blocks the planes copy, the event list the tokens copy (all of it: a late round's), and
+/// the log.
+const FORMS: [(Form, usize); 2] = [
+    (Form::Planes, 4 * k::P_SEAT_ROWS as usize * 34 + LOG),
+    (Form::Tokens, k::TOKEN_EVENTS as usize * 4 + LOG),
+];
 
 impl Traffic {
-    fn new(batch: usize) -> Traffic {
+    fn new(batch: usize, form: Form, table: usize) -> Traffic {
         Traffic {
             states: vec![1; batch * STATE],
             views: vec![1; batch * VIEW],
-            tables: vec![1; batch * TABLE],
-            records: vec![1; batch * RECORD],
-            record: vec![2; RECORD],
+            tables: vec![1; batch * table],
+            records: vec![1; batch * form.bytes()],
+            record: vec![2; form.bytes()],
+            table,
         }
     }
 
@@ -89,8 +97,11 @@ impl Traffic {
     fn observed_step_bytes(&mut self) {
         self.step_bytes();
         let mut sum = 0u8;
-        let envs = self.states.chunks_exact(STATE).zip(self.tables.chunks_exact(TABLE));
-        for ((state, table), record) in envs.zip(self.records.chunks_exact_mut(RECORD)) {
+        let envs = self
+            .states
+            .chunks_exact(STATE)
+            .zip(self.tables.chunks_exact(self.table));
+        for ((state, table), record) in envs.zip(self.records.chunks_exact_mut(self.record.len())) {
             sum = sum.wrapping_add(line_sum(state)).wrapping_add(line_sum(table));
             // A byte that depends on what was read: the copy cannot start before the reads end.
             self.record[0] = sum;
@@ -109,20 +120,24 @@ fn memory_floor(c: &mut Criterion) {
     let mut group = c.benchmark_group("observed step");
     for batch in BATCHES {
         group.throughput(Throughput::Elements(batch as u64));
-        for (name, observe) in [("step", &[][..]), ("planes", &[Form::Planes][..])] {
-            let (mut env, mut rng) = random_env(batch, observe);
-            group.bench_function(BenchmarkId::new(name, batch), |b| {
-                b.iter(|| random_step(&mut env, &mut rng))
-            });
-        }
-        let mut traffic = Traffic::new(batch);
-        group.bench_function(BenchmarkId::new("step's bytes", batch), |b| {
+        let (mut env, mut rng) = random_env(batch, &[]);
+        group.bench_function(BenchmarkId::new("step", batch), |b| {
+            b.iter(|| random_step(&mut env, &mut rng))
+        });
+        let mut traffic = Traffic::new(batch, Form::Planes, 0);
+        group.bench_function(BenchmarkId::new("step bytes", batch), |b| {
             b.iter(|| traffic.step_bytes())
         });
-        let mut traffic = Traffic::new(batch);
-        group.bench_function(BenchmarkId::new("planes' bytes", batch), |b| {
-            b.iter(|| traffic.observed_step_bytes())
-        });
+        for (form, table) in FORMS {
+            let (mut env, mut rng) = random_env(batch, &[form]);
+            group.bench_function(BenchmarkId::new(form.name(), batch), |b| {
+                b.iter(|| random_step(&mut env, &mut rng))
+            });
+            let mut traffic = Traffic::new(batch, form, table);
+            group.bench_function(BenchmarkId::new(format!("{form} bytes"), batch), |b| {
+                b.iter(|| traffic.observed_step_bytes())
+            });
+        }
     }
     group.finish();
 }
