@@ -9,36 +9,15 @@
 use std::hint::black_box;
 use std::mem::size_of;
 
+mod random_play;
+
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
-use rinshan_engine::env::{Config, Env};
+use random_play::{random_env, random_step};
 use rinshan_engine::generated::kernel as k;
 use rinshan_engine::observe::Form;
-use rinshan_engine::random::Rng;
-use rinshan_engine::Variant;
 
 const BATCHES: [usize; 3] = [64, 1024, 4096];
 const LINE: usize = 64;
-
-/// Random self-play writing the `observe` forms every step, run until the games are spread over
-/// rounds and turns.
-fn random_env(batch: usize, observe: &[Form]) -> (Env, Rng) {
-    let mut config = Config::new(Variant::Red, batch);
-    config.threads = Some(1);
-    config.auto_reset = true;
-    config.observe = observe.to_vec();
-    let mut env = Env::new(config).expect("an env of the default rules");
-    env.reset().expect("reset");
-    let mut rng = Rng::new(7);
-    for _ in 0..300 {
-        random_step(&mut env, &mut rng);
-    }
-    (env, rng)
-}
-
-fn random_step(env: &mut Env, rng: &mut Rng) {
-    let actions: Vec<u32> = env.last().legal_action_mask.iter().map(|m| rng.pick_legal(m)).collect();
-    env.step(&actions).expect("legal random actions");
-}
 
 /// The bytes of one env that an observed step touches, as the CPU backend lays them out: its
 /// state, its step view, the part of its table view that every observation in the form reads, and

@@ -2,31 +2,17 @@
 //! positions (random self-play, so the batch holds every phase of a round), beside the game step
 //! measured on the same positions: `cargo bench -p rinshan-engine --bench observe`.
 
+mod random_play;
+
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
-use rinshan_engine::env::{Config, Env, Observer};
+use random_play::{random_env, random_step};
+use rinshan_engine::env::Observer;
 use rinshan_engine::observe::Form;
-use rinshan_engine::random::Rng;
-use rinshan_engine::Variant;
 
 const BATCH: usize = 1024;
 
-/// Random self-play on one thread: long enough that the games are spread over rounds and turns.
-fn positions() -> (Env, Rng) {
-    let mut config = Config::new(Variant::Red, BATCH);
-    config.threads = Some(1);
-    config.auto_reset = true;
-    let mut env = Env::new(config).expect("an env of the default rules");
-    env.reset().expect("reset");
-    let mut rng = Rng::new(7);
-    for _ in 0..600 {
-        let actions: Vec<u32> = env.last().legal_action_mask.iter().map(|m| rng.pick_legal(m)).collect();
-        env.step(&actions).expect("legal random actions");
-    }
-    (env, rng)
-}
-
 fn observe(c: &mut Criterion) {
-    let (mut env, mut rng) = positions();
+    let (mut env, mut rng) = random_env(BATCH, &[]);
     let mut group = c.benchmark_group("observe");
     group.throughput(Throughput::Elements(BATCH as u64));
     for form in Form::ALL {
@@ -36,12 +22,7 @@ fn observe(c: &mut Criterion) {
         });
     }
     // The baseline: one random step of the same batch (with its mask), same run.
-    group.bench_function("step", |b| {
-        b.iter(|| {
-            let actions: Vec<u32> = env.last().legal_action_mask.iter().map(|m| rng.pick_legal(m)).collect();
-            env.step(&actions).expect("legal random actions");
-        })
-    });
+    group.bench_function("step", |b| b.iter(|| random_step(&mut env, &mut rng)));
     group.finish();
 }
 
