@@ -273,17 +273,23 @@ fn game_is_over(s: &mut GameState, flags: u32) -> bool {
     if WEST_EXTENSION {
         limit = last + SEATS;
     }
-    if s.round > last && reached {
-        // Extension rounds end as soon as someone reaches the target.
-        return true;
-    }
     if (flags & END_DEALER_CONTINUES) != 0u32 {
         // All-last: a dealer who is top (and has reached the target) stops the game after a win or
         // a tenpai at the exhaustive draw (agari-yame, tenpai-yame). An abortive draw is neither:
         // the round is played again with one more honba, as Tenhou and RiichiEnv do (otherwise a
         // leading dealer could end the game by declaring nine terminals).
         let stop_allowed: bool = (flags & END_ABORTIVE) == 0u32;
-        return DEALER_TOP_STOP && stop_allowed && top == s.dealer && (reached || !WEST_EXTENSION) && s.round >= last;
+        //
+        // The dealer's continuation comes before the target, in the extension rounds too: a dealer
+        // who wins or is tenpai plays the next honba even when another seat has passed the target
+        // (a double ron, a tenpai payment). Tenhou: "親以外が30000点以上になっても1本場が始まる"
+        // (hagurin-tenhou.com, on the West round), "連荘を優先する" (a summary of Tenhou's manual);
+        // Mahjong Soul ends the game at the target "なおかつ親が連荘しない"; RiichiEnv plays on.
+        return DEALER_TOP_STOP && stop_allowed && top == s.dealer && (reached || !WEST_EXTENSION);
+    }
+    if s.round > last && reached {
+        // Otherwise extension rounds end as soon as someone reaches the target.
+        return true;
     }
     if s.round == limit {
         return true;

@@ -117,6 +117,11 @@ fn do_kita(s: &mut GameState) -> u32 {
     s.uninterrupted = 0u32;
     s.drawn = NO_TILE_VALUE;
     log_push(s, EV_KITA, p, NORTH, 0u32);
+    // The kan dora of an open or added kan whose replacement tile is this North shows now, before
+    // the kita's own replacement draw, as after a discard: Tenhou's three-player mjlogs write the
+    // `<DORA>` right after the kita's `<N>` and before the next `<T>`; RiichiEnv does the same
+    // for Mahjong Soul.
+    reveal_pending_dora(s);
     update_waits(s, p);
     set_claim(s, p, NORTH, CLAIM_WINDOW_KITA)
 }
@@ -171,8 +176,10 @@ fn turn_mask(s: &mut GameState) -> [u32; 3] {
     let concealed: bool = (f & SEAT_CONCEALED) != 0u32;
     // A minimum of 0 is no minimum: where no one busts (M-League), a seat below zero may riichi.
     let enough_points: bool = RIICHI_MIN_POINTS == 0u32 || s.scores[p as usize] >= RIICHI_MIN_POINTS as i32;
-    // Riichi needs a draw left for every seat (four tiles, three with three players).
-    if !riichi && concealed && enough_points && s.live_end - s.next_draw >= SEATS && riichi_possible(s, p) {
+    // Riichi needs a draw left for every seat (four tiles, three with three players), unless the
+    // rule set allows riichi with no draw left.
+    let draws_left: bool = RIICHI_WITH_NO_DRAW_LEFT || s.live_end - s.next_draw >= SEATS;
+    if !riichi && concealed && enough_points && draws_left && riichi_possible(s, p) {
         mask_set(&mut m, ACTION_RIICHI);
     }
     // Kyuushu: nine kinds of terminals and honors, counted from the hand's words at once.

@@ -86,10 +86,11 @@ fn judge_standard(inp: ScoreInput, h: HandInfo, common: Features, w0: [u32; 3], 
     if is_dragon(pair_tile) {
         fu += 2u32;
     }
-    if pair_tile == EAST + inp.seat_wind {
-        fu += 2u32;
-    }
-    if pair_tile == EAST + inp.round_wind {
+    let seat_pair: bool = pair_tile == EAST + inp.seat_wind;
+    let round_pair: bool = pair_tile == EAST + inp.round_wind;
+    if seat_pair && round_pair {
+        fu += DOUBLE_WIND_PAIR_FU;
+    } else if seat_pair || round_pair {
         fu += 2u32;
     }
     f.pair_is_value = is_dragon(pair_tile) || pair_tile == EAST + inp.seat_wind || pair_tile == EAST + inp.round_wind;
