@@ -179,6 +179,7 @@ fn replay<'py>(
         ("tables_matching", r.tables_matching),
         ("wins", r.wins),
         ("wins_matching", r.wins_matching),
+        ("wins_yaku_not_logged", r.wins_yaku_not_logged),
         ("draws", r.draws),
         ("draws_matching", r.draws_matching),
     ];

@@ -38,6 +38,9 @@ fn print_report(r: &Report, unreadable: &[String]) {
     line("rounds with matching score changes", r.score_changes_matching, r.rounds);
     line("next rounds (round, honba, sticks)", r.tables_matching, r.tables);
     line("wins with matching han, fu, yaku", r.wins_matching, r.wins);
+    if r.wins_yaku_not_logged > 0 {
+        line("wins whose yaku are not in the log", r.wins_yaku_not_logged, r.wins);
+    }
     line("draws of the same kind", r.draws_matching, r.draws);
     if !r.mismatches.is_empty() {
         println!("{} mismatches:", r.mismatches.len());

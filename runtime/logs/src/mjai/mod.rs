@@ -11,7 +11,8 @@
 //! * [`player`] — rinshan as an MJAI player: a seat's events in, the engine's state of its
 //!   decision out (`rebuild` deals a wall consistent with what the seat saw and replays the round)
 //! * [`read`]  — an MJAI log as a `Game`, so replay, convert and render take any format; `round`
-//!   reads a round's events, `yaku` a win's yaku
+//!   reads a round's events, `yaku` a win's yaku, `unlogged` scores the wins a log gives
+//!   without yaku (libriichi's)
 
 pub mod batch;
 pub mod bot;
@@ -24,6 +25,7 @@ mod rebuild;
 mod round;
 pub mod seat;
 pub mod tile;
+mod unlogged;
 pub mod write;
 mod yaku;
 

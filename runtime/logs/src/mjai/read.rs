@@ -9,7 +9,9 @@ use rinshan_engine::tile::Tile;
 
 use super::event::{Event, PER_SEAT};
 use super::round::{actor_of, known, Open};
+use super::unlogged::fill_in;
 use crate::tenhou::log::{parse_round_value, round_name, Game, LogError, Outcome, Round};
+use crate::tenhou::replay::mode_of_rule;
 use crate::tenhou::write::round_value;
 
 /// Whether a text looks like an MJAI log: its first non-blank line is an object with a `type`.
@@ -149,11 +151,22 @@ impl GameBuilder {
         if let Err(message) = self.reader.event(event, line) {
             return Err(self.error(line, message, at.map(|(kyoku, honba)| round_name(kyoku, honba))));
         }
-        if let Some(done) = self.reader.finished.take() {
+        if let Some((mut done, unstated)) = self.reader.finished.take() {
+            let game = &self.reader.game;
+            let mode = mode_of_rule(&game.rule);
+            if let Err(e) = fill_in(&game.path, &mut done, unstated, game.variant, mode) {
+                let message = format!("what the log leaves out, rinshan finds by playing the round: {e}");
+                return Err(self.error(line, message, Some(done.to_string())));
+            }
             // A round holds to the rules of a tenhou.net/6 round (a draw before each discard,
             // calls of real melds, a han count the yaku add up to), checked by that reader.
-            let game = &self.reader.game;
-            let back = parse_round_value(&game.path, done.line, &round_value(&done), game.red_fives, done.seats)?;
+            let mut back = parse_round_value(&game.path, done.line, &round_value(&done), game.red_fives, done.seats)?;
+            // What no format writes: which wins rinshan scored.
+            if let (Outcome::Wins(back), Outcome::Wins(wins)) = (&mut back.outcome, &done.outcome) {
+                for (b, w) in back.iter_mut().zip(wins) {
+                    b.computed = w.computed;
+                }
+            }
             if back != done {
                 let message = "the round's events do not read back as one round".into();
                 return Err(self.error(line, message, Some(done.to_string())));
@@ -194,8 +207,9 @@ impl GameBuilder {
 struct Reader {
     game: Game,
     round: Option<Open>,
-    /// The round an `end_kyoku` just closed, to check before it joins the game.
-    finished: Option<Round>,
+    /// The round an `end_kyoku` just closed, to check before it joins the game, and whether its
+    /// `ryukyoku` left its kind unstated ([`Open::unstated`]).
+    finished: Option<(Round, bool)>,
     started: bool,
     ended: bool,
     /// Players at the table.
@@ -273,20 +287,23 @@ impl Reader {
                         .map(|p| known(p, &format!("a tile of seat {s}'s tehai")))
                         .collect::<Result<_, _>>()?;
                 }
-                self.round = Some(Open::new(Round {
-                    line,
-                    seats: self.seats,
-                    kyoku: k,
-                    honba,
-                    sticks: kyotaku,
-                    scores,
-                    dora: vec![known(dora_marker, "dora_marker")?],
-                    ura: Vec::new(),
-                    hands,
-                    draws: Default::default(),
-                    discards: Default::default(),
-                    outcome: Outcome::Wins(Vec::new()),
-                }));
+                self.round = Some(Open::new(
+                    Round {
+                        line,
+                        seats: self.seats,
+                        kyoku: k,
+                        honba,
+                        sticks: kyotaku,
+                        scores,
+                        dora: vec![known(dora_marker, "dora_marker")?],
+                        ura: Vec::new(),
+                        hands,
+                        draws: Default::default(),
+                        discards: Default::default(),
+                        outcome: Outcome::Wins(Vec::new()),
+                    },
+                    self.game.variant,
+                ));
                 Ok(())
             }
             Event::EndGame { .. } => {
@@ -305,7 +322,7 @@ impl Reader {
                     (true, None) => return Err("the round ends with neither hora nor ryukyoku".into()),
                     (false, Some(_)) => return Err("the round has both hora and ryukyoku".into()),
                 };
-                self.finished = Some(round);
+                self.finished = Some((round, open.unstated));
                 Ok(())
             }
             other => {

@@ -2,15 +2,19 @@
 //! (a `tsumogiri` discard as `60`, `reach` + `dahai` as `r..`, an open kan followed by `0`), and
 //! the round's end. Every event is checked for what the next ones rely on (seats 0-3, tiles
 //! known, a call naming the discard just made, a kan on a pon the seat holds). The extras are
-//! optional except what a replay checks: a `hora` needs its `deltas` and `yakus`.
+//! optional except what a replay checks: a `hora` needs its `deltas`; one without `yakus`
+//! (libriichi's) is scored when the round is whole ([`super::unlogged`]).
 
 use rinshan_engine::tile::{Tile, TileType};
+use rinshan_engine::Variant;
 
 use super::event::Event;
 use super::tile::Pai;
+use super::unlogged::unscored;
 use super::write::REASONS;
 use super::yaku::{hora_yaku, win, DRAGONS};
 use crate::tenhou::log::{Discard, Draw, LoggedDraw, LoggedWin, Rel, Round};
+use crate::tenhou::write::Scoring;
 
 /// A round being read.
 pub(super) struct Open {
@@ -27,6 +31,17 @@ pub(super) struct Open {
     kans: usize,
     /// Each seat's tiles by type, melds included (to tell the dragons of a `sangenpai` apart).
     held: [[u8; 34]; 4],
+    /// The rules the game is played under (its points texts follow their scoring).
+    variant: Variant,
+    /// Draws made so far, replacement draws included (the wall's end tells an exhaustive draw).
+    drawn: u32,
+    /// The seat whose draw was the last event.
+    just_drew: Option<usize>,
+    /// Riichi sticks put down this round (`reach_accepted`).
+    accepted: usize,
+    /// The `ryukyoku` named no reason (libriichi's): its kind was told from the round, and an
+    /// exhaustive draw's tenpai seats (or nagashi) are the engine's ([`super::unlogged`]).
+    pub(super) unstated: bool,
 }
 
 pub(super) fn actor_of(a: u8) -> Result<usize, String> {
@@ -55,7 +70,7 @@ pub(super) fn rel(me: usize, from: usize) -> Result<Rel, String> {
 }
 
 impl Open {
-    pub(super) fn new(round: Round) -> Open {
+    pub(super) fn new(round: Round, variant: Variant) -> Open {
         let held = std::array::from_fn(|s: usize| {
             let mut counts = [0u8; 34];
             for t in &round.hands[s] {
@@ -73,6 +88,11 @@ impl Open {
             last_given: None,
             kans: 0,
             held,
+            variant,
+            drawn: 0,
+            just_drew: None,
+            accepted: 0,
+            unstated: false,
         }
     }
 
@@ -124,10 +144,13 @@ impl Open {
 
     pub(super) fn play(&mut self, event: Event) -> Result<(), String> {
         let kind = event.kind();
+        let just_drew = self.just_drew.take();
         match event {
             Event::Tsumo { actor, pai } => {
                 let s = self.actor(actor)?;
                 let t = known(pai, "the tile drawn")?;
+                self.drawn += 1;
+                self.just_drew = Some(s);
                 self.last_discard = None;
                 self.last_draw[s] = Some(t);
                 self.take(s, t);
@@ -248,6 +271,7 @@ impl Open {
             }
             Event::ReachAccepted { actor, .. } => {
                 self.actor(actor)?;
+                self.accepted += 1;
             }
             Event::Hora {
                 actor,
@@ -270,18 +294,32 @@ impl Open {
                         .map(|p| known(p, "ura_markers"))
                         .collect::<Result<_, _>>()?;
                 }
-                let yakus = yakus.ok_or("hora without yakus: a replay checks every win's yaku")?;
+                let Some(yakus) = yakus else {
+                    // libriichi's hora: scored once the round is whole.
+                    self.wins.push(unscored(winner, from, pao, deltas));
+                    return Ok(());
+                };
                 // The tile won on, for a ron: the discard (or the kan tile robbed).
                 let won = if winner == from { None } else { self.last_given };
                 let yaku = hora_yaku(yakus, fan, || self.dragons(winner, won))?;
                 let dealer = winner == self.round.dealer();
-                self.wins.push(win(winner, from, pao, deltas, fu, fan, yaku, dealer));
+                let scoring = Scoring::of(self.variant);
+                self.wins
+                    .push(win(scoring, winner, from, pao, deltas, fu, fan, yaku, dealer));
             }
             Event::Ryukyoku {
                 reason,
                 tenpais,
                 deltas,
             } => {
+                let paid = deltas.is_some_and(|d| d.iter().any(|&x| x != 0));
+                if reason.is_none() && tenpais.is_none() {
+                    self.unstated = true;
+                    if !paid {
+                        self.draw = Some((self.unstated_draw(just_drew), None));
+                        return Ok(());
+                    }
+                }
                 let reason = reason.as_deref().unwrap_or("fanpai");
                 let mut kinds = REASONS.iter().filter(|(_, r)| *r == reason).map(|(k, _)| *k);
                 let kind = kinds
@@ -313,5 +351,31 @@ impl Open {
             _ => return Err(format!("{kind} is not an event of a round")),
         }
         Ok(())
+    }
+
+    /// The kind of a draw whose `ryukyoku` says neither why nor who was tenpai and pays nothing,
+    /// as libriichi writes every abortive draw (and an exhaustive one with no seat or every
+    /// seat tenpai), told from the round: `just_drew` is the seat whose draw came last.
+    fn unstated_draw(&mut self, just_drew: Option<usize>) -> LoggedDraw {
+        let wall = self.variant.wall();
+        let wall_draws = wall.live_end - wall.live_start;
+        match just_drew {
+            // libriichi deals the next draw before it ends the round on the fourth riichi stick;
+            // Tenhou's rules (and the log of the round here) end it before that draw.
+            Some(s) if self.accepted == 4 => {
+                if let Some(Draw::Tile(t)) = self.round.draws[s].pop() {
+                    let count = &mut self.held[s][t.kind().index()];
+                    *count = count.saturating_sub(1);
+                }
+                self.last_draw[s] = None;
+                self.drawn -= 1;
+                LoggedDraw::FourRiichi
+            }
+            Some(_) => LoggedDraw::Kyuushu,
+            // Which of no seat and every seat was tenpai: the engine's word ([`Open::unstated`]).
+            None if self.drawn >= wall_draws => LoggedDraw::NoTenpai,
+            None if self.kans >= 4 => LoggedDraw::FourKans,
+            None => LoggedDraw::FourWinds,
+        }
     }
 }

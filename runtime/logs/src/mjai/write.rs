@@ -369,6 +369,21 @@ fn hora(w: &LoggedWin, pai: Option<Tile>, ura: Option<Vec<Pai>>, seats: usize) -
         .map(|y| if let YakuHan::Han(h) = y.han { h } else { 0 })
         .sum();
     let yakuman = w.yaku.iter().any(|y| matches!(y.han, YakuHan::Yakuman(_)));
+    if w.computed {
+        // The log gave only these: what rinshan scored stays out, as the log was.
+        return Event::Hora {
+            actor: seat(w.winner),
+            target: seat(w.from),
+            pai: pai.map(Pai::known),
+            deltas: Some(w.deltas),
+            ura_markers: ura,
+            yakus: None,
+            fu: None,
+            fan: None,
+            hora_points: None,
+            pao: (w.pao != w.winner).then(|| seat(w.pao)),
+        };
+    }
     Event::Hora {
         actor: seat(w.winner),
         target: seat(w.from),

@@ -110,9 +110,10 @@ pub(super) fn hora_yaku(
 }
 
 /// A logged win from an MJAI `hora`: the points text as Tenhou writes it, rebuilt from the
-/// yaku, fu and han by the scoring kernel's rules.
+/// yaku, fu and han by the scoring kernel's rules of the game's rule set (`scoring`).
 #[allow(clippy::too_many_arguments)]
 pub(super) fn win(
+    scoring: Scoring,
     winner: usize,
     from: usize,
     pao: usize,
@@ -131,16 +132,14 @@ pub(super) fn win(
         .map(|y| if let YakuHan::Han(h) = y.han { h } else { 0 })
         .sum();
     let han = fan.unwrap_or(han_sum);
-    // MJAI logs play Tenhou's rules.
-    let red = Scoring::of(rinshan_engine::Variant::Red);
     let base = match (yakuman, fu) {
-        (0, Some(fu)) => red.base_points(han, fu, 0),
-        (0, None) => red.base_points(han.max(5), 30, 0),
-        (n, _) => red.base_points(0, 0, n),
+        (0, Some(fu)) => scoring.base_points(han, fu, 0),
+        (0, None) => scoring.base_points(han.max(5), 30, 0),
+        (n, _) => scoring.base_points(0, 0, n),
     };
     let limit = limit_of(base);
     let tsumo = winner == from;
-    let points = points_text(fu.unwrap_or(0), han, limit, red.payment(base, dealer, tsumo));
+    let points = points_text(fu.unwrap_or(0), han, limit, scoring.payment(base, dealer, tsumo));
     LoggedWin {
         deltas,
         winner,
@@ -152,5 +151,6 @@ pub(super) fn win(
         limit,
         points,
         yaku,
+        computed: false,
     }
 }

@@ -3,9 +3,9 @@
 //! before it. `rinshan observe` and the observation snapshots look at a log through these. The
 //! round is played under the game's own rules ([`Game::variant`]), and actions are its ids.
 
-use super::log::{round_name, Game};
+use super::log::{round_name, Game, Round};
 use super::plan::{plan, MoveIds};
-use rinshan_engine::env::{Config, Env};
+use rinshan_engine::env::{Config, Env, Mode};
 use rinshan_engine::generated::kernel::GameState;
 use rinshan_engine::{with_variant, Variant};
 
@@ -52,58 +52,74 @@ pub fn round_replay(game: &Game, round: usize) -> Result<(Vec<Position>, Option<
             game.rounds.len()
         ));
     };
-    let where_ = format!("{}: line {} ({})", game.path, r.line, round_name(r.kyoku, r.honba));
+    let mode = super::replay::mode_of(std::slice::from_ref(game));
+    play_round(&game.path, r, game.variant, mode, true)
+}
+
+/// How round `r` of the log `path` ends when the engine plays its decisions under `variant`
+/// (what a reader asks when the log leaves a win's yaku out).
+pub(crate) fn round_end(path: &str, r: &Round, variant: Variant, mode: Mode) -> Result<Option<RoundEnd>, String> {
+    play_round(path, r, variant, mode, false).map(|(_, end)| end)
+}
+
+/// Plays round `r`; `keep` keeps every position's state (a copy per decision, which a reader
+/// scoring the round's wins does without).
+fn play_round(
+    path: &str,
+    r: &Round,
+    variant: Variant,
+    mode: Mode,
+    keep: bool,
+) -> Result<(Vec<Position>, Option<RoundEnd>), String> {
+    let where_ = format!("{path}: line {} ({})", r.line, round_name(r.kyoku, r.honba));
     let p = plan(r).map_err(|e| format!("{where_}: {e}"))?;
     let mut env = Env::new(Config {
-        mode: super::replay::mode_of(std::slice::from_ref(game)),
+        mode,
         uma: Some([0; 4]),
         threads: Some(1),
-        ..Config::new(game.variant, 1)
+        ..Config::new(variant, 1)
     })
     .map_err(|e| e.to_string())?;
-    let from_red = MoveIds::new(game.variant);
-    let pass = with_variant!(game.variant, v => v::ACTION_PASS);
+    let from_red = MoveIds::new(variant);
+    let pass = with_variant!(variant, v => v::ACTION_PASS);
     env.reset().map_err(|e| e.to_string())?;
-    let deal = p.deal(r, game.variant).map_err(|e| format!("{where_}: {e}"))?;
+    let deal = p.deal(r, variant).map_err(|e| format!("{where_}: {e}"))?;
     env.deal(&[Some(deal)]).map_err(|e| e.to_string())?;
     let mut out = Vec::new();
     let mut next = 0;
+    let mut steps = 0;
     loop {
         let step = env.last().clone();
-        let state: GameState = env.game_states().map_err(|e| e.to_string())?.remove(0);
         let seat = step.current_player[0];
         let claim = step.legal_actions(0).any(|a| a == pass);
         let (action, what) = match p.moves.get(next) {
             Some(m) if m.seat == seat as usize && m.claim == claim => {
                 next += 1;
-                let action = from_red.get(m.action).ok_or_else(|| {
-                    format!(
-                        "{where_}: step {}: {} has no action for {}",
-                        out.len(),
-                        game.variant,
-                        m.what
-                    )
-                })?;
+                let action = from_red
+                    .get(m.action)
+                    .ok_or_else(|| format!("{where_}: step {steps}: {variant} has no action for {}", m.what))?;
                 (action, m.what.clone())
             }
             _ if claim => (pass, "pass".to_string()),
             Some(m) => {
                 return Err(format!(
-                    "{where_}: step {}: the log has seat {} {}, the engine asks seat {seat}",
-                    out.len(),
-                    m.seat,
-                    m.what
+                    "{where_}: step {steps}: the log has seat {} {}, the engine asks seat {seat}",
+                    m.seat, m.what
                 ))
             }
             None => break,
         };
-        out.push(Position {
-            step: out.len(),
-            seat,
-            action,
-            what,
-            state,
-        });
+        if keep {
+            let state: GameState = env.game_states().map_err(|e| e.to_string())?.remove(0);
+            out.push(Position {
+                step: steps,
+                seat,
+                action,
+                what,
+                state,
+            });
+        }
+        steps += 1;
         let after = env.step(&[action]).map_err(|e| e.to_string())?.clone();
         use rinshan_engine::env::events as e;
         if after.events[0] & e::ROUND_OVER != 0 || after.terminated[0] || after.illegal[0] {
@@ -115,7 +131,7 @@ pub fn round_replay(game: &Game, round: usize) -> Result<(Vec<Position>, Option<
                     step: after,
                     table,
                     uma,
-                    variant: game.variant,
+                    variant,
                 }),
             ));
         }

@@ -5,7 +5,8 @@
 //! dealt from the wall [`super::plan`] rebuilds ([`Env::deal`]), the logged decisions are played
 //! when the engine asks the logged seat (a claim prompt the log does not take is passed), and when
 //! the engine ends the round its outcome (winners, han, fu, yaku, draw kind), score changes and
-//! the table it moves on to (round, honba, sticks) are compared with the log.
+//! the table it moves on to (round, honba, sticks) are compared with the log (han, fu and yaku
+//! only where the log gives them: an MJAI log from libriichi gives none).
 
 mod compare;
 mod report;
@@ -27,7 +28,16 @@ pub fn mode_of(games: &[Game]) -> Mode {
 }
 
 fn mode_of_games(games: &[&Game]) -> Mode {
-    if games.iter().all(|g| g.rule.contains('東')) {
+    if games.iter().all(|g| mode_of_rule(&g.rule) == Mode::East) {
+        Mode::East
+    } else {
+        Mode::Half
+    }
+}
+
+/// The length of a game by its rule's name: East only for `東` (`鳳東喰赤`), else East and South.
+pub(crate) fn mode_of_rule(rule: &str) -> Mode {
+    if rule.contains('東') {
         Mode::East
     } else {
         Mode::Half

@@ -46,7 +46,7 @@ use super::log::Game;
 pub use game::{GameRecorder, InPlay};
 pub use json::game_text;
 pub(crate) use json::round_value;
-pub(crate) use outcome::{limit_of, points_text, win_yaku, Scoring};
+pub(crate) use outcome::{limit_of, points_text, win_yaku, yaku_list, Scoring};
 
 /// Why a game could not be recorded.
 #[derive(Debug, Clone, PartialEq)]

@@ -112,6 +112,10 @@ pub struct LoggedWin {
     pub points: String,
     /// The yaku in the log's order, dora last, by our names.
     pub yaku: Vec<Yaku>,
+    /// The log gives no yaku, fu or han (libriichi's `hora` has only the deltas): `yaku`, `fu`,
+    /// `han`, `limit` and `points` are rinshan's, scored by playing the round, and a replay
+    /// judges the win by its winner and score changes alone.
+    pub computed: bool,
 }
 
 /// How a round ended.
@@ -323,6 +327,7 @@ fn parse_win(deltas: &Value, info: &Value) -> Result<LoggedWin, String> {
         limit,
         points: points.to_string(),
         yaku,
+        computed: false,
     })
 }
 

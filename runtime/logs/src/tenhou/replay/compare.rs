@@ -171,6 +171,10 @@ pub(super) fn finish_round(run: &mut Run, step: &Step, i: usize, table: &Table, 
                     report.mismatches.push(m);
                     continue;
                 }
+                if w.computed {
+                    report.wins_yaku_not_logged += 1;
+                    continue;
+                }
                 match compare_win(run.variant, w, &table.wins[w.winner]) {
                     None => report.wins_matching += 1,
                     Some((log, ours)) => {

@@ -272,6 +272,7 @@ impl GameRecorder {
                     limit,
                     points: points_text(rec.fu, rec.han, limit, pay),
                     yaku: yaku_list(scoring.variant, &rec, seat_wind, round_wind),
+                    computed: false,
                 });
             }
             if !tsumo {

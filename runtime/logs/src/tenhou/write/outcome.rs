@@ -209,7 +209,7 @@ pub(crate) fn win_yaku(variant: Variant, rec: &WinRecord) -> Vec<Yaku> {
 }
 
 /// A win's yaku in the order Tenhou lists them, dora, red fives and ura last.
-pub(super) fn yaku_list(variant: Variant, rec: &WinRecord, seat_wind: usize, round_wind: usize) -> Vec<Yaku> {
+pub(crate) fn yaku_list(variant: Variant, rec: &WinRecord, seat_wind: usize, round_wind: usize) -> Vec<Yaku> {
     let mut yaku = win_yaku(variant, rec);
     yaku.sort_by_key(|y| tenhou_yaku(y.name, seat_wind, round_wind).map_or(usize::MAX, |(_, rank)| rank));
     yaku
