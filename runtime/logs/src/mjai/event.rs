@@ -132,7 +132,9 @@ pub enum Event {
         /// The four tiles.
         consumed: [Pai; 4],
     },
-    /// A North set aside (three players); the seat's next event is its replacement draw.
+    /// A North set aside (three players); the seat's next event is its replacement draw. The
+    /// three-player forks of Mortal and mjai-reviewer name it `nukidora`.
+    #[serde(alias = "nukidora")]
     Kita {
         /// The seat.
         actor: u8,

@@ -31,6 +31,8 @@ mod yaku;
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_field;
 
 pub use event::Event;
 pub use tile::Pai;

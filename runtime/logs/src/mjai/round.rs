@@ -39,6 +39,8 @@ pub(super) struct Open {
     just_drew: Option<usize>,
     /// Riichi sticks put down this round (`reach_accepted`).
     accepted: usize,
+    /// Every tile discarded this round, in order (four winds abort the round).
+    discarded: Vec<Tile>,
     /// The `ryukyoku` named no reason (libriichi's): its kind was told from the round, and an
     /// exhaustive draw's tenpai seats (or nagashi) are the engine's ([`super::unlogged`]).
     pub(super) unstated: bool,
@@ -92,6 +94,7 @@ impl Open {
             drawn: 0,
             just_drew: None,
             accepted: 0,
+            discarded: Vec::new(),
             unstated: false,
         }
     }
@@ -172,6 +175,7 @@ impl Open {
                 };
                 self.last_draw[s] = None;
                 self.last_discard = Some((s, t));
+                self.discarded.push(t);
                 self.last_given = Some(t);
                 let count = &mut self.held[s][t.kind().index()];
                 *count = count.saturating_sub(1);
@@ -372,10 +376,30 @@ impl Open {
                 LoggedDraw::FourRiichi
             }
             Some(_) => LoggedDraw::Kyuushu,
+            None if self.accepted == 4 => LoggedDraw::FourRiichi,
             // Which of no seat and every seat was tenpai: the engine's word ([`Open::unstated`]).
             None if self.drawn >= wall_draws => LoggedDraw::NoTenpai,
             None if self.kans >= 4 => LoggedDraw::FourKans,
-            None => LoggedDraw::FourWinds,
+            None if self.four_winds() => LoggedDraw::FourWinds,
+            // What else ends a round after a discard: three seats ron it.
+            None => LoggedDraw::TripleRon,
+        }
+    }
+
+    /// The round's only discards are four of one wind, and nobody called or declared a kan.
+    fn four_winds(&self) -> bool {
+        let wind = |t: &Tile| (27..31).contains(&t.kind().index());
+        let calls = (0..4).any(|s| self.round.draws[s].iter().any(|d| !matches!(d, Draw::Tile(_))));
+        match self.discarded.as_slice() {
+            [first, rest @ ..] => {
+                self.round.seats == 4
+                    && self.kans == 0
+                    && !calls
+                    && rest.len() == 3
+                    && wind(first)
+                    && rest.iter().all(|t| t.kind() == first.kind())
+            }
+            [] => false,
         }
     }
 }

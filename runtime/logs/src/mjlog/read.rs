@@ -444,6 +444,8 @@ impl State {
             let list = match (tag.get(&key), seat) {
                 (Some(list), _) => list,
                 (None, 0) => tag.need("hai")?,
+                // Tenhou writes `hai3=""` for three players' empty place; edited logs drop it.
+                (None, 3) if self.seats == 3 => "",
                 (None, _) => return Err(format!("no `{key}`")),
             };
             let mut hand: Vec<Tile> = numbers(list)?

@@ -209,3 +209,21 @@ fn what_rinshan_does_not_play_or_cannot_read_is_refused_by_name() {
     assert!(reds(&red) > 0);
     assert_eq!(reds(&plain), 0);
 }
+
+#[test]
+fn a_three_player_init_without_hai3_reads_as_its_empty_fourth_hand() {
+    // Edited logs drop the `hai3=""` Tenhou writes for three players' empty place.
+    let sanma = std::fs::read_to_string(format!("{DATA}/{SANMA}")).expect("reads");
+    let edited = sanma.replace(" hai3=\"\"", "");
+    assert_ne!(edited, sanma);
+    let game = |text: &str| parse_game("s.xml", text).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(game(&edited).rounds, game(&sanma).rounds);
+    // Four players' `hai3` is a hand: without it the log is refused.
+    let xml = std::fs::read_to_string(format!("{DATA}/2019021004gm-00a9-0000-e2f6516d.xml")).expect("reads");
+    let hai3 = xml.find(" hai3=\"").expect("a hai3");
+    let end = xml[hai3 + 7..].find('"').expect("its end") + hai3 + 8;
+    let message = parse_game("t.xml", &format!("{}{}", &xml[..hai3], &xml[end..]))
+        .expect_err("refused")
+        .to_string();
+    assert!(message.contains("no `hai3`"), "{message}");
+}

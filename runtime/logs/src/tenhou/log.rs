@@ -45,6 +45,8 @@ mod moves;
 mod result;
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_mjsoul;
 mod value;
 
 pub(crate) use moves::KITA;
@@ -544,7 +546,7 @@ fn parse_round(ctx: &mut Ctx, index: Option<usize>, v: &Value, seats: usize) -> 
         );
         return Err(ctx.err("dora", message));
     }
-    let outcome = result::parse_result(item(16)).map_err(|m| ctx.err("result", m))?;
+    let outcome = result::parse_result(item(16), seats).map_err(|m| ctx.err("result", m))?;
     if seats == 3 {
         let fourth = match &outcome {
             Outcome::Wins(wins) => wins

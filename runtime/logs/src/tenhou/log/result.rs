@@ -138,7 +138,7 @@ pub enum Outcome {
 /// where Tenhou lists a yakuhai before a wind or after sanankou, as its order there follows the
 /// hand). Spellings that other converters write come after Tenhou's own, so the first entry of a
 /// yaku is the one a writer uses.
-const YAKU: [(&str, &str); 56] = [
+const YAKU: [(&str, &str); 58] = [
     ("立直", "riichi"),
     ("両立直", "double_riichi"),
     ("一発", "ippatsu"),
@@ -196,7 +196,14 @@ const YAKU: [(&str, &str); 56] = [
     // Converters from other sites write these spellings.
     ("ダブル立直", "double_riichi"),
     ("国士無双13面", "kokushi_13"),
+    // Mahjong Soul's names for the yakuhai of winds, as converters of its games write them.
+    ("役牌:場風牌", "yakuhai_round_wind"),
+    ("役牌:自風牌", "yakuhai_seat_wind"),
 ];
+
+/// Mahjong Soul's yaku for the Norths set aside at three players (kita), which converters of
+/// its games write beside ドラ. Tenhou lists them as dora, and rinshan's scoring counts them so.
+const NORTH_DORA: &str = "抜きドラ";
 
 /// The wind names of the yakuhai of winds, East to North.
 const WINDS: [char; 4] = ['東', '南', '西', '北'];
@@ -247,7 +254,8 @@ pub(crate) fn tenhou_yaku(ours: &str, seat_wind: usize, round_wind: usize) -> Op
         .map(|(rank, (name, _))| (*name, rank))
 }
 
-pub(super) fn parse_result(v: &Value) -> Result<Outcome, String> {
+/// The result of a round at a table of `seats`.
+pub(super) fn parse_result(v: &Value, seats: usize) -> Result<Outcome, String> {
     let items = v.as_array().ok_or_else(|| format!("{} is not a list", show(v)))?;
     let (kind, rest) = items.split_first().ok_or("is empty")?;
     let kind = kind
@@ -261,7 +269,7 @@ pub(super) fn parse_result(v: &Value) -> Result<Outcome, String> {
             ));
         }
         let wins = rest.chunks(2).enumerate().map(|(i, pair)| match pair {
-            [deltas, info] => parse_win(deltas, info).map_err(|m| format!("win {i}: {m}")),
+            [deltas, info] => parse_win(deltas, info, seats).map_err(|m| format!("win {i}: {m}")),
             _ => Err(format!("win {i} has no info")),
         });
         return wins.collect::<Result<Vec<LoggedWin>, String>>().map(Outcome::Wins);
@@ -282,7 +290,7 @@ pub(super) fn parse_result(v: &Value) -> Result<Outcome, String> {
     Ok(Outcome::Draw { kind, deltas })
 }
 
-fn parse_win(deltas: &Value, info: &Value) -> Result<LoggedWin, String> {
+fn parse_win(deltas: &Value, info: &Value, seats: usize) -> Result<LoggedWin, String> {
     let deltas = numbers::<4>(deltas).map_err(|m| format!("deltas: {m}"))?;
     let items = info
         .as_array()
@@ -303,6 +311,7 @@ fn parse_win(deltas: &Value, info: &Value) -> Result<LoggedWin, String> {
         .skip(4)
         .map(parse_yaku)
         .collect::<Result<Vec<Yaku>, String>>()?;
+    let yaku = north_dora_counted(yaku, seats)?;
     check_yaku(&yaku)?;
     if let Some(han) = han {
         let sum: u32 = yaku
@@ -329,6 +338,36 @@ fn parse_win(deltas: &Value, info: &Value) -> Result<LoggedWin, String> {
         yaku,
         computed: false,
     })
+}
+
+/// The yaku with Mahjong Soul's [`NORTH_DORA`] added to the dora (at three players only).
+fn north_dora_counted(yaku: Vec<Yaku>, seats: usize) -> Result<Vec<Yaku>, String> {
+    let (north, mut rest): (Vec<Yaku>, Vec<Yaku>) = yaku.into_iter().partition(|y| y.name == NORTH_DORA);
+    if north.is_empty() {
+        return Ok(rest);
+    }
+    if seats != 3 {
+        return Err(format!(
+            "{NORTH_DORA} (the dora of Norths set aside) at four players, who keep North"
+        ));
+    }
+    let mut added = 0u32;
+    for y in &north {
+        let YakuHan::Han(h) = y.han else {
+            return Err(format!("{NORTH_DORA} worth a yakuman"));
+        };
+        added = added.saturating_add(h);
+    }
+    match rest.iter_mut().find(|y| y.name == "dora") {
+        Some(Yaku {
+            han: YakuHan::Han(h), ..
+        }) => *h = h.saturating_add(added),
+        _ => rest.push(Yaku {
+            name: "dora",
+            han: YakuHan::Han(added),
+        }),
+    }
+    Ok(rest)
 }
 
 /// Fu, han and limit of a points text: `30符4飜7700点`, `30符2飜500-1000点`, `40符3飜2600点∀`
@@ -413,6 +452,9 @@ fn parse_yaku(v: &Value) -> Result<Yaku, String> {
             _ => return Err(format!("yaku {text:?}: {value:?} is neither N飜 nor 役満")),
         },
     };
-    let name = yaku_name(name).ok_or_else(|| format!("unknown yaku name {name:?} in {text:?}"))?;
+    let name = match name {
+        NORTH_DORA => NORTH_DORA,
+        _ => yaku_name(name).ok_or_else(|| format!("unknown yaku name {name:?} in {text:?}"))?,
+    };
     Ok(Yaku { name, han })
 }
