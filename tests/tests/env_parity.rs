@@ -3,7 +3,8 @@
 //! the current player at every step; those, the analysis tier and the oracle of every seat every
 //! 25 steps) at every step of whole games, and identical states at the end. Hero mode (built-in
 //! agents playing three seats inside a step) is compared the same way, and so are illegal action
-//! ids of any size (the GPU's step reads hero mode's flags from an id's high bits).
+//! ids of any size (the GPU's step reads hero mode's flags from an id's high bits). Each variant's
+//! rule scenarios (tests/data/scenarios.toml) then play on both backends too.
 
 use rinshan_engine::agents::Agent;
 use rinshan_engine::env::{Backend, Config, Env, Mode, Observer};
@@ -129,6 +130,8 @@ fn parity(variant: Variant, batch: usize) {
         gpu.adapter().unwrap_or_default(),
         started.elapsed().as_secs_f64()
     );
+    // The rule scenarios on the same device, its pipelines compiled (minutes of one core on lavapipe).
+    crate::scenarios::on_both_backends(variant, gpu.into_gpu().expect("a GPU env"));
 }
 
 #[test]

@@ -9,8 +9,84 @@
 
 use std::collections::BTreeSet;
 
-use rinshan_engine::Variant;
+use rinshan_engine::env::{Deal, Mode};
+use rinshan_engine::{Tile, Variant};
 use rinshan_tests::scenario::{build_wall, load, Actions, Expect, Scenario};
+
+/// What the native run of a scenario dealt, played and saw, to play it again on the [`Env`] of
+/// each backend (`rule_scenarios_on_both_backends`).
+///
+/// [`Env`]: rinshan_engine::env::Env
+struct Trace {
+    deal: Deal,
+    mode: Mode,
+    uma: [i32; 4],
+    penalty: f32,
+    actions: Vec<u32>,
+    /// The view after each action.
+    seen: Vec<Seen>,
+    /// Round, dealer, honba, sticks and scores after the last action.
+    table: (u32, u32, u32, u32, [i32; 4]),
+}
+
+/// The parts of a step's view that both the kernel's `StepView` and the env's `Step` carry.
+#[derive(Debug, Clone, PartialEq)]
+struct Seen {
+    current_player: u32,
+    mask: [u32; 3],
+    rewards: [f32; 4],
+    terminated: bool,
+    illegal: bool,
+    events: u32,
+    winners: u32,
+    deal_in: u32,
+    yaku: [u32; 2],
+}
+
+impl Seen {
+    fn of(v: &rinshan_engine::generated::kernel::StepView) -> Seen {
+        Seen {
+            current_player: v.current_player,
+            mask: v.mask,
+            rewards: v.rewards,
+            terminated: v.terminated != 0,
+            illegal: v.illegal != 0,
+            events: v.events,
+            winners: v.winners,
+            deal_in: v.deal_in,
+            yaku: v.yaku,
+        }
+    }
+
+    fn of_env(step: &rinshan_engine::env::Step, i: usize) -> Seen {
+        Seen {
+            current_player: step.current_player[i],
+            mask: step.legal_action_mask[i],
+            rewards: step.rewards[i],
+            terminated: step.terminated[i],
+            illegal: step.illegal[i],
+            events: step.events[i],
+            winners: step.winners[i],
+            deal_in: step.deal_in[i],
+            yaku: step.yaku[i],
+        }
+    }
+}
+
+/// The `events` bits of a step that ends a round.
+const ROUND_OVER: u32 = rinshan_engine::env::events::ROUND_OVER;
+
+/// A scenario's wall as tiles (the places past a three-player wall's 108 are not read).
+fn tiles_of(wall: &[u32; 136]) -> Result<[Tile; 136], String> {
+    let mut out = [Tile::from_value(0).ok_or("no tile of value 0")?; 136];
+    for (o, &v) in out.iter_mut().zip(wall) {
+        *o = u8::try_from(v)
+            .ok()
+            .and_then(Tile::from_value)
+            .ok_or(format!("no tile of value {v}"))?;
+    }
+    Ok(out)
+}
 
 /// Scenarios where the engine disagrees with the rules (see the comment of each entry). They are
 /// run and reported, but do not fail the test.
@@ -49,7 +125,7 @@ fn close(a: f64, b: f64) -> bool {
 
 macro_rules! runner {
     ($fn_name:ident, $v:ident, $variant:ident) => {
-        fn $fn_name(sc: &Scenario) -> Result<(), String> {
+        fn $fn_name(sc: &Scenario) -> Result<Trace, String> {
             use rinshan_engine::generated::$v as k;
             let acts = Actions {
                 blocks: k::host::ACTION_BLOCKS.to_vec(),
@@ -86,6 +162,22 @@ macro_rules! runner {
                     s.sticks = x;
                 }
             }
+            let mut trace = Trace {
+                deal: Deal {
+                    round: s.round,
+                    dealer: s.dealer,
+                    honba: s.honba,
+                    sticks: s.sticks,
+                    scores: s.scores,
+                    wall: tiles_of(&wall)?,
+                },
+                mode: [Mode::Single, Mode::East, Mode::Half][mode as usize],
+                uma: sc.uma.unwrap_or([0; 4]),
+                penalty: sc.penalty.unwrap_or(-1.0),
+                actions: Vec::new(),
+                seen: Vec::new(),
+                table: (0, 0, 0, 0, [0; 4]),
+            };
             let legal_of = |view: &rinshan_engine::generated::kernel::StepView| -> Vec<u32> {
                 (0..k::NUM_ACTIONS)
                     .filter(|a| view.mask[(a / 32) as usize] >> (a % 32) & 1 == 1)
@@ -127,6 +219,8 @@ macro_rules! runner {
                         };
                         k::game_step(&mut s, a);
                         last = k::game_view(s);
+                        trace.actions.push(a);
+                        trace.seen.push(Seen::of(&last));
                         for p in 0..4 {
                             total[p] += f64::from(last.rewards[p]);
                         }
@@ -180,6 +274,8 @@ macro_rules! runner {
                 }
                 k::game_step(&mut s, id);
                 last = k::game_view(s);
+                trace.actions.push(id);
+                trace.seen.push(Seen::of(&last));
                 if (last.illegal != 0) != step.illegal {
                     return Err(format!("{at}: the kernel's illegal flag is {}", last.illegal));
                 }
@@ -288,8 +384,9 @@ macro_rules! runner {
                     errors.push(format!("illegal {}, expected {want}", last.illegal));
                 }
             }
+            trace.table = (s.round, s.dealer, s.honba, s.sticks, s.scores);
             if errors.is_empty() {
-                Ok(())
+                Ok(trace)
             } else {
                 Err(format!("after the last step: {}", errors.join("; ")))
             }
@@ -305,7 +402,7 @@ runner!(run_wrc, wrc, Wrc);
 runner!(run_sanma, sanma, Sanma);
 runner!(run_mjsoul_sanma, mjsoul_sanma, MjsoulSanma);
 
-fn run(sc: &Scenario) -> Result<(), String> {
+fn run(sc: &Scenario) -> Result<Trace, String> {
     match sc.variant.as_str() {
         "red" => run_red(sc),
         "no_red" => run_no_red(sc),
@@ -343,8 +440,8 @@ fn rule_scenarios() {
     for sc in &scenarios {
         let known = KNOWN_FAILING.iter().find(|(n, _)| *n == sc.name);
         match (run(sc), known) {
-            (Ok(()), None) => passed += 1,
-            (Ok(()), Some(_)) => {
+            (Ok(_), None) => passed += 1,
+            (Ok(_), Some(_)) => {
                 passed += 1;
                 eprintln!(
                     "NOTE: `{}` is in KNOWN_FAILING but passes now: take it off the list",
@@ -364,6 +461,86 @@ fn rule_scenarios() {
         failures.len(),
         failures.join("\n")
     );
+}
+
+/// Every scenario of `variant` again on the `Env` of both backends, on the GPU device of that
+/// variant's parity test (`env_parity`), whose step and reset pipelines are compiled already: the
+/// rounds dealt from the scenarios' walls and tables (`Env::deal`), the actions the native run
+/// played, the scenarios of each mode and uma stepped as one batch. The CPU env must see what the
+/// native run saw after every action (and its table at the end), and the GPU env the same steps as
+/// the CPU env and the same states at the end, so each scenario's expectations, checked on the
+/// native run, hold on the GPU too. Envs whose script has ended are given action 0 on both
+/// backends alike.
+pub(crate) fn on_both_backends(variant: Variant, mut gpu: rinshan_engine::gpu::Gpu) {
+    type Group = Vec<(String, Trace)>;
+    let mut groups: std::collections::BTreeMap<(usize, [i32; 4], u32), Group> = Default::default();
+    for sc in load() {
+        let known = KNOWN_FAILING.iter().any(|(n, _)| *n == sc.name);
+        if known || sc.variant.parse::<Variant>().ok() != Some(variant) {
+            continue;
+        }
+        let trace = run(&sc).unwrap_or_else(|e| panic!("`{}`: {e}", sc.name));
+        let key = (trace.mode as usize, trace.uma, trace.penalty.to_bits());
+        groups.entry(key).or_default().push((sc.name.clone(), trace));
+    }
+    let mut checked = 0;
+    for traces in groups.into_values() {
+        let first = &traces[0].1;
+        let config = rinshan_engine::env::Config {
+            mode: first.mode,
+            uma: Some(first.uma),
+            penalty: Some(first.penalty),
+            threads: Some(1),
+            ..rinshan_engine::env::Config::new(variant, traces.len())
+        };
+        let mut cpu = rinshan_engine::env::Env::new(config.clone()).expect("cpu env");
+        let mut on_gpu = rinshan_engine::env::Env::with_gpu(config, gpu).expect("gpu env");
+        cpu.reset().expect("cpu reset");
+        on_gpu.reset().expect("gpu reset");
+        let deals: Vec<Option<Deal>> = traces.iter().map(|(_, t)| Some(t.deal.clone())).collect();
+        let c = cpu.deal(&deals).expect("cpu deal").clone();
+        let g = on_gpu.deal(&deals).expect("gpu deal").clone();
+        assert_eq!(c, g, "{variant}: the deals differ between the backends");
+        let longest = traces.iter().map(|(_, t)| t.actions.len()).max().unwrap_or(0);
+        for k in 0..longest {
+            let actions: Vec<u32> = traces
+                .iter()
+                .map(|(_, t)| t.actions.get(k).copied().unwrap_or(0))
+                .collect();
+            let c = cpu.step(&actions).expect("cpu step").clone();
+            let g = on_gpu.step(&actions).expect("gpu step").clone();
+            assert_eq!(c, g, "{variant}: step {k} differs between the backends");
+            for (i, (name, t)) in traces.iter().enumerate() {
+                // The next round's wall comes from each game's seed, which the env's and the native
+                // run's differ in: the native run is followed up to the first round that ends with
+                // the game going on, but for the new hand's legal actions.
+                let before = &t.seen[..k.min(t.seen.len())];
+                if before.iter().any(|v| v.events & ROUND_OVER != 0 && !v.terminated) {
+                    continue;
+                }
+                if let Some(seen) = t.seen.get(k) {
+                    let mut got = Seen::of_env(&c, i);
+                    if seen.events & ROUND_OVER != 0 && !seen.terminated {
+                        got.mask = seen.mask;
+                    }
+                    assert_eq!(&got, seen, "`{name}`: step {k}: the env differs from the kernel");
+                }
+                if k + 1 == t.actions.len() {
+                    let table = &cpu.tables().expect("tables")[i];
+                    let got = (table.round, table.dealer, table.honba, table.sticks, table.scores);
+                    assert_eq!(got, t.table, "`{name}`: the table after the last step");
+                    checked += 1;
+                }
+            }
+        }
+        assert!(
+            cpu.states_words().expect("cpu states") == on_gpu.states_words().expect("gpu states"),
+            "{variant}: the states differ between the backends at the end"
+        );
+        gpu = on_gpu.into_gpu().expect("a GPU env gives its device back");
+    }
+    assert!(checked > 0, "{variant}: no scenario");
+    eprintln!("{variant}: {checked} scenarios played alike on the kernel, the CPU env and the GPU env");
 }
 
 fn tiny(hands: [&str; 4]) -> Scenario {

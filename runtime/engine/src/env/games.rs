@@ -185,6 +185,16 @@ impl Env {
         })
     }
 
+    /// The GPU device of a GPU env, with every pipeline it compiled, to build another env on (of
+    /// another mode, uma or batch) without compiling them again: on a software adapter a variant's
+    /// pipelines take minutes of one core. `None` on the CPU backend.
+    pub fn into_gpu(self) -> Option<Gpu> {
+        match self.backing {
+            Backing::Gpu(gpu) => Some(gpu.gpu),
+            Backing::Cpu(_) => None,
+        }
+    }
+
     /// Number of action ids of the variant (red 87, no-red 79); masks have 96 bits.
     pub fn num_actions(&self) -> u32 {
         self.num_actions

@@ -86,7 +86,7 @@ struct Pass {
 }
 
 pub(crate) struct GpuEnv {
-    gpu: Gpu,
+    pub(super) gpu: Gpu,
     batch: usize,
     state_bytes: u64,
     view_bytes: u64,
