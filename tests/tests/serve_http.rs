@@ -330,6 +330,53 @@ async fn a_wrc_game_is_logged_under_its_rules() {
     assert_eq!((game.variant, game.red_fives), (rinshan_engine::Variant::Wrc, false));
 }
 
+/// The page asks for the wind a person starts as, not a seat: the seed draws the first dealer, so
+/// "seat 0" sat South in one game and North in another. Whatever the seed, East deals East 1 and
+/// West sits two turns after the dealer; the agents follow the person in turn order.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_person_starts_as_the_wind_they_chose() {
+    let mut dealers = std::collections::BTreeSet::new();
+    for seed in 1..=6u64 {
+        let app = app(Limits {
+            fixed_seed: Some(seed),
+            ..Limits::default()
+        });
+        for (variant, table, wind) in [
+            ("red", 4, 0),
+            ("red", 4, 1),
+            ("red", 4, 3),
+            ("sanma", 3, 0),
+            ("sanma", 3, 2),
+        ] {
+            let agents = &["rule", "greedy", "defensive"][..table - 1];
+            // Agents that wait 10 s: the game is still at its first decision when looked at.
+            let body = json!({"variant": variant, "mode": "east", "wind": wind, "agents": agents, "delay_ms": 10000});
+            let v = new_game(&app, body.clone()).await;
+            assert_eq!(v["step"], 0, "{v}");
+            let first = v["current"].as_u64().expect("the dealer to move") as usize;
+            let seat = v["seat"].as_u64().expect("the person's seat") as usize;
+            assert_eq!(seat, (first + wind) % table, "seed {seed}, {body}: {v}");
+            for (k, agent) in agents.iter().enumerate() {
+                let name = v["names"][(seat + 1 + k) % table].as_str().unwrap_or_default();
+                assert!(
+                    name.starts_with(agent),
+                    "seed {seed}, {body}: turn {k} after the person: {v}"
+                );
+            }
+            if variant == "red" {
+                dealers.insert(first);
+            }
+            let id = v["id"].as_str().expect("an id");
+            let (status, _) = send(&app, Method::DELETE, &format!("/api/games/{id}"), None, false).await;
+            assert_eq!(status, StatusCode::NO_CONTENT);
+        }
+    }
+    assert!(
+        dealers.len() > 1,
+        "the seeds drew one first dealer ({dealers:?}): nothing tells a wind from a seat"
+    );
+}
+
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn every_refusal_has_its_status_and_a_message() {
     let app = app(Limits {
@@ -358,6 +405,14 @@ async fn every_refusal_has_its_status_and_a_message() {
         (
             json!({"variant": "sanma", "seat": 3, "agents": ["rule", "rule"]}),
             "seat 3: sanma's seats are 0..2",
+        ),
+        (
+            json!({"variant": "sanma", "wind": 3, "agents": ["rule", "rule"]}),
+            "wind 3: sanma's winds are East, South, West",
+        ),
+        (
+            json!({"seat": 0, "wind": 0, "agents": ["rule", "rule", "rule"]}),
+            "a seat or a wind, not both",
         ),
         (
             json!({"mode": "long", "agents": ["rule", "rule", "rule", "rule"]}),
@@ -394,6 +449,10 @@ async fn every_refusal_has_its_status_and_a_message() {
     for (body, words) in [
         (
             json!({"seat": 0, "agents": ["rule", "rule", "rule"], "seed": "5"}),
+            "takes no seed",
+        ),
+        (
+            json!({"wind": 0, "agents": ["rule", "rule", "rule"], "seed": "5"}),
             "takes no seed",
         ),
         (

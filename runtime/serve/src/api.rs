@@ -18,7 +18,7 @@ use serde_json::{json, Value};
 
 use super::extract::{ApiError, Client, Json, Path, Query, Text};
 use super::pages;
-use super::session::{Opponent, Refusal, Session, Setup};
+use super::session::{first_dealer, Opponent, Refusal, Session, Setup};
 use super::store::{Limits, Refused, Store};
 use rinshan_engine::agents::Agent;
 use rinshan_engine::env::Mode;
@@ -97,10 +97,15 @@ struct NewGame {
     variant: String,
     #[serde(default = "default_mode")]
     mode: String,
-    /// The person's seat; absent or null: four agents (spectating).
+    /// The person's seat (the engine's seat number; the seed draws which seat deals first, so it
+    /// says nothing of the person's wind). Absent or null, as `wind`: agents only (spectating).
     seat: Option<u32>,
-    /// Three agents (the other seats in seat order) with a seat, four without: built-in ones by
-    /// name, the server's MJAI bots as `mjai:NAME`.
+    /// The wind the person starts as instead of a seat: 0 = East (they deal East 1), 1 = South,
+    /// 2 = West, 3 = North (four players). The server seats them from the seed's first dealer.
+    wind: Option<u32>,
+    /// One agent per other seat with a person, one per seat without: built-in ones by name, the
+    /// server's MJAI bots as `mjai:NAME`. With `wind` they sit in turn order after the person
+    /// (the seat to their right first); otherwise in the other seats from seat 0 on.
     agents: Vec<String>,
     /// A spectated game's seed, as a string (a JavaScript number loses digits above 2^53); a game
     /// with a person takes none: the server draws it from the OS.
@@ -129,12 +134,13 @@ where
 
 /// The seed of a new game: the server's fixed one (tests), the spectator's, or the OS's.
 fn seed_of(g: &NewGame, limits: &Limits) -> Result<u64, ApiError> {
-    match (&g.seed, g.seat, limits.fixed_seed) {
-        (Some(_), Some(_), _) => Err(unprocessable(
+    let person = g.seat.is_some() || g.wind.is_some();
+    match (&g.seed, person, limits.fixed_seed) {
+        (Some(_), true, _) => Err(unprocessable(
             "a game with a person takes no seed (anyone who knew it would know every hand); the game \
              shows its seed once it is over",
         )),
-        (Some(text), None, _) => text
+        (Some(text), false, _) => text
             .trim()
             .parse()
             .map_err(|_| unprocessable(format!("seed {text:?}: a whole number 0..2^64, as a string"))),
@@ -144,6 +150,9 @@ fn seed_of(g: &NewGame, limits: &Limits) -> Result<u64, ApiError> {
         }
     }
 }
+
+/// The winds a person may start as, by number.
+const WINDS: [&str; 4] = ["East", "South", "West", "North"];
 
 /// How a new game names one of the server's MJAI bots among its agents.
 const MJAI: &str = "mjai:";
@@ -168,42 +177,69 @@ fn setup(g: NewGame, limits: &Limits) -> Result<Setup, ApiError> {
     let table = variant.seats() as usize;
     let mode: Mode = parse("mode", &g.mode)?;
     let agents: Vec<Opponent> = g.agents.iter().map(|a| opponent(a, limits)).collect::<Result<_, _>>()?;
-    let want = table - usize::from(g.seat.is_some());
+    let person = g.seat.is_some() || g.wind.is_some();
+    let want = table - usize::from(person);
     if agents.len() != want {
         return Err(unprocessable(format!(
             "{} agents given: a game of {variant} {} needs {want}",
             agents.len(),
-            if g.seat.is_some() {
-                "with a person"
-            } else {
-                "to spectate"
-            }
+            if person { "with a person" } else { "to spectate" }
         )));
     }
-    let mut seats: [Option<Opponent>; 4] = Default::default();
-    let mut rest = agents.into_iter();
-    for (p, s) in seats.iter_mut().enumerate() {
-        match g.seat {
-            Some(h) if h as usize >= table => {
-                return Err(unprocessable(format!(
-                    "seat {h}: {variant}'s seats are 0..{}",
-                    table - 1
-                )))
-            }
-            // The seat no one sits at (three players) is an agent that is never asked.
-            _ if p >= table => *s = Some(Opponent::Agent(Agent::Random)),
-            Some(h) if h as usize == p => {}
-            _ => *s = rest.next(),
-        }
+    if let Some(h) = g.seat.filter(|&h| h as usize >= table) {
+        return Err(unprocessable(format!(
+            "seat {h}: {variant}'s seats are 0..{}",
+            table - 1
+        )));
     }
     if g.delay_ms > 10_000 {
         return Err(unprocessable(format!("delay_ms {}: at most 10000", g.delay_ms)));
+    }
+    let seed = seed_of(&g, limits)?;
+    let human = match (g.seat, g.wind) {
+        (Some(_), Some(_)) => {
+            return Err(unprocessable(
+                "a seat or a wind, not both: the seed draws the first dealer, so a seat fixes no wind",
+            ))
+        }
+        (None, Some(w)) if w as usize >= table => {
+            return Err(unprocessable(format!(
+                "wind {w}: {variant}'s winds are {} (0..{})",
+                WINDS[..table].join(", "),
+                table - 1
+            )))
+        }
+        (None, Some(w)) => {
+            let first =
+                first_dealer(variant, mode, seed).map_err(|e| ApiError(StatusCode::INTERNAL_SERVER_ERROR, e))?;
+            Some((first + w) % table as u32)
+        }
+        (seat, None) => seat,
+    };
+    let mut seats: [Option<Opponent>; 4] = Default::default();
+    let mut rest = agents.into_iter();
+    // With a wind the seat numbers mean nothing to the person: the agents sit in turn order after
+    // them (the seat to their right first). With a seat they fill the other seats from seat 0 on,
+    // as this API always did.
+    let first_agent = match (g.wind, human) {
+        (Some(_), Some(h)) => (h as usize + 1) % table,
+        _ => 0,
+    };
+    for k in 0..table {
+        let p = (first_agent + k) % table;
+        if Some(p as u32) != human {
+            seats[p] = rest.next();
+        }
+    }
+    // The seat no one sits at (three players) is an agent that is never asked.
+    for s in seats.iter_mut().skip(table) {
+        *s = Some(Opponent::Agent(Agent::Random));
     }
     Ok(Setup {
         variant,
         mode,
         seats,
-        seed: seed_of(&g, limits)?,
+        seed,
         delay: Duration::from_millis(g.delay_ms),
     })
 }

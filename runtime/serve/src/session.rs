@@ -118,20 +118,37 @@ fn err(e: impl std::fmt::Display) -> String {
     e.to_string()
 }
 
+/// The env of one game, dealt from `seed`.
+fn dealt(variant: Variant, mode: Mode, seed: u64) -> Result<Env, String> {
+    let mut env = Env::new(Config {
+        mode,
+        seed,
+        threads: Some(1),
+        ..Config::new(variant, 1)
+    })
+    .map_err(err)?;
+    env.reset().map_err(err)?;
+    Ok(env)
+}
+
+/// The seat that deals East 1 of the game `seed` deals: the seed draws it, so a person who asks
+/// for a wind (East = deal first) is seated from it before the game is made.
+pub fn first_dealer(variant: Variant, mode: Mode, seed: u64) -> Result<u32, String> {
+    let env = dealt(variant, mode, seed)?;
+    let mut states = env.game_states().map_err(err)?;
+    states
+        .pop()
+        .map(|s| s.dealer)
+        .ok_or_else(|| "the env holds no game".to_string())
+}
+
 impl Session {
     /// A new game, dealt.
     pub fn new(setup: Setup) -> Result<Session, String> {
         if setup.seats.iter().filter(|s| s.is_none()).count() > 1 {
             return Err("at most one seat can be played by a person".into());
         }
-        let mut env = Env::new(Config {
-            mode: setup.mode,
-            seed: setup.seed,
-            threads: Some(1),
-            ..Config::new(setup.variant, 1)
-        })
-        .map_err(err)?;
-        env.reset().map_err(err)?;
+        let env = dealt(setup.variant, setup.mode, setup.seed)?;
         let bot_seats = setup.seats.clone().map(|s| match s {
             Some(Opponent::Bot(b)) => Some(b),
             _ => None,

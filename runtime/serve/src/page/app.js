@@ -57,10 +57,11 @@ function fillVariants(names, descriptions, seats) {
 function fitSeats(n) {
   const want = PAGE === "play" ? n - 1 : n;
   document.querySelectorAll("select.agent").forEach((a, i) => { a.hidden = a.disabled = i >= want; });
-  const seat = document.querySelector("select[name=seat]");
-  if (!seat) return;
-  seat.querySelectorAll("option").forEach((o) => { o.hidden = o.disabled = Number(o.value) >= n; });
-  if (Number(seat.value) >= n) seat.value = "0";
+  // Three players have no North.
+  const wind = document.querySelector("select[name=wind]");
+  if (!wind) return;
+  wind.querySelectorAll("option").forEach((o) => { o.hidden = o.disabled = Number(o.value) >= n; });
+  if (Number(wind.value) >= n) wind.value = "0";
 }
 
 function fillAgents(names) {
@@ -86,7 +87,8 @@ async function start(ev) {
     agents: f.getAll("agent"),
     delay_ms: Number(f.get("delay")),
   };
-  if (PAGE === "play") body.seat = Number(f.get("seat"));
+  // The wind, not a seat: the seed draws the first dealer, so a seat number fixes no wind.
+  if (PAGE === "play") body.wind = Number(f.get("wind"));
   // A seed travels as a string: a JavaScript number loses digits above 2^53.
   if (f.get("seed")) body.seed = String(f.get("seed")).trim();
   try {
