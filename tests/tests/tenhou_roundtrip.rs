@@ -209,6 +209,13 @@ fn rule_set_round_trip(variant: Variant, seed: u64) -> (BTreeMap<&'static str, u
         "{first}"
     );
     round_trip(&games);
+    // As MJAI too: its start_game names the rule set, so each game reads back under it.
+    for (n, g) in games.iter().enumerate() {
+        let mjai = mjai_text(g).unwrap_or_else(|e| panic!("{e}"));
+        let read = parse_mjai(&format!("game-{n}.mjson"), &mjai).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(read.variant, variant, "game {n}");
+        assert_eq!(game_text(&read), game_text(g), "game {n}");
+    }
     (counts, games)
 }
 

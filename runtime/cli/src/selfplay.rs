@@ -45,7 +45,7 @@ pub struct Args {
     mjai: MjaiArgs,
     /// Also write each counted game as DIR/game-<n>.json (n = 1..games), a tenhou.net/6 log that
     /// `rinshan replay` replays under the game's rule set (or .mjson, see --export-format, which
-    /// cannot name the rule set: replay those with --variant). East or half games, CPU backend only (the games' states are read after
+    /// names it too). East or half games, CPU backend only (the games' states are read after
     /// every step)
     #[arg(long, value_name = "DIR")]
     export: Option<PathBuf>,

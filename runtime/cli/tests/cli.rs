@@ -540,8 +540,8 @@ fn selfplay_exports_games_that_replay() {
     std::fs::remove_dir_all(&root).ok();
 }
 
-/// `replay --variant` plays logs that do not name their rule set (MJAI logs, a converted Mahjong
-/// Soul log) under the rule set given: M-League games without their name disagree with Tenhou's rules
+/// `replay --variant` plays logs that do not name their rule set (a converted Mahjong Soul log)
+/// under the rule set given: M-League games without their name disagree with Tenhou's rules
 /// and agree with M-League's; a log with red fives is refused for a rule set without them.
 #[test]
 fn replay_under_a_rule_set_the_logs_do_not_name() {
@@ -567,11 +567,11 @@ fn replay_under_a_rule_set_the_logs_do_not_name() {
     assert_eq!(as_red["all_agree"], false, "{as_red}");
     let as_mleague = json(&rinshan(&["replay", &path(&unnamed), "--variant", "mleague", "--json"]));
     assert_eq!(as_mleague["all_agree"], true, "{as_mleague}");
-    // MJAI cannot name the rule set: the same games as MJAI replay under it when it is given.
+    // MJAI names it too (start_game's "variant"): the same games as MJAI replay under it as they are.
     let mjai = root.join("mjai");
     let out = rinshan(&[&args[..], &["--export", &path(&mjai), "--export-format", "mjai"]].concat());
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    let as_mleague = json(&rinshan(&["replay", &path(&mjai), "--variant", "mleague", "--json"]));
+    let as_mleague = json(&rinshan(&["replay", &path(&mjai), "--json"]));
     assert_eq!(as_mleague["all_agree"], true, "{as_mleague}");
     let out = rinshan(&["replay", &path(&unnamed), "--variant", "wrc"]);
     assert_eq!(out.status.code(), Some(2));

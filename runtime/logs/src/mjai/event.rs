@@ -47,6 +47,15 @@ pub enum Event {
         /// The rule's name in a Tenhou log (`鳳南喰赤`), kept so a converted log converts back.
         #[serde(default, skip_serializing_if = "Option::is_none")]
         rule: Option<String>,
+        /// rinshan's rule set (`mleague`, `sanma`), written for every one but Tenhou's.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        variant: Option<String>,
+        /// jansou's preset (`tenhou`, `m-league`, `mahjong-soul-3p`).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        preset: Option<String>,
+        /// jansou's whole rules configuration, one flat object.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        rules: Option<serde_json::Map<String, serde_json::Value>>,
     },
     /// A round (kyoku) is dealt.
     StartKyoku {

@@ -38,7 +38,12 @@ impl Live {
         recorder.names = names;
         let first = recorder.in_play().map_or(0, |p| p.first);
         let mut live = Live {
-            events: vec![start_game(&recorder.names, recorder.rule(), true)],
+            events: vec![start_game(
+                &recorder.names,
+                recorder.rule(),
+                variant.red_fives(),
+                variant,
+            )],
             round_start: 1,
             recorder,
             first,

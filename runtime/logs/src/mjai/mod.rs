@@ -12,7 +12,7 @@
 //!   decision out (`rebuild` deals a wall consistent with what the seat saw and replays the round)
 //! * [`read`]  — an MJAI log as a `Game`, so replay, convert and render take any format; `round`
 //!   reads a round's events, `yaku` a win's yaku, `unlogged` scores the wins a log gives
-//!   without yaku (libriichi's)
+//!   without yaku (libriichi's), `rules` the rule set a `start_game` names
 
 pub mod batch;
 pub mod bot;
@@ -23,6 +23,7 @@ pub mod reaction;
 pub mod read;
 mod rebuild;
 mod round;
+mod rules;
 pub mod seat;
 pub mod tile;
 mod unlogged;

@@ -9,6 +9,7 @@ use rinshan_engine::tile::Tile;
 
 use super::event::{Event, PER_SEAT};
 use super::round::{actor_of, known, Open};
+use super::rules::rule_set;
 use super::unlogged::fill_in;
 use crate::tenhou::log::{parse_round_value, round_name, Game, LogError, Outcome, Round};
 use crate::tenhou::replay::mode_of_rule;
@@ -133,7 +134,10 @@ impl GameBuilder {
     /// The game has three players (rinshan's `sanma`): its events list the fourth seat empty.
     pub fn three_players(&mut self) {
         let game = &mut self.reader.game;
-        game.variant = rinshan_engine::Variant::Sanma;
+        // A three-player rule set the start_game named stays.
+        if game.variant.seats() != 3 {
+            game.variant = rinshan_engine::Variant::Sanma;
+        }
         // A `start_game` without names was read as four players' (Tenhou names theirs 三..).
         if self.reader.started && !game.rule.starts_with('三') {
             game.rule.insert(0, '三');
@@ -228,22 +232,34 @@ impl Reader {
                 kyoku_first,
                 aka_flag,
                 rule,
+                variant,
+                preset,
+                rules,
                 ..
             } => {
                 if self.started {
                     return Err("a second start_game: one file is one game".into());
                 }
                 self.started = true;
+                if let Some(named) = rule_set(variant.as_deref(), preset.as_deref(), rules.as_ref())? {
+                    self.game.variant = named;
+                }
                 self.game.names = names;
                 // Names are only for display: a name for three players' empty fourth place (an
                 // mjlog's `n3`) is left out, as no format can write it back.
                 for name in &mut self.game.names[self.seats..] {
                     name.clear();
                 }
-                self.game.red_fives = aka_flag.unwrap_or(true);
+                self.game.red_fives = aka_flag.unwrap_or(self.game.variant.red_fives());
+                if self.game.red_fives && !self.game.variant.red_fives() {
+                    return Err(format!(
+                        "aka_flag says red fives, but {} plays without them",
+                        self.game.variant
+                    ));
+                }
                 let length = if kyoku_first == Some(4) { "東" } else { "南" };
                 let red = if self.game.red_fives { "喰赤" } else { "喰" };
-                let three = if self.seats == 3 { "三" } else { "" };
+                let three = if self.game.variant.seats() == 3 { "三" } else { "" };
                 self.game.rule = rule.unwrap_or_else(|| format!("{three}{length}{red}"));
                 Ok(())
             }
@@ -259,6 +275,14 @@ impl Reader {
             } => {
                 if !self.started {
                     return Err("start_kyoku before start_game".into());
+                }
+                if self.game.variant.seats() as usize != self.seats {
+                    return Err(format!(
+                        "{} players sit at the table, but start_game names {}, a game of {}",
+                        self.seats,
+                        self.game.variant,
+                        self.game.variant.seats()
+                    ));
                 }
                 if self.round.is_some() {
                     return Err("start_kyoku inside a round (no end_kyoku before it)".into());

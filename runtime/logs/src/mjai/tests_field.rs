@@ -6,6 +6,7 @@ use std::path::PathBuf;
 
 use rinshan_engine::env::Backend;
 use rinshan_engine::hand::Yaku;
+use rinshan_engine::Variant;
 
 use super::read::parse_game;
 use super::write::game_text;
@@ -204,4 +205,79 @@ fn nukidora_reads_as_kita() {
     assert_eq!(lines(&back), lines(&game));
     // The writer keeps writing `kita`.
     assert_eq!(game_text(&back).expect("writes"), text);
+}
+
+/// `game` as MJAI with its `start_game` replaced by `header`.
+fn with_header(game: &Game, header: serde_json::Value) -> String {
+    let text = game_text(game).expect("writes");
+    let (_, rest) = text.split_once('\n').expect("a start_game line");
+    format!("{header}\n{rest}")
+}
+
+#[test]
+fn a_start_game_naming_its_rule_set_plays_under_it() {
+    let rules: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../../tests/data/mjai/jansou_rules.json"
+        ))
+        .expect("reads"),
+    )
+    .expect("JSON");
+    let game = real_logs().remove(0).1;
+    // jansou's header: names, preset and its whole rules.
+    let jansou = |preset: &str| {
+        let header = serde_json::json!({"type": "start_game", "names": ["a", "b", "c", "d"],
+            "preset": preset, "rules": rules[preset]});
+        parse_game("j.mjson", &with_header(&game, header))
+    };
+    assert_eq!(jansou("m-league").map(|g| g.variant), Ok(Variant::Mleague));
+    assert_eq!(jansou("mahjong-soul").map(|g| g.variant), Ok(Variant::Mjsoul));
+    let refused = jansou("renmei").expect_err("refused").to_string();
+    assert!(
+        refused.contains("line 1: start_game's rules: rinshan does not model ura_dora false"),
+        "{refused}"
+    );
+    // A three-player rule set for four players' rounds.
+    let refused = jansou("tenhou-3p").expect_err("refused").to_string();
+    assert!(
+        refused.contains("4 players sit at the table, but start_game names sanma"),
+        "{refused}"
+    );
+
+    // rinshan names its own: a game read under mleague writes it, and reads back under it.
+    let mut mleague = game.clone();
+    mleague
+        .play_under(Variant::Mleague)
+        .expect("a four-player rule set with red fives");
+    let text = game_text(&mleague).expect("writes");
+    assert!(
+        text.lines()
+            .next()
+            .is_some_and(|l| l.contains(r#""variant":"mleague""#)),
+        "{text:.200}"
+    );
+    assert_eq!(parse_game("m.mjson", &text).map(|g| g.variant), Ok(Variant::Mleague));
+    // Tenhou's rules are the reader's default, and are not named.
+    assert!(!game_text(&game)
+        .expect("writes")
+        .lines()
+        .next()
+        .unwrap_or_default()
+        .contains("variant"));
+
+    // Three players: the rule set named stays the three-player one it names.
+    let sanma = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../tests/data/mjlog/2014091101gm-00b9-0000-5ca6b487.xml"
+    );
+    let mut three = crate::file::read_log(std::path::Path::new(sanma)).unwrap_or_else(|e| panic!("{e}"));
+    three
+        .play_under(Variant::MjsoulSanma)
+        .expect("three players with red fives");
+    let text = game_text(&three).expect("writes");
+    assert_eq!(
+        parse_game("s.mjson", &text).map(|g| g.variant),
+        Ok(Variant::MjsoulSanma)
+    );
 }

@@ -10,8 +10,10 @@
 
 use rinshan_engine::hand::{Yaku, YakuHan};
 use rinshan_engine::tile::{Tile, TileType};
+use rinshan_engine::Variant;
 
 use super::event::{Event, PER_SEAT};
+use super::rules::named;
 use super::tile::Pai;
 use crate::tenhou::log::{points_total, Discard, Draw, Game, LogError, LoggedDraw, LoggedWin, Outcome, Round};
 use crate::tenhou::plan::{plan, Played};
@@ -32,8 +34,9 @@ pub(crate) const REASONS: [(LoggedDraw, &str); 9] = [
     (LoggedDraw::FourWinds, "sufonrenta"),
 ];
 
-/// The `start_game` of a game: `rule` is Tenhou's name of it (`鳳東喰赤` for East only).
-pub(crate) fn start_game(names: &[String; 4], rule: &str, red_fives: bool) -> Event {
+/// The `start_game` of a game of `variant`: `rule` is Tenhou's name of it (`鳳東喰赤` for East
+/// only); a rule set other than Tenhou's is named ([`super::rules`]), so the log replays under it.
+pub(crate) fn start_game(names: &[String; 4], rule: &str, red_fives: bool, variant: Variant) -> Event {
     let east_only = rule.contains('東');
     Event::StartGame {
         names: names.clone(),
@@ -41,14 +44,15 @@ pub(crate) fn start_game(names: &[String; 4], rule: &str, red_fives: bool) -> Ev
         kyoku_first: Some(if east_only { 4 } else { 0 }),
         aka_flag: Some(red_fives),
         rule: (!rule.is_empty()).then(|| rule.to_string()),
+        variant: named(variant),
+        preset: None,
+        rules: None,
     }
 }
 
-/// Every event of the game, `start_game` to `end_game`. MJAI cannot name a rule set: a game of
-/// another than Tenhou's is replayed from its MJAI log with that rule set given
-/// ([`crate::tenhou::log::Game::play_under`]).
+/// Every event of the game, `start_game` to `end_game`.
 pub fn game_events(game: &Game) -> Result<Vec<Event>, LogError> {
-    let mut events = vec![start_game(&game.names, &game.rule, game.red_fives)];
+    let mut events = vec![start_game(&game.names, &game.rule, game.red_fives, game.variant)];
     for round in &game.rounds {
         round_events(round, &mut events).map_err(|message| LogError {
             file: game.path.clone(),

@@ -415,6 +415,9 @@ impl State {
                 kyoku_first: Some(if self.east_only { 4 } else { 0 }),
                 aka_flag: Some(self.red),
                 rule: (!self.rule.is_empty()).then(|| self.rule.clone()),
+                variant: None,
+                preset: None,
+                rules: None,
             });
         }
         if self.in_round {
