@@ -41,6 +41,12 @@ pub struct Args {
     /// Print the report as JSON
     #[arg(long)]
     json: bool,
+    /// Exit with status 1, after the report, when an MJAI bot faulted in more than this share of
+    /// the games it played (0 to 1). A faulted game ends at once with the illegal-action penalty,
+    /// so past one half the bot's standing measures its faults, not its play (a bot that cannot
+    /// start, e.g. its Python lacks a module, faults in every game). 1 never fails the run
+    #[arg(long, default_value_t = 0.5)]
+    max_fault_rate: f64,
 }
 
 /// The built-in agents of the seats when `--agents` is not given (the first ones at three seats).
@@ -79,6 +85,12 @@ pub fn run(args: Args) -> Result<(), CliError> {
         },
         None => Player::Builtin(Agent::Random),
     });
+    if !(0.0..=1.0).contains(&args.max_fault_rate) {
+        return Err(CliError::input(format!(
+            "--max-fault-rate {}: a share of games, 0 to 1",
+            args.max_fault_rate
+        )));
+    }
     if args.games == 0 || !args.games.is_multiple_of(seats as u64) {
         return Err(CliError::input(format!(
             "--games {} is not a positive multiple of {seats}: each wall set is played once per rotation",
@@ -115,6 +127,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
     };
     bar.finish_and_clear();
     let seconds = started.elapsed().as_secs_f64();
+    let verdict = fault_verdict(&report, args.max_fault_rate);
     if args.json {
         let standings: Vec<_> = report
             .standings
@@ -137,7 +150,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
             })).collect::<Vec<_>>(),
         });
         println!("{out:#}");
-        return Ok(());
+        return verdict;
     }
     println!(
         "{} {} {} games ({} wall sets x {seats} seatings), seed {}, {:.1}s ({:.1} games/s, {:.0} decisions/s)",
@@ -196,5 +209,36 @@ pub fn run(args: Args) -> Result<(), CliError> {
             );
         }
     }
-    Ok(())
+    verdict
+}
+
+/// A failure naming every player that faulted in more than `max_rate` of its games (games it
+/// faulted in, each seat-game once however many faults it logged), with its first fault.
+fn fault_verdict(report: &arena::Report, max_rate: f64) -> Result<(), CliError> {
+    let over: Vec<String> = report
+        .standings
+        .iter()
+        .filter_map(|s| {
+            let mine: Vec<&arena::Fault> = report.faults.iter().filter(|f| f.player == s.name).collect();
+            let mut games: Vec<(u64, u32)> = mine.iter().map(|f| (f.game, f.seat)).collect();
+            games.sort_unstable();
+            games.dedup();
+            let faulted = games.len() as u64;
+            let first = mine.first()?;
+            (faulted as f64 > max_rate * s.games as f64).then(|| {
+                format!(
+                    "{} faulted in {faulted} of its {} games (first: game {} seat {}, decision {}: {})",
+                    s.name, s.games, first.game, first.seat, first.decision, first.message
+                )
+            })
+        })
+        .collect();
+    match over.is_empty() {
+        true => Ok(()),
+        false => Err(CliError::failure(format!(
+            "an MJAI bot faulted in more than --max-fault-rate {max_rate} of its games, so its standing is the \
+             penalty's, not its play: {}",
+            over.join("; ")
+        ))),
+    }
 }
