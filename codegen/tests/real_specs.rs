@@ -286,6 +286,7 @@ fn variant_options() {
             ("kiriage_mangan", "true"),
             ("kan_dora_at_once", "true"),
             ("kazoe_yakuman", "false"),
+            ("double_wind_pair_fu", "2"),
             ("double_ron", "false"),
             ("triple_ron_abort", "false"),
             ("abortive_draws", "false"),
@@ -293,6 +294,7 @@ fn variant_options() {
             ("pao_pays_honba", "true"),
             ("pao_suukantsu", "true"),
             ("riichi_min_points", "0"),
+            ("riichi_with_no_draw_left", "true"),
             ("bust_below_zero", "false"),
             ("west_extension", "false"),
             ("dealer_top_stop", "false"),
@@ -339,6 +341,9 @@ fn variant_options() {
             ["starting_points", "riichi_min_points", "target_points"].map(|n| number(v, n)),
             [25000, 1000, 30000]
         );
+        // Tenhou: a double-wind pair is 4 fu, and riichi needs a draw left for every seat.
+        assert_eq!(number(v, "double_wind_pair_fu"), 4);
+        assert!(!flag(v, "riichi_with_no_draw_left"));
         assert!(flag(v, "bust_below_zero") && flag(v, "west_extension") && flag(v, "dealer_top_stop"));
         // Tenhou lets no hand rob a closed kan, thirteen orphans included.
         assert!(!flag(v, "kokushi_robs_closed_kan"));
@@ -359,6 +364,7 @@ fn variant_options() {
                 "honba_ron_points",
                 "honba_tsumo_points",
                 "riichi_stick_points",
+                "double_wind_pair_fu",
                 "double_ron",
                 "triple_ron_abort",
                 "kokushi_robs_closed_kan",
@@ -372,6 +378,7 @@ fn variant_options() {
                 "seats",
                 "starting_points",
                 "riichi_min_points",
+                "riichi_with_no_draw_left",
                 "bust_below_zero",
                 "target_points",
                 "west_extension",
