@@ -8,15 +8,19 @@
 use libfuzzer_sys::fuzz_target;
 use rinshan_engine::env::Backend;
 use rinshan_logs::file::{game_text, parse_log, Format};
-use rinshan_logs::tenhou::log::Game;
+use rinshan_logs::tenhou::log::{Game, Outcome};
 use rinshan_logs::tenhou::plan::plan;
 use rinshan_logs::tenhou::position::round_replay;
 use rinshan_logs::tenhou::replay::replay;
 
 fn without_lines(mut game: Game) -> Game {
-    // A round's line says where it stood in its source text, which each writer lays out anew.
+    // A round's line says where it stood in its source text, which each writer lays out anew;
+    // which wins rinshan scored (their log gave no yaku) no format writes.
     for round in &mut game.rounds {
         round.line = 0;
+        if let Outcome::Wins(wins) = &mut round.outcome {
+            wins.iter_mut().for_each(|w| w.computed = false);
+        }
     }
     game
 }
