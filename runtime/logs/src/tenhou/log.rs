@@ -148,7 +148,9 @@ pub struct Game {
 impl Game {
     /// Plays the game under `variant` instead of the rule set it names (logs that cannot name
     /// theirs, such as Mahjong Soul games converted to tenhou.net/6); a game with red fives
-    /// cannot be played under a rule set without them.
+    /// cannot be played under a rule set without them. Wins rinshan scored as it read the log
+    /// ([`LoggedWin::computed`]) keep the yaku of the rule set they were read under: a replay
+    /// does not compare them.
     pub fn play_under(&mut self, variant: Variant) -> Result<(), String> {
         if variant.seats() != self.variant.seats() {
             return Err(format!(
