@@ -37,8 +37,10 @@ def replay(
 ) -> dict:
     """Replays logs (files or folders) and compares every round with the log: counts of what
     agrees (`all_agree`) and every mismatch as text. Each log is played under the rule set it
-    names (red unless rinshan wrote it), or under `variant` when given (e.g. Mahjong Soul games
-    converted to tenhou.net/6: `variant="mjsoul"`)."""
+    names (red unless rinshan wrote it or an MJAI `start_game` names one), or under `variant`
+    when given (e.g. Mahjong Soul games converted to tenhou.net/6: `variant="mjsoul"`). Wins
+    whose log gives no yaku (libriichi's MJAI) count in `wins_yaku_not_logged`, not
+    `wins_matching`."""
     if isinstance(paths, str):
         paths = [paths]
     return _core.replay([str(p) for p in paths], backend, variant)
