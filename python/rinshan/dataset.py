@@ -58,8 +58,9 @@ def build(
     """Builds (or resumes) the dataset folder `out` from `inputs` (files, folders, glob patterns,
     tar archives): what `rinshan dataset` does (`shard_size` logs per shard, default 128).
     `variant` is the rule set the logs are replayed in (`"sanma"` for three-player logs); logs of
-    other rules are skipped. Returns the summary (`skipped` lists each log left out with its
-    reason)."""
+    other rules are skipped, and a game that comes in two logs (two formats, two copies) is kept
+    from the first. Returns the summary (`skipped` lists each log left out with its reason,
+    `duplicates` each one left out as the same game as an earlier log, as `(input, same_as)`)."""
     return _core.dataset_build(
         _paths(inputs),
         str(out),

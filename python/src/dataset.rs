@@ -65,6 +65,8 @@ fn dataset_build<'py>(
     d.set_item("total_rows", s.total_rows)?;
     let skipped: Vec<(String, String)> = s.skipped.into_iter().map(|k| (k.input, k.reason)).collect();
     d.set_item("skipped", skipped)?;
+    let duplicates: Vec<(String, String)> = s.duplicates.into_iter().map(|k| (k.input, k.same_as)).collect();
+    d.set_item("duplicates", duplicates)?;
     d.set_item("seconds", s.seconds)?;
     Ok(d)
 }

@@ -1,6 +1,7 @@
 //! `rinshan dataset <inputs> -o DIR`: logs (files, folders, glob patterns, tar archives; any
 //! format, plain or gzipped) replayed into training shards (see `rinshan_dataset`). Resumes a
-//! folder a run left unfinished; a log that cannot be read or replayed is reported and skipped.
+//! folder a run left unfinished; a log that cannot be read or replayed is reported and skipped,
+//! and a game that comes in two logs (two formats, two copies) is kept once and reported.
 
 use std::path::PathBuf;
 
@@ -122,6 +123,11 @@ pub fn run(args: Args) -> Result<(), CliError> {
             .iter()
             .map(|s| serde_json::json!({"input": s.input, "reason": s.reason}))
             .collect();
+        let duplicates: Vec<_> = summary
+            .duplicates
+            .iter()
+            .map(|d| serde_json::json!({"input": d.input, "same_as": d.same_as}))
+            .collect();
         let value = serde_json::json!({
             "output": args.output.display().to_string(),
             "shards_written": summary.shards_written,
@@ -131,6 +137,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
             "rows": summary.rows,
             "total_rows": summary.total_rows,
             "skipped": skipped,
+            "duplicates": duplicates,
             "seconds": summary.seconds,
             "games_per_second": per_sec(summary.games),
             "rows_per_second": per_sec(summary.rows),
@@ -152,6 +159,22 @@ pub fn run(args: Args) -> Result<(), CliError> {
         per_sec(summary.games),
         per_sec(summary.rows)
     );
+    if !summary.duplicates.is_empty() {
+        println!(
+            "  {} logs left out as the same game (deals and moves) as an earlier log, whose rows hold it:",
+            summary.duplicates.len()
+        );
+        for d in summary.duplicates.iter().take(SKIPS_SHOWN) {
+            println!("    {} = {}", d.input, d.same_as);
+        }
+        if summary.duplicates.len() > SKIPS_SHOWN {
+            println!(
+                "    ... and {} more (each in {})",
+                summary.duplicates.len() - SKIPS_SHOWN,
+                args.output.join("manifest.json").display()
+            );
+        }
+    }
     if !summary.skipped.is_empty() {
         println!("  {} logs skipped:", summary.skipped.len());
         for s in summary.skipped.iter().take(SKIPS_SHOWN) {

@@ -3,16 +3,24 @@
 //! in the manifest. A run that stops leaves every listed shard whole; run again with the same
 //! inputs and options, it checks the listed shards cover the same inputs and goes on after them.
 //! The same inputs and options give the same bytes, whatever the thread count.
+//!
+//! A game that comes in two inputs (two formats, two copies) is kept from the first in input order
+//! and the later ones are listed as duplicates: each wave's logs are parsed in parallel, checked
+//! against the games seen in order, then replayed in parallel. A resumed run parses the finished
+//! shards' logs again (no replay) to know their games.
 
+use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 use rayon::prelude::*;
 use rinshan_engine::env::action_names;
+use rinshan_logs::tenhou::log::Game;
 
 use crate::inputs::{count, for_each_unit, sources, Unit};
-use crate::manifest::{check_forms, Manifest, ShardRecord, Skip};
-use crate::record::{record_units, GameRows, Options, Outcome};
+use crate::manifest::{check_forms, Duplicate, Manifest, ShardRecord, Skip};
+use crate::record::{parse_unit, record_parsed, GameRows, Options, Outcome};
+use crate::same::{game_key, GameKey};
 use crate::shard::write_shard;
 
 /// Logs per shard unless told: a shard of hanchan with the planes form is about 200 MB while it is
@@ -63,8 +71,11 @@ pub struct Summary {
     pub games: u64,
     /// Rows written by this run.
     pub rows: u64,
-    /// Inputs this run left out, with reasons.
+    /// Inputs this run left out, with reasons (duplicates apart).
     pub skipped: Vec<Skip>,
+    /// Inputs this run left out as the same game as an earlier input (of this run or a resumed
+    /// one's), each with that input.
+    pub duplicates: Vec<Duplicate>,
     /// Rows in the whole dataset.
     pub total_rows: u64,
     /// Seconds this run took.
@@ -75,11 +86,27 @@ fn shard_name(index: usize) -> String {
     format!("shard-{index:06}")
 }
 
-/// Reads, replays and writes one shard.
-fn make_shard(out: &Path, index: usize, units: &[Unit], options: &Options) -> Result<ShardRecord, String> {
+/// One shard's logs, parsed, before it is replayed: `None` for a duplicate (in `duplicates`).
+struct Parsed<'a> {
+    index: usize,
+    units: &'a [Unit],
+    games: Vec<Option<Result<Game, String>>>,
+    duplicates: Vec<Duplicate>,
+}
+
+/// Replays and writes one shard.
+fn make_shard(out: &Path, shard: Parsed<'_>, options: &Options) -> Result<ShardRecord, String> {
+    let Parsed {
+        index,
+        units,
+        games,
+        duplicates,
+    } = shard;
     let mut kept: Vec<GameRows> = Vec::new();
     let mut skipped = Vec::new();
-    for (unit, outcome) in units.iter().zip(record_units(units, options)?) {
+    let (replayed, parsed): (Vec<&Unit>, Vec<Result<Game, String>>) =
+        units.iter().zip(games).filter_map(|(u, g)| Some((u, g?))).unzip();
+    for (unit, outcome) in replayed.into_iter().zip(record_parsed(parsed, options)?) {
         match outcome {
             Outcome::Rows(rows) => kept.push(rows),
             Outcome::Skipped(reason) => skipped.push(Skip {
@@ -97,7 +124,23 @@ fn make_shard(out: &Path, index: usize, units: &[Unit], options: &Options) -> Re
         inputs: units.iter().map(|u| u.name.clone()).collect(),
         games: kept.into_iter().map(|g| g.name).collect(),
         skipped,
+        duplicates,
     })
+}
+
+/// The name of the input at `at` (shard, position): a listed shard's, or one of `wave`'s.
+fn input_name(manifest: &Manifest, wave: &[(usize, Vec<Unit>)], at: (usize, usize)) -> String {
+    let (shard, pos) = at;
+    let listed = manifest.shards.get(shard).and_then(|s| s.inputs.get(pos).cloned());
+    let waiting = || {
+        wave.iter()
+            .find(|(i, _)| *i == shard)
+            .and_then(|(_, units)| units.get(pos))
+            .map(|u| u.name.clone())
+    };
+    listed
+        .or_else(waiting)
+        .unwrap_or_else(|| format!("input {pos} of shard {shard}"))
 }
 
 struct State<'a> {
@@ -114,6 +157,8 @@ struct State<'a> {
     pool: rayon::ThreadPool,
     /// When the manifest was last written.
     saved: Instant,
+    /// Each game read so far, at its first input (shard, position).
+    seen: HashMap<GameKey, (usize, usize)>,
 }
 
 impl State<'_> {
@@ -137,6 +182,18 @@ impl State<'_> {
                     names.first()
                 ));
             }
+            // Its games are seen as the run that made it saw them, so later copies stay out.
+            let keys: Vec<Option<GameKey>> = self.pool.install(|| {
+                units
+                    .par_iter()
+                    .map(|u| parse_unit(u).ok().map(|g| game_key(&g)))
+                    .collect()
+            });
+            for (pos, key) in keys.into_iter().enumerate() {
+                if let Some(key) = key {
+                    self.seen.entry(key).or_insert((index, pos));
+                }
+            }
             self.progress.inputs += units.len() as u64;
             on_progress(self.progress);
             return Ok(());
@@ -153,9 +210,42 @@ impl State<'_> {
     fn flush(&mut self, last: bool, on_progress: &mut dyn FnMut(Progress)) -> Result<(), String> {
         let wave = std::mem::take(&mut self.wave);
         let (out, options) = (&self.build.out, &self.build.options);
-        let made: Vec<Result<ShardRecord, String>> = self.pool.install(|| {
+        let games: Vec<Vec<Result<Game, String>>> = self.pool.install(|| {
             wave.par_iter()
-                .map(|(index, units)| make_shard(out, *index, units, options))
+                .map(|(_, units)| units.iter().map(parse_unit).collect())
+                .collect()
+        });
+        // In input order whatever the threads: the first input of a game keeps it.
+        let mut shards = Vec::with_capacity(wave.len());
+        for ((index, units), games) in wave.iter().zip(games) {
+            let mut duplicates = Vec::new();
+            let mut kept = Vec::with_capacity(games.len());
+            for (pos, (unit, game)) in units.iter().zip(games).enumerate() {
+                let first = match &game {
+                    Ok(g) => *self.seen.entry(game_key(g)).or_insert((*index, pos)),
+                    Err(_) => (*index, pos),
+                };
+                if first == (*index, pos) {
+                    kept.push(Some(game));
+                } else {
+                    duplicates.push(Duplicate {
+                        input: unit.name.clone(),
+                        same_as: input_name(&self.manifest, &wave, first),
+                    });
+                    kept.push(None);
+                }
+            }
+            shards.push(Parsed {
+                index: *index,
+                units,
+                games: kept,
+                duplicates,
+            });
+        }
+        let made: Vec<Result<ShardRecord, String>> = self.pool.install(|| {
+            shards
+                .into_par_iter()
+                .map(|shard| make_shard(out, shard, options))
                 .collect()
         });
         for record in made {
@@ -165,6 +255,7 @@ impl State<'_> {
             self.summary.games += record.games.len() as u64;
             self.summary.rows += record.rows;
             self.summary.skipped.extend(record.skipped.iter().cloned());
+            self.summary.duplicates.extend(record.duplicates.iter().cloned());
             self.progress.inputs += record.inputs.len() as u64;
             self.progress.rows += record.rows;
             self.manifest.shards.push(record);
@@ -228,6 +319,7 @@ pub fn build(b: &Build, on_progress: &mut dyn FnMut(Progress)) -> Result<Summary
         },
         pool,
         saved: Instant::now(),
+        seen: HashMap::new(),
     };
     for_each_unit(&sources, &mut |unit| {
         state.chunk.push(unit);

@@ -8,6 +8,7 @@
 //! * [`record`] — a batch of games replayed into rows.
 //! * [`shard`] — one shard's arrays on disk.
 //! * [`manifest`] — the schema, options and finished shards.
+//! * [`same`] — one game in two files (two formats, two copies), recognised by its content.
 //! * [`build`] — the parallel, resumable run over all of it.
 //!
 //! Depends on `rinshan-engine` and `rinshan-logs`; the `rinshan dataset` command and the Python
@@ -19,6 +20,7 @@ pub mod build;
 pub mod inputs;
 pub mod manifest;
 pub mod record;
+pub mod same;
 pub mod shard;
 
 pub use build::{build, Build, Progress, Summary, DEFAULT_INPUTS_PER_SHARD};

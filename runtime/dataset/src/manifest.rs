@@ -65,6 +65,15 @@ pub struct Skip {
     pub reason: String,
 }
 
+/// A log left out because an earlier input holds the same game (see [`crate::same`]).
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Duplicate {
+    /// The log's name.
+    pub input: String,
+    /// The earlier input whose rows hold the game (or whose skip says why it has none).
+    pub same_as: String,
+}
+
 /// One finished shard.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
 pub struct ShardRecord {
@@ -76,8 +85,12 @@ pub struct ShardRecord {
     pub inputs: Vec<String>,
     /// The games kept, in order: a row's `game` indexes this list, `scores` and `ranks`.
     pub games: Vec<String>,
-    /// The inputs left out.
+    /// The inputs left out, other than duplicates.
     pub skipped: Vec<Skip>,
+    /// The inputs left out as the same game as an earlier input: each input is a game, a skip or
+    /// a duplicate. Absent when none (and in manifests written before duplicates were told).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub duplicates: Vec<Duplicate>,
 }
 
 /// The options as written.

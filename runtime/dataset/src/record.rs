@@ -253,17 +253,18 @@ pub fn record(games: &[Game], options: &Options) -> Result<Vec<Outcome>, String>
         .collect())
 }
 
-/// Reads, parses and replays `units`: each one's outcome, in order. A log that cannot be read or
-/// parsed is skipped with the reader's reason, as one that does not replay is.
-pub fn record_units(units: &[Unit], options: &Options) -> Result<Vec<Outcome>, String> {
+/// Reads and parses one log: its game, or the reader's reason it has none.
+pub fn parse_unit(unit: &Unit) -> Result<Game, String> {
+    unit.bytes()
+        .and_then(|b| parse_log(&unit.name, &b).map_err(|e| e.to_string()))
+        .map(|(game, _format)| game)
+}
+
+/// Replays parsed logs: each one's outcome, in order. A log that could not be read or parsed is
+/// skipped with the reader's reason, as one that does not replay is.
+pub fn record_parsed(parsed: Vec<Result<Game, String>>, options: &Options) -> Result<Vec<Outcome>, String> {
     let mut games = Vec::new();
-    let mut read: Vec<Result<(), String>> = Vec::with_capacity(units.len());
-    for unit in units {
-        let parsed = unit
-            .bytes()
-            .and_then(|b| parse_log(&unit.name, &b).map_err(|e| e.to_string()));
-        read.push(parsed.map(|(game, _format)| games.push(game)));
-    }
+    let read: Vec<Result<(), String>> = parsed.into_iter().map(|p| p.map(|game| games.push(game))).collect();
     let mut replayed = record(&games, options)?.into_iter();
     drop(games);
     Ok(read
@@ -275,4 +276,9 @@ pub fn record_units(units: &[Unit], options: &Options) -> Result<Vec<Outcome>, S
             Err(reason) => Outcome::Skipped(reason),
         })
         .collect())
+}
+
+/// Reads, parses and replays `units`: each one's outcome, in order (see [`record_parsed`]).
+pub fn record_units(units: &[Unit], options: &Options) -> Result<Vec<Outcome>, String> {
+    record_parsed(units.iter().map(parse_unit).collect(), options)
 }

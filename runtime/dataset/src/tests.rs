@@ -301,3 +301,71 @@ fn games_of_other_rule_sets_are_skipped() {
     };
     assert!(matches!(record(&[sanma], &sanma_options).unwrap()[0], Outcome::Rows(_)));
 }
+
+/// tests/data/mjlog holds each Tenhou game as mjlog XML and as tenhou.net/6 JSON (and one
+/// three-player game as XML only): the two files of a game have one key, two games never do.
+#[test]
+fn a_game_has_one_key_in_both_formats() {
+    let mut keys: Vec<(String, crate::same::GameKey)> = std::fs::read_dir(data("mjlog"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .map(|p| {
+            let stem = p.file_stem().unwrap().to_string_lossy().into_owned();
+            (stem, crate::same::game_key(&read_log(&p).unwrap()))
+        })
+        .collect();
+    keys.sort();
+    let pairs = keys.windows(2).filter(|w| w[0].0 == w[1].0).count();
+    assert_eq!(pairs, 6, "{keys:?}");
+    for (i, (a, ka)) in keys.iter().enumerate() {
+        for (b, kb) in &keys[i + 1..] {
+            assert_eq!(a == b, ka == kb, "{a} and {b}");
+        }
+    }
+}
+
+/// A game that comes in two inputs gives its rows once, from the first input in order; the later
+/// one is reported as its duplicate, in the summary and the manifest, with any threads, across
+/// shards and across a resumed run.
+#[test]
+fn a_game_in_two_formats_is_kept_once() {
+    let inputs = [data("mjlog")];
+    let (a, b) = (scratch("dup-one-thread"), scratch("dup-two-threads"));
+    let s = run(&inputs, &a, 1, 1).unwrap();
+    // 13 files: 6 games twice, and a three-player game a red dataset skips.
+    assert_eq!(
+        (s.inputs, s.games, s.duplicates.len(), s.skipped.len()),
+        (13, 6, 6, 1),
+        "{s:?}"
+    );
+    for d in &s.duplicates {
+        let stem = |n: &str| Path::new(n).file_stem().unwrap().to_string_lossy().into_owned();
+        assert_eq!(stem(&d.input), stem(&d.same_as), "{d:?}");
+        assert!(d.input.ends_with(".xml") && d.same_as.ends_with(".json"), "{d:?}");
+    }
+    let m = Manifest::load(&a).unwrap().unwrap();
+    let listed: Vec<_> = m.shards.iter().flat_map(|s| s.duplicates.iter().cloned()).collect();
+    assert_eq!(listed, s.duplicates);
+    // The same rows as a dataset of one file per game.
+    let json_only: Vec<PathBuf> = logs("mjlog", "json");
+    let c = scratch("dup-json-only");
+    let one = run(&json_only, &c, 1, 1).unwrap();
+    assert_eq!((one.games, one.rows), (s.games, s.rows));
+
+    run(&inputs, &b, 2, 1).unwrap();
+    assert!(files(&a) == files(&b), "thread count changed the bytes");
+    // Stopped after the three-player game and the first four-player game's JSON: its XML, the
+    // next shard, is still its duplicate.
+    let mut m = Manifest::load(&b).unwrap().unwrap();
+    assert!(m.shards[1].inputs[0].ends_with("e2f6516d.json"), "{:?}", m.shards[1]);
+    m.shards.truncate(2);
+    m.save(&b).unwrap();
+    let resumed = run(&inputs, &b, 2, 1).unwrap();
+    assert_eq!((resumed.shards_resumed, resumed.games), (2, 5), "{resumed:?}");
+    assert!(resumed.duplicates[0].same_as.ends_with("e2f6516d.json"), "{resumed:?}");
+    assert_eq!(resumed.duplicates.len(), 6, "{resumed:?}");
+    assert!(files(&a) == files(&b), "the resumed dataset differs");
+    for d in [a, b, c] {
+        std::fs::remove_dir_all(d).unwrap();
+    }
+}
