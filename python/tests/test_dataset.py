@@ -248,3 +248,18 @@ def test_a_three_player_log_makes_a_sanma_dataset(tmp_path, cli):
             assert (mine / f.relative_to(out)).read_bytes() == f.read_bytes(), f
     with pytest.raises(ValueError, match="variant"):
         build(SANMA, tmp_path / "bad", variant="nine-player")
+
+
+def test_a_game_in_two_formats_is_kept_once(tmp_path):
+    # tests/data/mjlog holds each four-player game as mjlog XML and as tenhou.net/6 JSON.
+    logs = tmp_path / "logs"
+    logs.mkdir()
+    for p in MJLOG[:2]:
+        for twin in (p, p.with_suffix(".json")):
+            (logs / twin.name).write_bytes(twin.read_bytes())
+    summary = build([logs], tmp_path / "ds", observation=None)
+    assert summary["inputs"] == 4 and summary["games"] == 2, summary
+    assert [(pathlib.Path(a).name, pathlib.Path(b).name) for a, b in summary["duplicates"]] == [
+        (p.name, p.with_suffix(".json").name) for p in MJLOG[:2]
+    ]
+    assert summary["skipped"] == []
