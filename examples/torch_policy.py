@@ -36,13 +36,15 @@ class PlanesPolicy(nn.Module):
         return logits.masked_fill(~mask, torch.finfo(logits.dtype).min)
 
 
-def main():
-    env = rinshan.make("red", num_envs=256, seed=0, observation=("planes",))
+def main(num_envs: int = 64, max_steps: int = 5000):
+    env = rinshan.make("red", num_envs=num_envs, seed=0, observation=("planes",))
     policy = PlanesPolicy(env.spec.num_actions)
     ts = env.reset()
-    games = 0
+    games = steps = 0
+    # Until as many games have ended as there are envs: a half game (East and South) is several
+    # hundred decisions, so a fixed 200 steps ended none.
     with torch.no_grad():
-        for _ in range(200):
+        while games < num_envs and steps < max_steps:
             # The env's arrays are read-only and rewritten by the next step: the tensors copy
             # them (as a move to a GPU would in any case).
             logits = policy(
@@ -52,9 +54,12 @@ def main():
             )
             actions = torch.distributions.Categorical(logits=logits).sample().numpy()
             ts = env.step(actions)
+            steps += 1
             assert not ts.info["illegal"].any()
             games += int(ts.terminated.sum())
-    print(f"200 steps x 256 envs, {games} games finished, no illegal action")
+    env.close()
+    print(f"{steps} steps x {num_envs} envs, {games} games finished, no illegal action")
+    return games
 
 
 if __name__ == "__main__":

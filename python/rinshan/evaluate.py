@@ -24,7 +24,9 @@ class Evaluation:
     average_rank: float
     """Mean final place, 1 (first) to 4."""
     ci95: float
-    """Half-width of the 95% interval of `average_rank`, over wall sets."""
+    """Half-width of the 95% interval of `average_rank`, over wall sets (Student's t with one
+    degree of freedom fewer than the sets: wide for a few sets, as it should be). NaN with one
+    wall set, which gives no interval: play at least two sets (games = 2 x seats)."""
     rank_counts: list
     """Games finished first, second, third and fourth."""
     average_score: float
@@ -34,8 +36,13 @@ class Evaluation:
     """Games an MJAI opponent lost by failing (the policy placed among the others by score)."""
 
     def __str__(self) -> str:
+        interval = (
+            f" ± {self.ci95:.3f}"
+            if math.isfinite(self.ci95)
+            else " (one wall set: n too small for an interval)"
+        )
         return (
-            f"average rank {self.average_rank:.3f} ± {self.ci95:.3f} over {self.games} games "
+            f"average rank {self.average_rank:.3f}{interval} over {self.games} games "
             f"(places {self.rank_counts}, average score {self.average_score:.0f}, "
             f"illegal {self.illegal}"
             + (f", opponent faults {self.opponent_faults}" if self.opponent_faults else "")
@@ -119,7 +126,9 @@ def evaluate(
     # A game the policy ended with an illegal action counts as a last place.
     places = np.where(illegal, players, rank + 1)
     per_set = places.reshape(sets, players).mean(axis=1)
-    ci = 1.96 * per_set.std(ddof=1) / math.sqrt(sets) if sets > 1 else float("inf")
+    # The sets' spread is estimated from the sets themselves: with few of them the normal 1.96
+    # understates the interval (by 3x at two sets), and one set estimates no spread at all.
+    ci = t975(sets - 1) * per_set.std(ddof=1) / math.sqrt(sets) if sets > 1 else math.nan
     return Evaluation(
         games=n,
         average_rank=float(places.mean()),
@@ -129,6 +138,26 @@ def evaluate(
         illegal=int(illegal.sum()),
         opponent_faults=int(bot_faults.sum()),
     )
+
+
+# Student's t 0.975 quantiles for 1..30 degrees of freedom (any statistics table).
+_T975 = (
+    12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228,
+    2.201, 2.179, 2.160, 2.145, 2.131, 2.120, 2.110, 2.101, 2.093, 2.086,
+    2.080, 2.074, 2.069, 2.064, 2.060, 2.056, 2.052, 2.048, 2.045, 2.042,
+)  # fmt: skip
+
+
+def t975(df: int) -> float:
+    """The 0.975 quantile of Student's t with `df` degrees of freedom (a 95% interval's
+    multiplier): the table to 30, then the Cornish-Fisher expansion about the normal's 1.96,
+    within 1e-4 of the exact value there. Without scipy, which the package does not need."""
+    if df < 1:
+        raise ValueError("a t quantile needs at least one degree of freedom")
+    if df <= len(_T975):
+        return _T975[df - 1]
+    z = 1.959963984540054
+    return z + (z**3 + z) / (4 * df) + (5 * z**5 + 16 * z**3 + 3 * z) / (96 * df**2)
 
 
 def _act(policy: Policy, env: Env, ts: TimeStep) -> np.ndarray:
