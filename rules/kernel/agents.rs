@@ -317,7 +317,7 @@ fn plays_at_random(agent: u32) -> bool {
 
 // The action of the agent seated at the player to move of `s` (also the host's arena's). Only an
 // agent that reads the planes has them built: for a random seat they were four fifths of the
-// step's instructions (docs/speed.md).
+// step's instructions (docs/performance-history.md, a seventh pass).
 pub fn seat_act(s: &mut GameState, agent: u32) -> u32 {
     if plays_at_random(agent) {
         return random_legal(s.mask, s.seed, s.steps);

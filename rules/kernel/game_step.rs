@@ -34,7 +34,7 @@ fn begin_game(s: &mut GameState, dealer: u32, wall: [u32; 136]) {
 // most once, in that order, and the passes play a whole step in straight lines. The CPU calls
 // them in a row (`game_step`); the GPU dispatches each as a pipeline of its own: one shader
 // holding the whole step took Mesa's lavapipe 2.5 minutes to compile, its parts 0.63x of that in
-// all (docs/speed.md).
+// all (docs/performance.md, "How long each pipeline takes to compile").
 
 // Whether a pass has work: the GPU skips the envs whose task its guard (entries.rs) rules out,
 // without copying their state. Each pass leaves every other state as it is.

@@ -33,7 +33,7 @@ pub fn gpu_or_skip(test: &str) -> Option<rinshan_engine::gpu::Gpu> {
 
 /// Whether the GPU tests of the agents' pipelines (their actions, hero mode) run here: on a hardware
 /// adapter and on Mesa's lavapipe from 25.0 on. Older lavapipe takes over 16 minutes of one core to
-/// compile the agents' pipeline (25.0: about half a minute, docs/speed.md); there they skip with a
+/// compile the agents' pipeline (25.0: about half a minute, docs/performance.md); there they skip with a
 /// note, or fail where `RINSHAN_REQUIRE_GPU=1` says every GPU test must run.
 pub fn agent_gpu_tests_run(gpu: &rinshan_engine::gpu::Gpu, test: &str) -> bool {
     let driver = gpu.driver_info();

@@ -561,7 +561,7 @@ fn summary(
 }
 
 /// What a run on Mesa's software driver pays first, and the settings that cut it (README, "The two
-/// commands"; docs/speed.md, "How long each pipeline takes to compile").
+/// commands"; docs/performance.md, "How long each pipeline takes to compile").
 pub(crate) fn software_adapter_note(adapter: &str) -> String {
     format!(
         "note: {adapter} is a software adapter: it compiles the game's pipelines the first time, minutes of one core (cached afterwards); LP_NATIVE_VECTOR_WIDTH=128 and GALLIVM_PERF=nopt make that several times faster"

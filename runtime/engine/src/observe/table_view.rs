@@ -429,7 +429,7 @@ impl TableView {
         }
         // Whole words, copied as they are. Built from the 34 counts with two zero bytes stored
         // beside them, the last word could not be forwarded from the store buffer to the kernel's
-        // load of it, which then waited behind the record's stores (docs/speed.md, a seventh pass).
+        // load of it, which then waited behind the record's stores (docs/performance-history.md, a seventh pass).
         k::TableTiles {
             seen: bytemuck::cast(self.seen),
             red_seen,
