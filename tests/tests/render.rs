@@ -626,3 +626,30 @@ fn three_player_tables_show_three_seats_and_their_kita() {
     let png = rinshan_render::png::png(&rinshan_render::svg(&board, &revealed(1)), 0.5).expect("rasterises");
     assert_eq!(&png[1..4], b"PNG");
 }
+
+/// A Japanese player's name is drawn in a PNG (it came out as blanks: the bundled font had ASCII
+/// only and no system font is read), and a name of characters no bundled font has (Hangul) is
+/// drawn as `?`, one per character, rather than as nothing.
+#[test]
+fn japanese_names_are_drawn_in_pngs_and_others_as_question_marks() {
+    let games = games();
+    let (ps, _) = round_replay(&games[0], 0).expect("a round");
+    let named = |name: &str| {
+        let mut b = Board::from_state(&ps[0].state, Variant::Red);
+        b.names = [name, "B", "C", "D"].map(String::from);
+        let png = rinshan_render::png::png(&rinshan_render::svg(&b, &revealed(0)), 1.0).expect("a PNG");
+        resvg::tiny_skia::Pixmap::decode_png(&png).expect("a PNG")
+    };
+    let differ = |a: &resvg::tiny_skia::Pixmap, b: &resvg::tiny_skia::Pixmap| {
+        a.pixels().iter().zip(b.pixels()).filter(|(p, q)| p != q).count()
+    };
+    let blank = named(" ");
+    let japanese = named("麻雀太郎");
+    let ascii = named("Mahjong");
+    // Four kanji at 14 px ink more pixels than a few dozen: a blank or a lone box would not.
+    let inked = differ(&japanese, &blank);
+    assert!(inked > 150, "the Japanese name drew {inked} pixels");
+    assert!(differ(&ascii, &blank) > 150, "the ASCII name is drawn too");
+    assert!(rinshan_render::png::drawable('麻') && !rinshan_render::png::drawable('김'));
+    assert_eq!(differ(&named("김철수"), &named("???")), 0, "Hangul is drawn as `?`");
+}
