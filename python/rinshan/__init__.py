@@ -4,10 +4,11 @@
     ts = env.reset()
     ts = env.step(actions)        # one action id per env
 
-See the README's "Python" section.
+See docs/env.md ("Python") for the whole API.
 """
 
 from . import dataset, mjai, tenhou
+from ._core import __version__
 from .env import (
     AGENTS,
     FORMS,
@@ -27,6 +28,7 @@ from .hands import score, shanten
 from .tenhou import replay
 
 __all__ = [
+    "__version__",
     "AGENTS",
     "FORMS",
     "MODES",

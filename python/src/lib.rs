@@ -10,6 +10,8 @@ mod tools;
 
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    // The workspace's version, the one `rinshan --version` prints: declared once in Cargo.toml.
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add_class::<env::PyEnv>()?;
     m.add_class::<mjai::PyMjaiPlayer>()?;
     tools::register(m)?;

@@ -442,3 +442,14 @@ def test_evaluate_rotates_over_three_seats_in_sanma():
     )
     assert r.games == 30 and len(r.rank_counts) == 3 and sum(r.rank_counts) == 30
     assert r.average_rank < 1.6 and r.illegal == 0
+
+
+def test_version_is_the_workspace_version():
+    # One place declares the version, the workspace's Cargo.toml; `rinshan --version` prints it too.
+    import pathlib
+    import re
+
+    cargo = (pathlib.Path(__file__).resolve().parents[2] / "Cargo.toml").read_text()
+    section = cargo.split("[workspace.package]", 1)[1].split("\n[", 1)[0]
+    want = re.search(r'^version = "([^"]+)"', section, re.M).group(1)
+    assert rinshan.__version__ == want
