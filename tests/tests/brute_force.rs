@@ -523,7 +523,12 @@ impl Oracle {
                 for slot in slots {
                     readings += 1;
                     complete = true;
-                    let (f, fu) = standard_reading(win, &common, pair, &sets, slot);
+                    let double_wind = self
+                        .spec
+                        .variant
+                        .u32_option("double_wind_pair_fu")
+                        .expect("double_wind_pair_fu");
+                    let (f, fu) = standard_reading(win, &common, pair, &sets, slot, double_wind);
                     consider(self.judge(win, &all, &f, fu, None));
                 }
             }
@@ -569,7 +574,16 @@ impl Oracle {
 }
 
 /// The features and fu (before the tsumo bonus and rounding) of one standard reading.
-fn standard_reading(win: &Win, common: &Features, pair: Tile, sets: &[Set], slot: Slot) -> (Features, u32) {
+/// `double_wind_pair_fu`: the fu of a pair of the wind that is both round and seat wind (the
+/// spec's option; either wind alone is 2).
+fn standard_reading(
+    win: &Win,
+    common: &Features,
+    pair: Tile,
+    sets: &[Set],
+    slot: Slot,
+    double_wind_pair_fu: u32,
+) -> (Features, u32) {
     let c = &win.context;
     let w = u8::from(win.win);
     let ron = !c.tsumo;
@@ -646,10 +660,9 @@ fn standard_reading(win: &Win, common: &Features, pair: Tile, sets: &[Set], slot
     if is_dragon(pair) {
         fu += 2;
     }
-    if pair == seat {
-        fu += 2;
-    }
-    if pair == round {
+    if pair == seat && pair == round {
+        fu += double_wind_pair_fu;
+    } else if pair == seat || pair == round {
         fu += 2;
     }
     match slot {

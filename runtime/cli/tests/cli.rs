@@ -744,6 +744,8 @@ fn mjai_python() -> Option<String> {
 
 /// `rinshan arena --json` for 4 games with `agents`, bots spoken to in `dialect`.
 fn arena_json(agents: &str, dialect: &str, mode: &str) -> serde_json::Value {
+    // A bot that faults in every game still gets its report here (the exit status for a faulting
+    // bot is tests/arena_faults.rs's).
     json(&rinshan(&[
         "arena",
         "--agents",
@@ -754,6 +756,8 @@ fn arena_json(agents: &str, dialect: &str, mode: &str) -> serde_json::Value {
         "4",
         "--mode",
         mode,
+        "--max-fault-rate",
+        "1",
         "--json",
     ]))
 }
