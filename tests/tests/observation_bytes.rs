@@ -67,8 +67,11 @@ fn mleague_observation_bytes_are_pinned() {
 }
 
 /// Three players' observations come from the kernel's writers on the CPU too (the views that
-/// follow the log take four seats).
+/// follow the log take four seats). Re-pinned when the kan dora of a kan whose replacement tile is
+/// set aside as a North came to show at the kita: positions after such a kita show one more dora
+/// indicator (without that change alone the old value comes back), though the 10,000-game
+/// fingerprint of sanma's outcomes held.
 #[test]
 fn sanma_observation_bytes_are_pinned() {
-    assert_eq!(format!("{:016x}", fingerprint(Variant::Sanma)), "bc5e0ec6f1435117");
+    assert_eq!(format!("{:016x}", fingerprint(Variant::Sanma)), "0bc74301a2a5d184");
 }
