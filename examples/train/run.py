@@ -2,7 +2,7 @@
 finetune) -> evaluate, then a summary over seeds (summary.json, summary.md) and the plots.
 
 python examples/train/run.py --config examples/train/configs/seed.toml
-python examples/train/run.py --smoke          # about a minute: checks that it runs and learns
+python examples/train/run.py --smoke          # a few minutes: checks that it runs and learns
 """
 
 from __future__ import annotations
@@ -122,7 +122,7 @@ def markdown(s: dict) -> str:
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--config", help="a TOML config (configs/*.toml)")
-    ap.add_argument("--smoke", action="store_true", help="configs/smoke.toml: a minute-long check")
+    ap.add_argument("--smoke", action="store_true", help="configs/smoke.toml: a short check")
     ap.add_argument("--out", help="run folder (default runs/<name>)")
     ap.add_argument("--seeds", help="comma-separated seeds instead of the config's")
     ap.add_argument(

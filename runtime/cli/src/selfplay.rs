@@ -494,7 +494,12 @@ fn summary(
         t.steps,
         ratio(t.steps, games)
     );
-    println!("  speed                 {steps_per_s:.0} env steps/s (choosing the actions included), {seconds:.2} s");
+    // The figure a reader compares with the engine's: this one pays for the players' decisions
+    // (the agents' planes and choices, a bot's process), `bench env` steps random legal actions.
+    println!(
+        "  speed                 {steps_per_s:.0} env steps/s with these players choosing every action, {seconds:.2} s \
+         (the engine alone, random actions: `rinshan bench env`)"
+    );
     println!(
         "  rounds                {} ({:.2} per game)",
         t.rounds,
