@@ -182,12 +182,17 @@ pub fn run(args: Args) -> Result<(), CliError> {
             .map(|&r| format!("{:.0}%", 100.0 * r as f64 / s.games.max(1) as f64))
             .collect::<Vec<_>>()
             .join("/");
+        // One wall set gives no interval (NaN): "±n/a", never a "±0.000" that reads as certainty.
+        let ci = if s.rank_ci95.is_finite() {
+            format!("{:.3}", s.rank_ci95)
+        } else {
+            "n/a".to_string()
+        };
         println!(
-            "{:<10} {:>6} {:>8.3}±{:.3} {:>23} {:>8.0} {:>5.1}% {:>6.1}% {:>5.1}% {:>6.1}% {:>8.0}",
+            "{:<10} {:>6} {:>8.3}±{ci} {:>23} {:>8.0} {:>5.1}% {:>6.1}% {:>5.1}% {:>6.1}% {:>8.0}",
             s.name,
             s.games,
             s.mean_rank,
-            s.rank_ci95,
             hist,
             s.mean_score,
             100.0 * s.win_rate,

@@ -99,7 +99,8 @@ pub struct Standing {
     pub games: u64,
     /// Average final rank, 1 = first.
     pub mean_rank: f64,
-    /// Half-width of the 95% confidence interval of `mean_rank` (normal, over sets).
+    /// Half-width of the 95% confidence interval of `mean_rank` (Student's t over the wall sets);
+    /// NaN for a single set, which has no spread to estimate.
     pub rank_ci95: f64,
     /// Finishes in 1st..4th place (three players: 1st..3rd).
     pub ranks: [u64; 4],
@@ -341,10 +342,17 @@ pub fn run(arena: &Arena, progress: &(dyn Fn(u64) + Sync)) -> Report {
         } else {
             0.0
         };
+        // One wall set has no spread to estimate: no interval, rather than a "± 0" that reads as
+        // certainty.
+        let ci95 = if n > 1.0 {
+            t975(n as u64 - 1) * (var / n).sqrt()
+        } else {
+            f64::NAN
+        };
         let mut st = Standing {
             name: name.clone(),
             mean_rank: mean,
-            rank_ci95: 1.96 * (var / n).sqrt(),
+            rank_ci95: ci95,
             ..Standing::default()
         };
         let (mut score, mut wins, mut deal_ins, mut calls, mut riichis, mut win_points) =
@@ -386,4 +394,42 @@ pub fn run(arena: &Arena, progress: &(dyn Fn(u64) + Sync)) -> Report {
     }
     report.standings.sort_by(|a, b| a.mean_rank.total_cmp(&b.mean_rank));
     report
+}
+
+/// Student's t 0.975 quantiles for 1..30 degrees of freedom (any statistics table).
+const T975: [f64; 30] = [
+    12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228, 2.201, 2.179, 2.160, 2.145, 2.131, 2.120,
+    2.110, 2.101, 2.093, 2.086, 2.080, 2.074, 2.069, 2.064, 2.060, 2.056, 2.052, 2.048, 2.045, 2.042,
+];
+
+/// The 0.975 quantile of Student's t with `df` (at least 1) degrees of freedom, a 95% interval's
+/// multiplier: the table to 30, then the Cornish-Fisher expansion about the normal's 1.96 (within
+/// 1e-4 of the exact value there). Python's `rinshan.evaluate` uses the same.
+pub fn t975(df: u64) -> f64 {
+    match df {
+        0 => f64::NAN,
+        1..=30 => T975[df as usize - 1],
+        _ => {
+            let z = 1.959_963_984_540_054_f64;
+            let d = df as f64;
+            z + (z.powi(3) + z) / (4.0 * d) + (5.0 * z.powi(5) + 16.0 * z.powi(3) + 3.0 * z) / (96.0 * d * d)
+        }
+    }
+}
+
+#[cfg(test)]
+mod t_tests {
+    use super::t975;
+
+    #[test]
+    fn t_quantiles_meet_the_normal_and_the_table() {
+        // Exact values from a statistics table at 40, 60 and 120 degrees of freedom.
+        for (df, exact) in [(40, 2.021), (60, 2.000), (120, 1.980)] {
+            assert!((t975(df) - exact).abs() < 1e-3, "{df}: {}", t975(df));
+        }
+        assert!((t975(1_000_000) - 1.96).abs() < 1e-3);
+        assert_eq!(t975(1), 12.706);
+        assert!(t975(0).is_nan());
+        assert!((1..200).all(|d| t975(d) > t975(d + 1)));
+    }
 }
