@@ -10,6 +10,7 @@ mod dataset;
 mod error;
 mod mjai_bot;
 mod observe;
+mod reference;
 mod render;
 mod replay;
 mod score;
@@ -61,6 +62,9 @@ enum Command {
     MjaiBot(mjai_bot::Args),
     /// Many whole games with every invariant checked after every step, e.g. `rinshan soak --games 10000`
     Soak(soak::Args),
+    /// This command's reference: every subcommand and flag as Markdown (docs/cli.md) or, with
+    /// `--man`, a man page, e.g. `rinshan reference --man > rinshan.1`
+    Reference(reference::Args),
     /// Benchmarks: `bench hands` (shanten, scoring), `bench env` (environment steps by batch size)
     Bench {
         #[command(subcommand)]
@@ -82,6 +86,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Render(a) => render::run(a),
         Command::Serve(a) => serve::run(a),
         Command::Soak(a) => soak::run(a),
+        Command::Reference(a) => reference::run(a, <Cli as clap::CommandFactory>::command()),
         Command::Bench { what } => bench::run(what),
     }
 }
