@@ -20,6 +20,7 @@ A renamed flag or function then fails this test instead of misleading a reader.
 import os
 import pathlib
 import re
+import signal
 import subprocess
 import sys
 
@@ -122,13 +123,17 @@ def test_doc_block_runs(page, line, lang, code, directive, arg, cli, scratch):
                 ["bash", "-euo", "pipefail", "-c", head], cwd=scratch, env=env, timeout=TIMEOUT
             )
             assert done.returncode == 0, f"{where}: exit {done.returncode}"
-        proc = subprocess.Popen(["bash", "-c", last], cwd=scratch, env=env)
+        # A session of its own, so that the whole group (bash and the server) is stopped after.
+        proc = subprocess.Popen(["bash", "-c", last], cwd=scratch, env=env, start_new_session=True)
         try:
             assert proc.wait(timeout=SERVER_SECONDS) is None, f"{where}: the server exited"
         except subprocess.TimeoutExpired:
             pass
         finally:
-            proc.kill()
+            try:
+                os.killpg(proc.pid, signal.SIGKILL)
+            except ProcessLookupError:  # the server had exited: the assertion says so
+                pass
             proc.wait()
         return
     done = subprocess.run(
