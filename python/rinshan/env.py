@@ -118,6 +118,7 @@ class Spec:
     fields: dict
 
     def describe(self) -> str:
+        """The spec as text: the env's size, actions and every observation field's doc."""
         lines = [
             f"rinshan {self.variant} ({self.mode}), {self.num_envs} envs, "
             f"{self.num_actions} actions"
@@ -179,7 +180,55 @@ def _forms(observation: Union[str, Sequence[str], None], analysis: bool) -> list
 
 
 class Env:
-    """A batch of `num_envs` games stepped together; see `rinshan.make`."""
+    """A batch of `num_envs` games stepped together (`rinshan.make` builds one).
+
+    Every array the env returns is allocated once and rewritten in place by each `reset` and
+    `step`; copy what you keep (`TimeStep.copy`).
+
+    Args:
+        variant: The rule set, one of `VARIANTS`: `red` (Tenhou, red fives), `no_red`, `mjsoul`,
+            `mleague`, `wrc`, and the three-player `sanma` and `mjsoul_sanma`.
+        mode: How long a game lasts, one of `MODES`: `half` (East and South rounds), `east`
+            (East rounds), or `single` (one hand).
+        num_envs: Games in the batch (B), at least 1.
+        backend: `cpu` (rayon threads) or `gpu` (wgpu compute shaders, the same games bit for bit).
+        num_threads: CPU threads; None uses every core.
+        seed: The 64-bit seed that every game's wall derives from; the same seed plays the same
+            games.
+        observation: The observation forms to fill each step: `planes`, `tokens`, `packed`, a
+            sequence of them, or None / `()` for none (docs/observation.md lists their fields).
+        analysis: Also fill the analysis tier (shanten, waits, tiles left), for shaping and
+            baselines.
+        oracle: Allow `oracle()`, the information the seats cannot see (for critics).
+        auto_reset: Start the next game in the step that ends one (Pgx's same-step auto-reset);
+            False leaves a finished game until `reset`.
+        opponents: None (the caller plays every seat), a built-in agent's name from `AGENTS`
+            (`random`, `rule`, `greedy`, `defensive`), or `mjai:COMMAND` for an outside MJAI bot;
+            with `hero_seats` they play every other seat inside `step`.
+        hero_seats: The seat the caller plays (0..3), or one per env; needs `opponents`.
+        penalty: Points an illegal action costs (None: the rule set's own).
+        mjai_dialect: `app` (mjai.app's: a JSON array of events per line) or `stdio` (Mortal's
+            and mjai-manue's: one event per line), for `mjai:` opponents.
+        mjai_timeout: Seconds an MJAI bot has for each answer before it faults.
+        mjai_startup: Seconds an MJAI bot has to start.
+
+    Raises:
+        TypeError: `num_envs`, `seed`, `num_threads` or `hero_seats` of the wrong type.
+        ValueError: An unknown variant, mode, backend, observation form or agent, a count or seed
+            out of range, or `hero_seats` without `opponents`.
+        RuntimeError: `backend="gpu"` with no GPU adapter, or an MJAI bot that does not start.
+
+    Example:
+        >>> import numpy as np, rinshan
+        >>> env = rinshan.make("red", num_envs=8, seed=1)
+        >>> ts = env.reset()
+        >>> ts.legal_action_mask.shape
+        (8, 87)
+        >>> rng = np.random.default_rng(0)
+        >>> actions = [rng.choice(np.flatnonzero(m)) for m in ts.legal_action_mask]
+        >>> ts = env.step(np.array(actions))
+        >>> env.close()
+    """
 
     def __init__(
         self,
@@ -412,6 +461,7 @@ class Env:
 
     @property
     def closed(self) -> bool:
+        """Whether `close` was called."""
         return self._core.closed
 
     def __enter__(self) -> Env:
@@ -426,6 +476,30 @@ class Env:
         )
 
 
-def make(variant: str = "red", **kwargs) -> Env:
-    """A batch of games (see `Env` for the arguments): `rinshan.make("red", num_envs=4096)`."""
+def make(variant: str = "red", **kwargs: Any) -> Env:
+    """A batch of games to step together.
+
+    Args:
+        variant: The rule set, one of `VARIANTS` (`red` is Tenhou's with red fives).
+        **kwargs: `Env`'s other arguments: `mode`, `num_envs`, `backend`, `num_threads`, `seed`,
+            `observation`, `analysis`, `oracle`, `auto_reset`, `opponents`, `hero_seats`,
+            `penalty`, `mjai_dialect`, `mjai_timeout`, `mjai_startup`.
+
+    Returns:
+        The `Env`, its games not yet dealt: call `reset` first.
+
+    Raises:
+        TypeError: An argument of the wrong type, or one `Env` does not take.
+        ValueError: An unknown name (variant, mode, backend, form, agent) or a value out of range.
+        RuntimeError: The GPU backend with no adapter, or an MJAI bot that does not start.
+
+    Example:
+        >>> import rinshan
+        >>> env = rinshan.make("sanma", num_envs=2, opponents="defensive", hero_seats=0)
+        >>> env.spec.num_players, env.spec.num_actions
+        (3, 82)
+        >>> ts = env.reset(seed=7)
+        >>> ts = env.step(env.agent_actions("rule"))
+        >>> env.close()
+    """
     return Env(variant, **kwargs)

@@ -169,7 +169,7 @@ fn seat_waits(s: &mut GameState, seat: u32) -> [u32; 2] {
     waits_of(hand_counts(s, seat), meld_count(s, seat))
 }
 
-fn update_waits(s: &mut GameState, seat: u32) {
+pub fn update_waits(s: &mut GameState, seat: u32) {
     let w: [u32; 2] = seat_waits(s, seat);
     s.waits[(seat * 2u32) as usize] = w[0];
     s.waits[(seat * 2u32 + 1u32) as usize] = w[1];

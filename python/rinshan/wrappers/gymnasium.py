@@ -37,7 +37,23 @@ def _info(ts, i: Optional[int] = None) -> dict:
 
 
 class RinshanEnv(gymnasium.Env):
-    """One game of `variant`, every seat played by the caller."""
+    """One game of `variant`, every seat played by the caller.
+
+    Args:
+        variant: The rule set (`rinshan.VARIANTS`).
+        mode: `half`, `east` or `single` (`rinshan.MODES`).
+        penalty: Points an illegal action costs (None: the rule set's own).
+
+    Example:
+        >>> from rinshan.wrappers.gymnasium import RinshanEnv
+        >>> env = RinshanEnv("red")
+        >>> obs, info = env.reset(seed=3)
+        >>> sorted(obs)
+        ['action_mask', 'planes', 'scalars']
+        >>> action = int(obs["action_mask"].argmax())
+        >>> obs, reward, terminated, truncated, info = env.step(action)
+        >>> env.close()
+    """
 
     metadata = {"render_modes": []}
 
@@ -57,6 +73,7 @@ class RinshanEnv(gymnasium.Env):
         self._actor = 0
 
     def reset(self, *, seed: Optional[int] = None, options: Optional[dict] = None):
+        """A new game (the same seed deals the same game); returns `(observation, info)`."""
         super().reset(seed=seed)
         if seed is None:
             seed = int(self.np_random.integers(0, 2**63))
@@ -65,6 +82,9 @@ class RinshanEnv(gymnasium.Env):
         return _obs(ts, 0), _info(ts, 0)
 
     def step(self, action: Any):
+        """The seat to act plays `action`; returns `(observation, reward, terminated, truncated,
+        info)` with the observation of the next seat to act and the reward of the one that
+        acted."""
         actor = self._actor
         ts = self._env.step(np.array([int(action)]))
         self._actor = int(ts.current_player[0])
@@ -77,15 +97,26 @@ class RinshanEnv(gymnasium.Env):
         )
 
     def close(self):
+        """Frees the game."""
         self._env.close()
 
 
 class RinshanVectorEnv(gymnasium.vector.VectorEnv):
-    """`num_envs` games stepped together (keyword arguments go to `rinshan.make`)."""
+    """`num_envs` games stepped together, with same-step auto-reset.
+
+    Args:
+        variant: The rule set (`rinshan.VARIANTS`).
+        num_envs: Games in the batch.
+        **kwargs: `rinshan.make`'s other arguments (`mode`, `seed`, `backend`, `opponents` and
+            `hero_seats`...); the observation is the planes form.
+
+    Raises:
+        ValueError: An observation other than the planes form, or what `rinshan.make` refuses.
+    """
 
     metadata = {"autoreset_mode": gymnasium.vector.AutoresetMode.SAME_STEP, "render_modes": []}
 
-    def __init__(self, variant: str = "red", num_envs: int = 16, **kwargs):
+    def __init__(self, variant: str = "red", num_envs: int = 16, **kwargs: Any):
         kwargs.setdefault("observation", ("planes",))
         if tuple(kwargs["observation"]) != ("planes",):
             raise ValueError("the Gymnasium adapter observes the planes form")
@@ -101,11 +132,14 @@ class RinshanVectorEnv(gymnasium.vector.VectorEnv):
         self._actors = np.zeros(num_envs, dtype=np.int64)
 
     def reset(self, *, seed: Optional[int] = None, options: Optional[dict] = None):
+        """New games; returns the batched `(observations, infos)`."""
         ts = self._env.reset(seed=seed)
         self._actors = ts.current_player.astype(np.int64)
         return _obs(ts), _info(ts)
 
     def step(self, actions: Any):
+        """One action per game; returns batched `(observations, rewards, terminated, truncated,
+        infos)`, each reward that of the seat that acted."""
         actors = self._actors
         ts = self._env.step(np.asarray(actions))
         rewards = ts.rewards[np.arange(self.num_envs), actors].astype(np.float32)
@@ -113,4 +147,5 @@ class RinshanVectorEnv(gymnasium.vector.VectorEnv):
         return _obs(ts), rewards, ts.terminated.copy(), ts.truncated.copy(), _info(ts)
 
     def close_extras(self, **kwargs):
+        """Frees the games (Gymnasium's `close` calls it)."""
         self._env.close()

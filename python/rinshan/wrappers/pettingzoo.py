@@ -16,6 +16,23 @@ from ._spaces import planes_space
 
 
 class RinshanAECEnv(AECEnv):
+    """One game as a PettingZoo AEC env, agents `player_0`.. by absolute seat.
+
+    Args:
+        variant: The rule set (`rinshan.VARIANTS`); a three-player one has three agents.
+        mode: `half`, `east` or `single` (`rinshan.MODES`).
+
+    Example:
+        >>> from rinshan.wrappers.pettingzoo import RinshanAECEnv
+        >>> env = RinshanAECEnv("sanma")
+        >>> env.reset(seed=1)
+        >>> env.possible_agents
+        ['player_0', 'player_1', 'player_2']
+        >>> mask = env.observe(env.agent_selection)["action_mask"]
+        >>> env.step(int(mask.argmax()))
+        >>> env.close()
+    """
+
     metadata = {"name": "rinshan_v0", "render_modes": [], "is_parallelizable": False}
 
     def __init__(self, variant: str = "red", mode: str = "half"):
@@ -31,12 +48,15 @@ class RinshanAECEnv(AECEnv):
         self._seed = None
 
     def observation_space(self, agent):
+        """The planes form's `Dict` space with `action_mask` (the same for every agent)."""
         return self._obs_space
 
     def action_space(self, agent):
+        """`Discrete(A)`, the variant's action ids."""
         return self._act_space
 
     def observe(self, agent):
+        """`agent`'s planes observation, its legal mask all zeros unless it is to act."""
         seat = self.possible_agents.index(agent)
         obs = {k: v[0] for k, v in self._env.observe(seat, "planes").items()}
         ts = self._env.timestep
@@ -46,6 +66,7 @@ class RinshanAECEnv(AECEnv):
         return obs
 
     def reset(self, seed: Optional[int] = None, options: Optional[dict] = None):
+        """A new game; a seed starts a sequence of games that repeats."""
         if seed is not None:
             self._seed = np.random.SeedSequence(seed)
         elif self._seed is None:
@@ -61,6 +82,7 @@ class RinshanAECEnv(AECEnv):
         self.agent_selection = self.possible_agents[int(ts.current_player[0])]
 
     def step(self, action):
+        """`agent_selection` plays `action` (a finished agent's step is PettingZoo's dead step)."""
         agent = self.agent_selection
         if self.terminations[agent] or self.truncations[agent]:
             self._was_dead_step(action)
@@ -82,7 +104,9 @@ class RinshanAECEnv(AECEnv):
         self._accumulate_rewards()
 
     def render(self):
+        """Nothing: draw the table with `rinshan.Env.render` or `rinshan render`."""
         return None
 
     def close(self):
+        """Frees the game."""
         self._env.close()

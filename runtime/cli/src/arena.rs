@@ -10,6 +10,7 @@ use rinshan_engine::agents::Agent;
 use rinshan_engine::arena::{self, Arena, Player};
 use rinshan_engine::env::Mode;
 use rinshan_logs::mjai::seat::MjaiEntrant;
+use rinshan_search::SearchEntrant;
 use serde_json::json;
 
 use crate::args::{MjaiArgs, SeatArg, VariantArg};
@@ -17,8 +18,10 @@ use crate::error::CliError;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// The seats' agents, comma-separated, one per seat: random, rule, greedy, defensive, or
-    /// `mjai:COMMAND`, an MJAI bot run as `sh -c "COMMAND SEAT"` over its stdin and stdout
+    /// The seats' agents, comma-separated, one per seat: random, rule, greedy, defensive, the
+    /// look-ahead `search` (or `search:rollouts=N,ms=M,base=AGENT,margin=Z,seed=S`: play-outs
+    /// per decision, a time cap, the agent of the play-outs, how sure it must be to differ from
+    /// it), or `mjai:COMMAND`, an MJAI bot run as `sh -c "COMMAND SEAT"` over its stdin and stdout
     /// [default: defensive,greedy,rule,random; three players: defensive,greedy,rule]
     #[arg(long, value_delimiter = ',')]
     agents: Option<Vec<SeatArg>>,
@@ -69,17 +72,29 @@ pub fn run(args: Args) -> Result<(), CliError> {
         .iter()
         .filter_map(|a| match a {
             SeatArg::Mjai(cmd) => Some(args.mjai.entrant(cmd).map(|e| (a.to_string(), e))),
-            SeatArg::Builtin(_) => None,
+            SeatArg::Builtin(_) | SeatArg::Search(_) => None,
         })
         .collect::<Result<_, _>>()?;
+    let searches: Vec<(String, SearchEntrant)> = agents
+        .iter()
+        .filter_map(|a| match a {
+            SeatArg::Search(o) => Some((a.to_string(), SearchEntrant::new(*o))),
+            _ => None,
+        })
+        .collect();
     if !bots.is_empty() {
         MjaiArgs::check_rules(args.variant.variant, args.mode, None)?;
     }
     let mut next_bot = bots.iter();
+    let mut next_search = searches.iter();
     // A three-player game seats the first three; the fourth place is never played.
     let players: [Player; 4] = std::array::from_fn(|p| match agents.get(p) {
         Some(SeatArg::Builtin(a)) => Player::Builtin(*a),
         Some(SeatArg::Mjai(_)) => match next_bot.next() {
+            Some((name, entrant)) => Player::Entrant { name, entrant },
+            None => Player::Builtin(Agent::Random),
+        },
+        Some(SeatArg::Search(_)) => match next_search.next() {
             Some((name, entrant)) => Player::Entrant { name, entrant },
             None => Player::Builtin(Agent::Random),
         },
@@ -145,6 +160,15 @@ pub fn run(args: Args) -> Result<(), CliError> {
             "variant": arena.variant.to_string(), "mode": arena.mode.name(), "games": report.games,
             "seed": args.seed, "seconds": seconds, "games_per_second": report.games as f64 / seconds,
             "decisions": report.decisions, "standings": standings,
+            "search": searches.iter().map(|(name, e)| {
+                let t = e.totals();
+                json!({
+                    "agent": name, "decisions": t.decisions, "searched": t.searched, "rollouts": t.rollouts,
+                    "steps": t.steps, "changed": t.changed, "seconds": t.seconds,
+                    "ms_per_decision": 1e3 * t.seconds / t.decisions.max(1) as f64,
+                    "median_ms": t.median_ms, "p99_ms": t.p99_ms,
+                })
+            }).collect::<Vec<_>>(),
             "faults": report.faults.iter().map(|f| json!({
                 "player": f.player, "game": f.game, "seat": f.seat, "decision": f.decision, "message": f.message,
             })).collect::<Vec<_>>(),
@@ -200,6 +224,21 @@ pub fn run(args: Args) -> Result<(), CliError> {
             100.0 * s.call_rate,
             100.0 * s.riichi_rate,
             s.points_per_win
+        );
+    }
+    for (name, e) in &searches {
+        let t = e.totals();
+        println!(
+            "{name}: {} decisions, {} looked ahead at ({} rollouts, {:.0} steps each), {} unlike its base agent; \
+             {:.1} ms per decision on average (median {:.1}, p99 {:.1}; one thread each)",
+            t.decisions,
+            t.searched,
+            t.rollouts,
+            t.steps as f64 / t.rollouts.max(1) as f64,
+            t.changed,
+            1e3 * t.seconds / t.decisions.max(1) as f64,
+            t.median_ms,
+            t.p99_ms
         );
     }
     if !report.faults.is_empty() {

@@ -94,6 +94,8 @@ pub enum SeatArg {
     Builtin(Agent),
     /// An MJAI bot's command line.
     Mjai(String),
+    /// The look-ahead agent with its settings.
+    Search(rinshan_search::Options),
 }
 
 impl std::str::FromStr for SeatArg {
@@ -102,10 +104,11 @@ impl std::str::FromStr for SeatArg {
         match s.strip_prefix("mjai:") {
             Some(cmd) if cmd.trim().is_empty() => Err("`mjai:` needs the bot's command line after it".into()),
             Some(cmd) => Ok(SeatArg::Mjai(cmd.trim().to_string())),
+            None if s == "search" || s.starts_with("search:") => s.parse().map(SeatArg::Search),
             None => s
                 .parse::<Agent>()
                 .map(SeatArg::Builtin)
-                .map_err(|e| format!("{e} (or mjai:COMMAND)")),
+                .map_err(|e| format!("{e} (or search, search:rollouts=N, mjai:COMMAND)")),
         }
     }
 }
@@ -119,6 +122,7 @@ impl std::fmt::Display for SeatArg {
         match self {
             SeatArg::Builtin(a) => write!(f, "{a}"),
             SeatArg::Mjai(cmd) => write!(f, "mjai:{cmd}"),
+            SeatArg::Search(o) => f.write_str(&o.name()),
         }
     }
 }

@@ -162,11 +162,17 @@ fn seatings(
             "--agents needs {seats} agents, one per seat{three}, or `uniform`; got {n}"
         )));
     }
+    if players.iter().any(|p| matches!(p, SeatArg::Search(_))) {
+        return Err(CliError::input(
+            "the look-ahead agent plays in `rinshan arena` (e.g. --agents search,defensive,defensive,defensive); \
+             selfplay's batched games take the built-in agents and MJAI bots",
+        ));
+    }
     let kernel: Vec<Agent> = players
         .iter()
         .map(|a| match a {
             SeatArg::Builtin(a) => *a,
-            SeatArg::Mjai(_) => Agent::Random,
+            SeatArg::Mjai(_) | SeatArg::Search(_) => Agent::Random,
         })
         .collect();
     // A place past the list (three players' fourth) is never played.
@@ -188,7 +194,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
             .iter()
             .map(|p| match p {
                 SeatArg::Mjai(cmd) => args.mjai.entrant(cmd).map(Some),
-                SeatArg::Builtin(_) => Ok(None),
+                SeatArg::Builtin(_) | SeatArg::Search(_) => Ok(None),
             })
             .collect::<Result<_, _>>()?,
         None => Vec::new(),

@@ -20,6 +20,45 @@
 //! * [`invariants`] — what holds of every game state (tiles and points conserved, one seat to act)
 //! * [`random`]   — deterministic random hands and legal actions for tests, benchmarks and self-play
 //! * [`names`]    — the names users write for variants, modes and the rest, and their error
+//!
+//! Four single hands of Tenhou's rules played to their end, each seat choosing among its legal
+//! actions by a counter (any policy goes where the counter is):
+//!
+//! ```
+//! use rinshan_engine::env::{Config, Env, Mode};
+//! use rinshan_engine::Variant;
+//!
+//! let mut env = Env::new(Config { mode: Mode::Single, auto_reset: false, ..Config::new(Variant::Red, 4) })?;
+//! env.reset()?;
+//! let mut places: Vec<Option<[u8; 4]>> = vec![None; env.batch()];
+//! let mut turn = 0usize;
+//! while places.iter().any(Option::is_none) {
+//!     let step = env.last();
+//!     let actions: Vec<u32> = (0..env.batch())
+//!         .map(|i| {
+//!             // A finished hand offers nothing and stays finished, whatever it is given.
+//!             let legal: Vec<u32> = step.legal_actions(i).collect();
+//!             legal.get(turn % legal.len().max(1)).copied().unwrap_or(0)
+//!         })
+//!         .collect();
+//!     let step = env.step(&actions)?;
+//!     // The step that ends a game carries its places (0 = first).
+//!     for (i, place) in places.iter_mut().enumerate() {
+//!         if step.terminated[i] && place.is_none() {
+//!             *place = Some(step.ranks[i]);
+//!         }
+//!     }
+//!     assert!(step.illegal.iter().all(|&bad| !bad));
+//!     turn += 1;
+//! }
+//! // Every hand ended by the rules, its places a permutation of first to fourth.
+//! for place in places.into_iter().flatten() {
+//!     let mut sorted = place;
+//!     sorted.sort();
+//!     assert_eq!(sorted, [0, 1, 2, 3]);
+//! }
+//! # Ok::<(), rinshan_engine::env::EnvError>(())
+//! ```
 
 #![warn(missing_docs)]
 

@@ -86,6 +86,9 @@ pub fn resample_hidden(variant: Variant, s: &GameState, observer: u32, own_draws
             sizes[q as usize] += counts[t as usize] as usize;
         }
     }
+    // In one order whatever the hidden tiles' places were: the same seed then deals the same
+    // tiles from every state with this view (the look-ahead's worlds depend on the view alone).
+    pool.sort_unstable();
     for i in (1..pool.len()).rev() {
         pool.swap(i, rng.below(i as u32 + 1) as usize);
     }

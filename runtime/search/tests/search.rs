@@ -1,0 +1,179 @@
+//! The look-ahead against what must hold whatever its estimates: it does not see what its seat
+//! cannot, it is deterministic for a rollout budget, a win in hand ranks first, and it plays whole
+//! games in the arena without a fault.
+
+use rinshan_engine::agents::Agent;
+use rinshan_engine::arena::{self, Arena, Player};
+use rinshan_engine::env::Mode;
+use rinshan_engine::generated::kernel::{GameState, ResetInput, MODE_HALF};
+use rinshan_engine::observe::{resample_hidden, OwnDraws};
+use rinshan_engine::random::Rng;
+use rinshan_engine::{with_variant, Variant};
+use rinshan_search::value::placement_value;
+use rinshan_search::{Options, Search, SearchEntrant};
+
+/// A position where the look-ahead plays out its choice: the state, the seat to act, and the wall
+/// places that seat drew this round.
+struct Position {
+    state: GameState,
+    seat: u32,
+    own_draws: Vec<u32>,
+}
+
+/// Every `every`-th such position of a half game of `defensive` agents from `seed`.
+fn positions(variant: Variant, seed: u64, every: usize) -> Vec<Position> {
+    let search = Search::new(variant, Options::default());
+    with_variant!(variant, v => {
+        let mut s = v::game_new(ResetInput {
+            seed: [seed as u32, (seed >> 32) as u32],
+            mode: MODE_HALF,
+            dealer: 4,
+            use_wall: 0,
+            wall: [0; 136],
+            uma: [0; 4],
+            penalty: v::host::ILLEGAL_ACTION_PENALTY,
+            auto_reset: 0,
+        });
+        let seats = variant.seats();
+        let mut own: Vec<OwnDraws> = vec![OwnDraws::default(); 4];
+        for q in 0..seats {
+            own[q as usize].update(variant, &s, &mut s.clone(), q);
+        }
+        let (mut out, mut k) = (Vec::new(), 0);
+        while s.terminated == 0 {
+            if search.looks_ahead(&s) {
+                k += 1;
+                if k % every == 0 {
+                    out.push(Position { state: s, seat: s.current, own_draws: own[s.current as usize].positions.clone() });
+                }
+            }
+            let a = v::seat_act(&mut { s }, Agent::Defensive.kernel());
+            let before = s;
+            v::game_step(&mut s, a);
+            for q in 0..seats {
+                own[q as usize].update(variant, &before, &mut s.clone(), q);
+            }
+        }
+        out
+    })
+}
+
+#[test]
+fn decisions_do_not_change_when_the_hidden_tiles_are_shuffled() {
+    for (variant, seed) in [(Variant::Red, 11), (Variant::Sanma, 12), (Variant::Mleague, 13)] {
+        let search = Search::new(
+            variant,
+            Options {
+                rollouts: 24,
+                seed: 5,
+                ..Options::default()
+            },
+        );
+        let mut rng = Rng::new(seed);
+        let found = positions(variant, seed, 9);
+        assert!(found.len() >= 10, "{variant}: {} positions", found.len());
+        for (i, p) in found.iter().enumerate() {
+            let seen = search.decide(&p.state, p.seat, &p.own_draws, i as u64);
+            assert!(!seen.candidates.is_empty());
+            for _ in 0..2 {
+                let other = resample_hidden(variant, &p.state, p.seat, &p.own_draws, &mut rng);
+                assert_eq!(
+                    search.decide(&other, p.seat, &p.own_draws, i as u64),
+                    seen,
+                    "{variant} position {i}: the hidden tiles changed the decision"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn a_rollout_budget_and_a_seed_give_the_same_decision_every_time() {
+    let search = Search::new(
+        Variant::Red,
+        Options {
+            rollouts: 40,
+            ..Options::default()
+        },
+    );
+    for (i, p) in positions(Variant::Red, 21, 25).iter().enumerate() {
+        let a = search.decide(&p.state, p.seat, &p.own_draws, i as u64);
+        assert_eq!(a, search.decide(&p.state, p.seat, &p.own_draws, i as u64));
+        // The budget is spent: the halving splits it, each round's share at least one world per
+        // candidate.
+        assert!(a.rollouts >= 40 / 2, "{} rollouts", a.rollouts);
+    }
+}
+
+#[test]
+fn a_win_on_the_own_draw_is_valued_by_the_scores_it_pays() {
+    // A tsumo ends the round at once: in every world it pays the same (no riichi, so no ura dora
+    // to deal), so its estimate is exact and equals the value of the true game after it. (Not
+    // that it is always played: on the last draw a cheap tsumo can be worth less than the tenpai
+    // payment the exhaustive draw brings, and the look-ahead sees it.)
+    let search = Search::new(
+        Variant::Red,
+        Options {
+            rollouts: 64,
+            ..Options::default()
+        },
+    );
+    let tsumo = rinshan_engine::generated::red::ACTION_TSUMO;
+    let mut checked = 0;
+    for seed in 0..60 {
+        for p in positions(Variant::Red, 100 + seed, 1) {
+            let riichi = p.state.seat_flags[p.seat as usize] & rinshan_engine::generated::kernel::SEAT_RIICHI != 0;
+            if p.state.mask[tsumo as usize / 32] >> (tsumo % 32) & 1 == 0 || riichi {
+                continue;
+            }
+            let d = search.decide(&p.state, p.seat, &p.own_draws, seed);
+            let won = d
+                .candidates
+                .iter()
+                .find(|c| c.action == tsumo)
+                .expect("tsumo is a candidate");
+            let mut after = p.state;
+            rinshan_engine::generated::red::game_step(&mut after, tsumo);
+            let exact = placement_value(&after, p.seat, 4);
+            assert!(
+                (won.mean - exact).abs() < 1e-12 && won.stderr < 1e-12,
+                "seed {seed}: {won:?} vs {exact}"
+            );
+            checked += 1;
+        }
+        if checked >= 6 {
+            return;
+        }
+    }
+    panic!("only {checked} tsumo positions in 60 games");
+}
+
+#[test]
+fn the_look_ahead_plays_whole_games_in_the_arena() {
+    for variant in [Variant::Red, Variant::Sanma] {
+        let entrant = SearchEntrant::new(Options {
+            rollouts: 8,
+            ..Options::default()
+        });
+        let search = Player::Entrant {
+            name: "search",
+            entrant: &entrant,
+        };
+        let def = Player::Builtin(Agent::Defensive);
+        let report = arena::run(
+            &Arena {
+                variant,
+                mode: Mode::East,
+                players: [search, def, def, def],
+                sets: 1,
+                seed: 3,
+            },
+            &|_| {},
+        );
+        assert!(report.faults.is_empty(), "{:?}", report.faults);
+        assert!(report.standings.iter().all(|s| s.illegal == 0));
+        let t = entrant.totals();
+        assert!(t.searched > 0 && t.searched <= t.decisions, "{t:?}");
+        assert!(t.rollouts >= t.searched, "{t:?}");
+    }
+}
