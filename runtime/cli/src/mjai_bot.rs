@@ -5,18 +5,20 @@
 
 use std::io::{BufRead, Write};
 
-use rinshan_engine::agents::Agent;
 use rinshan_engine::Variant;
 use rinshan_logs::mjai::bot::Dialect;
 use rinshan_logs::mjai::player::Player;
+use rinshan_search::Search;
 
+use crate::args::SeatArg;
 use crate::error::CliError;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// The agent that decides: random, rule, greedy, defensive
+    /// The agent that decides: random, rule, greedy, defensive, or the look-ahead `search` (or
+    /// `search:rollouts=N:ms=M:...` as in `arena --agents`; keep ms within the host's time limit)
     #[arg(long, default_value = "defensive")]
-    agent: Agent,
+    agent: SeatArg,
     /// app (mjai.app: a JSON array of events per line, one reaction each) or stdio (Mortal:
     /// one event per line, a reaction when the seat can act)
     #[arg(long, default_value = "app")]
@@ -31,7 +33,26 @@ pub fn run(args: Args) -> Result<(), CliError> {
         return Err(CliError::input("the seat is 0, 1, 2 or 3"));
     }
     let mut player = Player::new(args.seat);
-    let mut decide = |s: &rinshan_engine::generated::kernel::GameState| Ok(args.agent.act(Variant::Red, s));
+    let search = match &args.agent {
+        SeatArg::Builtin(_) => None,
+        SeatArg::Search(o) => Some(Search::new(Variant::Red, *o)),
+        SeatArg::Mjai(_) => {
+            return Err(CliError::input(
+                "an MJAI bot cannot be the agent of rinshan's own MJAI bot",
+            ))
+        }
+    };
+    let mut nonce = 0u64;
+    let mut decide = |s: &rinshan_engine::generated::kernel::GameState| {
+        nonce += 1;
+        match (&args.agent, &search) {
+            // The state is rebuilt from the seat's events; the look-ahead deals the rest afresh
+            // (the wall places of its past draws play no part in what follows).
+            (_, Some(search)) => Ok(search.decide(s, s.current, &[], nonce).action),
+            (SeatArg::Builtin(agent), None) => Ok(agent.act(Variant::Red, s)),
+            _ => Err("no agent".to_string()),
+        }
+    };
     let mut log = |message: String| eprintln!("rinshan mjai-bot: {message}");
     let stdin = std::io::stdin();
     let mut stdout = std::io::stdout().lock();

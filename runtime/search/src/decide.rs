@@ -13,11 +13,11 @@ use std::time::Instant;
 
 use rinshan_engine::agents::Agent;
 use rinshan_engine::env::action_names;
-use rinshan_engine::generated::kernel::GameState;
+use rinshan_engine::generated::kernel::{GameState, SEAT_RIICHI};
 use rinshan_engine::random::Rng;
-use rinshan_engine::Variant;
+use rinshan_engine::{with_variant, Variant};
 
-use crate::options::Options;
+use crate::options::{Focus, Options};
 use crate::rollout::play_round;
 use crate::value::placement_value;
 use crate::world::deal;
@@ -58,6 +58,8 @@ pub struct Search {
     options: Options,
     /// The actions of a seat's own turn (discards): a decision that offers one is looked ahead at.
     own_turn: [u32; 3],
+    /// The riichi declaration's action id.
+    riichi: u32,
 }
 
 fn legal(mask: &[u32; 3]) -> Vec<u32> {
@@ -97,6 +99,7 @@ impl Search {
             variant,
             options,
             own_turn,
+            riichi: with_variant!(variant, v => v::ACTION_RIICHI),
         }
     }
 
@@ -106,10 +109,22 @@ impl Search {
     }
 
     /// Whether the look-ahead plays out the decision at `s`: two or more legal actions on the
-    /// seat's own turn. Claim prompts are left to the base agent.
+    /// seat's own turn, and with [`Focus::Threats`] another seat in riichi or riichi legal. Claim
+    /// prompts are left to the base agent.
     pub fn looks_ahead(&self, s: &GameState) -> bool {
         let own = (0..3).any(|w| s.mask[w] & self.own_turn[w] != 0);
-        own && s.mask.iter().map(|w| w.count_ones()).sum::<u32>() >= 2
+        if !own || s.mask.iter().map(|w| w.count_ones()).sum::<u32>() < 2 {
+            return false;
+        }
+        match self.options.focus {
+            Focus::All => true,
+            Focus::Threats => {
+                let riichi_legal = s.mask[self.riichi as usize / 32] >> (self.riichi % 32) & 1 == 1;
+                let threat =
+                    (0..self.variant.seats()).any(|q| q != s.current && s.seat_flags[q as usize] & SEAT_RIICHI != 0);
+                riichi_legal || threat
+            }
+        }
     }
 
     /// The action for `observer`, the seat to act at `s`, from what it can see: `own_draws` are
@@ -139,10 +154,10 @@ impl Search {
         let mut values: Vec<Vec<f64>> = vec![Vec::new(); actions.len()];
         let mut alive: Vec<usize> = (0..actions.len()).collect();
         let halvings = (usize::BITS - (actions.len() - 1).leading_zeros()).max(1);
-        // Two thirds of the budget choose a challenger; the rest pits it against the base agent's
-        // action in fresh worlds. The halving's best is the luckiest of many noisy estimates (the
+        // Half the budget chooses a challenger; the rest pits it against the base agent's action
+        // in fresh worlds. The halving's best is the luckiest of many noisy estimates (the
         // winner's curse): only worlds that played no part in choosing it judge it fairly.
-        let selection = self.options.rollouts as usize * 2 / 3;
+        let selection = self.options.rollouts as usize / 2;
         let per_halving = selection / halvings as usize;
         let play = |c: usize, world: &GameState, decision: &mut Decision| {
             let (end, steps) = play_round(self.variant, *world, actions[c], self.options.base);

@@ -9,7 +9,7 @@
 //! * [`value`]   — a round's final scores as a placement-aware value.
 //! * [`decide`]  — the budget spent over the candidates: common worlds for all (paired
 //!   comparisons), successive halving, and a switch from the base agent's choice only on evidence.
-//! * [`options`] — `search:rollouts=256,base=defensive` as users write it.
+//! * [`options`] — `search:rollouts=256:base=defensive` as users write it.
 //! * [`seat`]    — the agent as an arena [`Entrant`](rinshan_engine::arena::Entrant).
 //!
 //! It sees only what its seat sees: every world is dealt by the observation leak tests'
@@ -21,7 +21,7 @@
 //! use rinshan_engine::env::{Config, Env};
 //! use rinshan_engine::observe::OwnDraws;
 //! use rinshan_engine::Variant;
-//! use rinshan_search::{Options, Search};
+//! use rinshan_search::{Focus, Options, Search};
 //!
 //! let mut env = Env::new(Config::new(Variant::Red, 1))?;
 //! env.reset()?;
@@ -30,9 +30,11 @@
 //! // beyond what the state shows every seat.
 //! let mut own = OwnDraws::default();
 //! own.update(Variant::Red, &state, &mut state.clone(), state.current);
-//! let search = Search::new(Variant::Red, Options { rollouts: 32, ..Options::default() });
+//! // Every own-turn decision (by default only those with a riichi in play).
+//! let search = Search::new(Variant::Red, Options { rollouts: 32, focus: Focus::All, ..Options::default() });
 //! let decision = search.decide(&state, state.current, &own.positions, 0);
 //! assert!(state.mask[decision.action as usize / 32] >> (decision.action % 32) & 1 == 1);
+//! assert!(decision.candidates.len() >= 2 && decision.rollouts >= 16);
 //! # Ok::<(), rinshan_engine::env::EnvError>(())
 //! ```
 
@@ -46,5 +48,5 @@ pub mod value;
 pub mod world;
 
 pub use decide::{Decision, Search};
-pub use options::Options;
+pub use options::{Focus, Options};
 pub use seat::SearchEntrant;

@@ -1,4 +1,5 @@
-//! The look-ahead's settings as users write them: `search`, or `search:rollouts=512,base=rule`.
+//! The look-ahead's settings as users write them: `search`, or `search:rollouts=512:base=rule`
+//! (colons, as commas separate the seats of `--agents`).
 
 use rinshan_engine::agents::Agent;
 
@@ -19,6 +20,19 @@ pub struct Options {
     pub margin: f64,
     /// Seeds the worlds.
     pub seed: u64,
+    /// Which own-turn decisions are looked ahead at.
+    pub focus: Focus,
+}
+
+/// Which decisions the look-ahead plays out.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Focus {
+    /// Every own-turn decision with a choice.
+    All,
+    /// Those where much is at stake: another seat is in riichi (push or fold), or the seat may
+    /// declare riichi. The base agent's efficient discards elsewhere differ from the alternatives
+    /// by less than the play-outs can tell apart at these budgets (docs/strength.md).
+    Threats,
 }
 
 impl Default for Options {
@@ -27,8 +41,9 @@ impl Default for Options {
             rollouts: 256,
             ms: 0,
             base: Agent::Defensive,
-            margin: 1.0,
+            margin: 2.0,
             seed: 0,
+            focus: Focus::Threats,
         }
     }
 }
@@ -53,9 +68,12 @@ impl Options {
         if self.seed != d.seed {
             parts.push(format!("seed={}", self.seed));
         }
+        if self.focus != d.focus {
+            parts.push(format!("focus={}", ["all", "threats"][self.focus as usize]));
+        }
         match parts.is_empty() {
             true => "search".into(),
-            false => format!("search:{}", parts.join(",")),
+            false => format!("search:{}", parts.join(":")),
         }
     }
 }
@@ -63,21 +81,22 @@ impl Options {
 impl std::str::FromStr for Options {
     type Err = String;
 
-    /// `search` or `search:KEY=VALUE,...` with keys `rollouts`, `ms`, `base`, `margin`, `seed`.
+    /// `search` or `search:KEY=VALUE:...` with keys `rollouts`, `ms`, `base`, `margin`, `seed`,
+    /// `focus`.
     fn from_str(s: &str) -> Result<Options, String> {
         let rest = match s.strip_prefix("search") {
             Some("") => return Ok(Options::default()),
             Some(r) => r
                 .strip_prefix(':')
-                .ok_or_else(|| format!("`{s}`: write search or search:rollouts=N,..."))?,
+                .ok_or_else(|| format!("`{s}`: write search or search:rollouts=N:..."))?,
             None => {
                 return Err(format!(
-                    "`{s}` is not the look-ahead agent (search or search:rollouts=N,...)"
+                    "`{s}` is not the look-ahead agent (search or search:rollouts=N:...)"
                 ))
             }
         };
         let mut o = Options::default();
-        for part in rest.split(',').filter(|p| !p.is_empty()) {
+        for part in rest.split(':').filter(|p| !p.is_empty()) {
             let (key, value) = part
                 .split_once('=')
                 .ok_or_else(|| format!("search option `{part}`: write KEY=VALUE"))?;
@@ -93,9 +112,16 @@ impl std::str::FromStr for Options {
                     }
                 }
                 "seed" => o.seed = value.parse().map_err(|e| bad(&e))?,
+                "focus" => {
+                    o.focus = match value {
+                        "all" => Focus::All,
+                        "threats" => Focus::Threats,
+                        _ => return Err(bad(&"all or threats")),
+                    }
+                }
                 _ => {
                     return Err(format!(
-                        "unknown search option `{key}` (rollouts, ms, base, margin, seed)"
+                        "unknown search option `{key}` (rollouts, ms, base, margin, seed, focus)"
                     ))
                 }
             }
@@ -116,7 +142,7 @@ mod tests {
         for text in [
             "search",
             "search:rollouts=64",
-            "search:rollouts=8,ms=50,base=rule,margin=0.5,seed=3",
+            "search:rollouts=8:ms=50:base=rule:margin=0.5:seed=3:focus=all",
         ] {
             let o: Options = text.parse().unwrap();
             assert_eq!(o.name(), text);

@@ -1,13 +1,20 @@
 //! Worlds a seat cannot tell from the real game: the tiles it cannot see dealt afresh.
 //!
 //! The tiles come from [`resample_hidden`], the observation leak tests' oracle of what a seat may
-//! not see. That oracle scrambles what follows from the other hands (their waits, furiten, claim
-//! prompts) with noise, as only observations are read from it; a world is played on, so those are
-//! recomputed here from the new hands. A seat in riichi holds a tenpai hand, so a world where one
-//! does not is dealt again (a few tries; the last is kept otherwise): the cheapest belief there is,
-//! and the one that matters most, as a riichi seat is the danger a look-ahead must see.
+//! not see. It deals the other seats uniformly random hands, which real hands are not: a seat
+//! that has discarded twelve tiles has kept the tiles it wanted, and is tenpai about half the time
+//! in `defensive` self-play, where a uniform hand almost never is (the `belief` example measures
+//! it: docs/strength.md). Worlds of such hands have no threats in them, and a look-ahead in them
+//! pushes into deal-ins. So each other seat's hand is built as it was in the real game: once per
+//! tile the seat has discarded, it draws a tile from the unseen wall and lets go of the tile that
+//! leaves its hand the fewest steps from tenpai (the tile goes back to the wall's place). What the
+//! oracle scrambles with noise (waits, furiten, claim prompts) is then recomputed from the new
+//! hands, and a seat in riichi, which holds a tenpai hand, is dealt again until it does (a few
+//! tries; the last is kept otherwise).
 
-use rinshan_engine::generated::kernel::{self, GameState, SEAT_FURITEN_RIICHI, SEAT_FURITEN_TEMP, SEAT_RIICHI};
+use rinshan_engine::generated::kernel::{
+    self, GameState, ShantenInput, NO_TILE_VALUE, SEAT_FURITEN_RIICHI, SEAT_FURITEN_TEMP, SEAT_RIICHI,
+};
 use rinshan_engine::observe::resample_hidden;
 use rinshan_engine::random::Rng;
 use rinshan_engine::Variant;
@@ -15,18 +22,26 @@ use rinshan_engine::Variant;
 /// Deals of a world before one whose riichi seats are all tenpai is given up on.
 pub const RIICHI_TRIES: u32 = 16;
 
-/// A world for `observer` at `s` (its decision): the hidden tiles dealt afresh from `rng`, the
-/// other seats' waits recomputed from their new hands, their furiten and claim prompts cleared
-/// (what made them is hidden: the world starts them fresh), and each riichi seat tenpai where
-/// [`RIICHI_TRIES`] deals allow. `own_draws` are the wall places `observer` drew from this round
-/// ([`rinshan_engine::observe::OwnDraws`]).
+/// A world for `observer` at `s` (its decision): the hidden tiles dealt afresh from `rng`, each
+/// other seat's hand built by as many draws as it has discarded tiles, their waits recomputed,
+/// their furiten and claim prompts cleared (what made them is hidden: the world starts them
+/// fresh), and each riichi seat tenpai where [`RIICHI_TRIES`] deals allow. `own_draws` are the
+/// wall places `observer` drew from this round ([`rinshan_engine::observe::OwnDraws`]).
 pub fn deal(variant: Variant, s: &GameState, observer: u32, own_draws: &[u32], rng: &mut Rng) -> GameState {
     let seats = variant.seats();
+    let replacements = variant.drawn_replacements(s);
+    let live: Vec<u32> = (s.next_draw..variant.wall().live_end)
+        .filter(|i| !replacements.contains(i))
+        .collect();
     let mut world = *s;
     for _ in 0..RIICHI_TRIES {
         world = resample_hidden(variant, s, observer, own_draws, rng);
         let mut riichi_tenpai = true;
         for q in (0..seats).filter(|&q| q != observer) {
+            // The seat that has just drawn holds one tile more than its discards account for.
+            if !(s.current == q && s.drawn != NO_TILE_VALUE) {
+                build_hand(&mut world, q, kernel::byte_of(s.river_lens, q), &live, rng);
+            }
             kernel::update_waits(&mut world, q);
             let flags = &mut world.seat_flags[q as usize];
             *flags &= !(SEAT_FURITEN_TEMP | SEAT_FURITEN_RIICHI);
@@ -40,4 +55,70 @@ pub fn deal(variant: Variant, s: &GameState, observer: u32, own_draws: &[u32], r
         }
     }
     world
+}
+
+fn wall_set(s: &mut GameState, i: u32, v: u32) {
+    let w = &mut s.wall[(i / 4) as usize];
+    *w = (*w & !(255 << ((i % 4) * 8))) | (v << ((i % 4) * 8));
+}
+
+fn shanten(counts: [u32; 34]) -> i32 {
+    kernel::shanten(ShantenInput { hand: counts }).shanten
+}
+
+/// Seat `q`'s hand improved by `draws` draws from the unseen `live` wall places, each followed by
+/// the discard that keeps the fewest steps from tenpai (the first such tile type; the drawn tile
+/// itself where it is among them, so a hand that is as good as it gets is left alone).
+fn build_hand(s: &mut GameState, q: u32, draws: u32, live: &[u32], rng: &mut Rng) {
+    if live.is_empty() {
+        return;
+    }
+    for _ in 0..draws {
+        let place = live[rng.below(live.len() as u32) as usize];
+        let drawn = kernel::wall_tile(s, place);
+        let drawn_type = kernel::value_type(drawn);
+        let mut counts = kernel::hand_counts(s, q);
+        counts[drawn_type as usize] += 1;
+        let mut best = (shanten_without(counts, drawn_type), drawn_type);
+        for t in (0..34u32).filter(|&t| counts[t as usize] > 0 && t != drawn_type) {
+            let x = shanten_without(counts, t);
+            if x < best.0 {
+                best = (x, t);
+            }
+        }
+        let out = best.1;
+        if out == drawn_type {
+            continue;
+        }
+        // The tile let go: a plain copy where the seat holds one, else its red five.
+        let suit = out / 9;
+        let red = out < 27 && out % 9 == 4 && kernel::holds_red(s, q, suit);
+        let out_value = match red && counts[out as usize] - u32::from(drawn_type == out) == 1 {
+            true => 34 + suit,
+            false => out,
+        };
+        set_count(s, q, drawn_type, 1);
+        if drawn >= 34 {
+            s.red |= 1 << (q * 3 + drawn - 34);
+        }
+        set_count(s, q, out, -1);
+        if out_value >= 34 {
+            s.red &= !(1 << (q * 3 + out_value - 34));
+        }
+        wall_set(s, place, out_value);
+    }
+}
+
+fn shanten_without(mut counts: [u32; 34], t: u32) -> i32 {
+    counts[t as usize] -= 1;
+    shanten(counts)
+}
+
+fn set_count(s: &mut GameState, q: u32, t: u32, by: i32) {
+    let word = &mut s.hands[(q * 5 + t / 8) as usize];
+    let shift = (t % 8) * 4;
+    *word = match by > 0 {
+        true => *word + (1 << shift),
+        false => *word - (1 << shift),
+    };
 }

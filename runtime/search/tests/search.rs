@@ -10,7 +10,17 @@ use rinshan_engine::observe::{resample_hidden, OwnDraws};
 use rinshan_engine::random::Rng;
 use rinshan_engine::{with_variant, Variant};
 use rinshan_search::value::placement_value;
-use rinshan_search::{Options, Search, SearchEntrant};
+use rinshan_search::{Focus, Options, Search, SearchEntrant};
+
+/// The look-ahead at every own-turn decision with a choice.
+const ALL: Options = Options {
+    rollouts: 256,
+    ms: 0,
+    base: Agent::Defensive,
+    margin: 2.0,
+    seed: 0,
+    focus: Focus::All,
+};
 
 /// A position where the look-ahead plays out its choice: the state, the seat to act, and the wall
 /// places that seat drew this round.
@@ -22,7 +32,7 @@ struct Position {
 
 /// Every `every`-th such position of a half game of `defensive` agents from `seed`.
 fn positions(variant: Variant, seed: u64, every: usize) -> Vec<Position> {
-    let search = Search::new(variant, Options::default());
+    let search = Search::new(variant, ALL);
     with_variant!(variant, v => {
         let mut s = v::game_new(ResetInput {
             seed: [seed as u32, (seed >> 32) as u32],
@@ -64,13 +74,13 @@ fn decisions_do_not_change_when_the_hidden_tiles_are_shuffled() {
         let search = Search::new(
             variant,
             Options {
-                rollouts: 24,
+                rollouts: 16,
                 seed: 5,
-                ..Options::default()
+                ..ALL
             },
         );
         let mut rng = Rng::new(seed);
-        let found = positions(variant, seed, 9);
+        let found = positions(variant, seed, 20);
         assert!(found.len() >= 10, "{variant}: {} positions", found.len());
         for (i, p) in found.iter().enumerate() {
             let seen = search.decide(&p.state, p.seat, &p.own_draws, i as u64);
@@ -93,14 +103,14 @@ fn a_rollout_budget_and_a_seed_give_the_same_decision_every_time() {
         Variant::Red,
         Options {
             rollouts: 40,
-            ..Options::default()
+            ..ALL
         },
     );
     for (i, p) in positions(Variant::Red, 21, 25).iter().enumerate() {
         let a = search.decide(&p.state, p.seat, &p.own_draws, i as u64);
         assert_eq!(a, search.decide(&p.state, p.seat, &p.own_draws, i as u64));
-        // The budget is spent: the halving splits it, each round's share at least one world per
-        // candidate.
+        // The budget is spent: half on the halving (at least one world per candidate a round),
+        // half on the duel, when there is a challenger.
         assert!(a.rollouts >= 40 / 2, "{} rollouts", a.rollouts);
     }
 }
@@ -115,7 +125,7 @@ fn a_win_on_the_own_draw_is_valued_by_the_scores_it_pays() {
         Variant::Red,
         Options {
             rollouts: 64,
-            ..Options::default()
+            ..ALL
         },
     );
     let tsumo = rinshan_engine::generated::red::ACTION_TSUMO;
@@ -176,4 +186,26 @@ fn the_look_ahead_plays_whole_games_in_the_arena() {
         assert!(t.searched > 0 && t.searched <= t.decisions, "{t:?}");
         assert!(t.rollouts >= t.searched, "{t:?}");
     }
+}
+
+#[test]
+fn by_default_only_decisions_with_much_at_stake_are_played_out() {
+    let search = Search::new(Variant::Red, Options::default());
+    let riichi = rinshan_engine::generated::red::ACTION_RIICHI;
+    let (mut searched, mut total) = (0, 0);
+    for p in positions(Variant::Red, 31, 1) {
+        let s = &p.state;
+        let threat = (0..4)
+            .any(|q| q != p.seat && s.seat_flags[q as usize] & rinshan_engine::generated::kernel::SEAT_RIICHI != 0);
+        let riichi_legal = s.mask[riichi as usize / 32] >> (riichi % 32) & 1 == 1;
+        assert_eq!(search.looks_ahead(s), threat || riichi_legal);
+        let d = search.decide(s, p.seat, &p.own_draws, 0);
+        assert_eq!(d.candidates.is_empty(), !(threat || riichi_legal));
+        searched += usize::from(threat || riichi_legal);
+        total += 1;
+        if searched >= 3 {
+            break;
+        }
+    }
+    assert!(searched >= 1 && searched < total, "{searched} of {total}");
 }
