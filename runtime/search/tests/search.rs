@@ -99,13 +99,7 @@ fn decisions_do_not_change_when_the_hidden_tiles_are_shuffled() {
 
 #[test]
 fn a_rollout_budget_and_a_seed_give_the_same_decision_every_time() {
-    let search = Search::new(
-        Variant::Red,
-        Options {
-            rollouts: 40,
-            ..ALL
-        },
-    );
+    let search = Search::new(Variant::Red, Options { rollouts: 40, ..ALL });
     for (i, p) in positions(Variant::Red, 21, 25).iter().enumerate() {
         let a = search.decide(&p.state, p.seat, &p.own_draws, i as u64);
         assert_eq!(a, search.decide(&p.state, p.seat, &p.own_draws, i as u64));
@@ -121,13 +115,7 @@ fn a_win_on_the_own_draw_is_valued_by_the_scores_it_pays() {
     // to deal), so its estimate is exact and equals the value of the true game after it. (Not
     // that it is always played: on the last draw a cheap tsumo can be worth less than the tenpai
     // payment the exhaustive draw brings, and the look-ahead sees it.)
-    let search = Search::new(
-        Variant::Red,
-        Options {
-            rollouts: 64,
-            ..ALL
-        },
-    );
+    let search = Search::new(Variant::Red, Options { rollouts: 64, ..ALL });
     let tsumo = rinshan_engine::generated::red::ACTION_TSUMO;
     let mut checked = 0;
     for seed in 0..60 {
