@@ -29,7 +29,7 @@ pub struct Scenario {
     pub dealer: u32,
     /// One per seat (absolute seats, not dealing order: four, or three in sanma), 13 tiles each.
     pub hands: Vec<String>,
-    /// Live wall from wall[52] on ("x": filler).
+    /// Live wall from `wall[52]` on ("x": filler).
     #[serde(default)]
     pub draws: Vec<String>,
     /// Per seat: the tiles of its k-th live draw, assuming no calls or kans (52 + its turn offset + 4k).

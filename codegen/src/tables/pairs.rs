@@ -9,11 +9,11 @@
 //! The combined rows are few too (180 of two suits, 165 of a suit and the honors), so the pair
 //! tables' words carry their numbers the same way, and the last step, the tiles a whole hand
 //! misses for each number of sets, is one word of a third table indexed by the two numbers
-//! ([`missing`]): the kernel reads it where it unpacked two rows and took the cheapest split.
+//! (`missing`): the kernel reads it where it unpacked two rows and took the cheapest split.
 
 use super::cost::{pack, unpack, CostRow, MAX_SETS};
 
-/// Bits per entry of a [`missing`] word.
+/// Bits per entry of a `missing` word.
 pub const MISSING_BITS: u32 = 4;
 
 /// Bit of a cost word where its row's number starts: the costs use the 18 bits below.

@@ -2,6 +2,10 @@
 //! the hand calculator, log replay, pictures, the web page, the arena, benchmarks and the soak. Each
 //! subcommand lives in its own module; nothing here plays a rule.
 
+// The doc comments of the arguments are clap's help text, written for a terminal (`game-<n>.json`),
+// not rustdoc's HTML.
+#![allow(rustdoc::invalid_html_tags)]
+
 mod arena;
 mod args;
 mod bench;

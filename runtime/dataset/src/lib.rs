@@ -9,7 +9,7 @@
 //! * [`shard`] — one shard's arrays on disk.
 //! * [`manifest`] — the schema, options and finished shards.
 //! * [`same`] — one game in two files (two formats, two copies), recognised by its content.
-//! * [`build`] — the parallel, resumable run over all of it.
+//! * [`build`](mod@build) — the parallel, resumable run over all of it.
 //!
 //! Depends on `rinshan-engine` and `rinshan-logs`; the `rinshan dataset` command and the Python
 //! package build on it.

@@ -13,7 +13,7 @@
 //! * [`hand`]     — shanten and hand scoring on the CPU, one hand or a batch
 //! * [`win_input`] — a winning hand described as people write it (the `score` command, Python)
 //! * [`gpu`]      — the same kernels on a GPU through wgpu
-//! * [`env`]      — the batched game environment (reset, step, masks, rewards) on the CPU or the GPU
+//! * [`env`](mod@env) — the batched game environment (reset, step, masks, rewards) on the CPU or the GPU
 //! * [`observe`]  — what an agent sees: the observation forms and the table documenting their fields
 //! * [`agents`]   — the built-in baseline agents (random, rule, greedy, defensive)
 //! * [`arena`]    — rating agents by duplicate play

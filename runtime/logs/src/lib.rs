@@ -4,7 +4,7 @@
 //!   it, replaying and comparing every round, and recording games played in rinshan.
 //! * [`mjai`] — MJAI event logs, read into and written from the same game records.
 //! * [`mjlog`] — Tenhou's mjlog XML, read into the same game records.
-//! * [`file`] — either format from a file, plain or gzipped, told apart by its text.
+//! * [`file`](mod@file) — either format from a file, plain or gzipped, told apart by its text.
 //!
 //! Depends on `rinshan-engine` only; pictures (`rinshan-render`), the web page and the `rinshan`
 //! command build on it.

@@ -1,5 +1,5 @@
 //! rinshan-render: pictures of a game: the table decoded from a state ([`board`]), drawn as SVG
-//! ([`svg`]) with three tile modes, rasterised to PNG with a bundled font ([`png`]), and a whole
+//! ([`svg`](mod@svg)) with three tile modes, rasterised to PNG with a bundled font ([`png`]), and a whole
 //! logged game as one self-contained HTML replay page ([`html`]).
 //!
 //! Depends on `rinshan-engine` (states, tiles) and `rinshan-logs` (the logged games a replay page

@@ -49,7 +49,7 @@ pub struct Options {
     /// Show every hand face up.
     pub reveal: bool,
     /// Put the faces used in the document's own `<defs>` (a standalone file); `false` for boards
-    /// shown in a page that carries [`sprite`] once.
+    /// shown in a page that carries [`sprite`](crate::sprite) once.
     pub defs: bool,
 }
 

@@ -100,7 +100,7 @@ pub struct Config {
     pub batch: usize,
     /// Where the games run.
     pub backend: Backend,
-    /// Seeds every env's games: env `i` of the `r`-th [`Env::reset`] gets seed words derived from
+    /// Seeds every env's games: env `i` of the `r`-th [`Env::reset`](crate::env::Env::reset) gets seed words derived from
     /// `(seed, i, r)`.
     pub seed: u64,
     /// Uma by final rank in points (paid with the leftover riichi sticks in a game's last step);
@@ -115,7 +115,7 @@ pub struct Config {
     /// backend's `pool_for`); stepped from another thread, the pool's other threads do the work.
     pub threads: Option<usize>,
     /// Observation forms written for each env's current player by every reset and step
-    /// ([`Env::observation`]); empty (the default) costs nothing.
+    /// ([`Env::observation`](crate::env::Env::observation)); empty (the default) costs nothing.
     pub observe: Vec<crate::observe::Form>,
     /// Hero mode: who plays each seat, per env (or one entry for every env); `None` = the caller.
     /// A step then plays the caller's action and the built-in agents' decisions until one of the
@@ -170,7 +170,7 @@ pub enum EnvError {
         /// The entries given.
         got: usize,
     },
-    /// A wall given to [`Env::reset_with_walls`] or [`Env::deal`] is not a full set of this
+    /// A wall given to [`Env::reset_with_walls`](crate::env::Env::reset_with_walls) or [`Env::deal`](crate::env::Env::deal) is not a full set of this
     /// variant's tiles.
     BadWall {
         /// The env it was for.
@@ -203,7 +203,7 @@ pub enum EnvError {
         /// What is wrong with it.
         reason: String,
     },
-    /// A saved state given to [`Env::load_states`] failed its check.
+    /// A saved state given to [`Env::load_states`](crate::env::Env::load_states) failed its check.
     BadState {
         /// The env it was for.
         env: usize,

@@ -1,5 +1,5 @@
 //! Observations of the games of an [`Env`]: any seat of each game, in either form, on request or
-//! written every step for the current player ([`Config::observe`](super::Config::observe)).
+//! written every step for the current player ([`Config::observe`](crate::env::Config::observe)(super::Config::observe)).
 
 use super::config::EnvError;
 use super::games::{Backing, Env};
@@ -45,7 +45,7 @@ impl Env {
 
     /// Writes one `form` observation per env into `out` (`batch * form.bytes()` bytes, env-major),
     /// for the seats `observer` names. Seats that are not deciding see everything public and their
-    /// own hand, and no decision. On the GPU, only this call (and [`Config::observe`]) reads
+    /// own hand, and no decision. On the GPU, only this call (and [`Config::observe`](crate::env::Config::observe)) reads
     /// observations back.
     pub fn observe_into(&mut self, form: Form, observer: Observer, out: &mut [u8]) -> Result<(), EnvError> {
         let want = self.batch() * form.bytes();
@@ -104,13 +104,13 @@ impl Env {
     }
 
     /// The current player's observation of each env in `form`, written by the last reset or step
-    /// when [`Config::observe`] asks for that form (`batch * form.bytes()` bytes).
+    /// when [`Config::observe`](crate::env::Config::observe) asks for that form (`batch * form.bytes()` bytes).
     pub fn observation(&self, form: Form) -> Option<&[u8]> {
         let i = self.config.observe.iter().position(|&f| f == form)?;
         Some(bytemuck::cast_slice(&self.observations[i]))
     }
 
-    /// Fills the per-step observations of [`Config::observe`] (current players).
+    /// Fills the per-step observations of [`Config::observe`](crate::env::Config::observe) (current players).
     pub(super) fn write_observations(&mut self) -> Result<(), EnvError> {
         if self.config.observe.is_empty() {
             return Ok(());

@@ -7,7 +7,7 @@ pub(super) fn mix64(mut z: u64) -> u64 {
     z ^ (z >> 31)
 }
 
-/// The 64-bit seed of env `index` at the `epoch`-th [`Env::reset`] of an env seeded with `seed`.
+/// The 64-bit seed of env `index` at the `epoch`-th [`Env::reset`](crate::env::Env::reset) of an env seeded with `seed`.
 pub fn env_seed(seed: u64, index: u64, epoch: u64) -> u64 {
     let a = mix64(seed.wrapping_add(0x9E37_79B9_7F4A_7C15));
     let b = mix64(a ^ index.wrapping_mul(0xD6E8_FEB8_6659_FD93));

@@ -71,7 +71,7 @@ const fn u(x: u32) -> usize {
 
 const PLANE_BYTES: usize = u(k::PLANE_ROWS) * 34;
 
-/// The fields of [`Form::Planes`].
+/// The fields of [`Form::Planes`](crate::observe::Form::Planes).
 pub static PLANES_FIELDS: [Field; 2] = [
     Field {
         name: "planes",
@@ -91,7 +91,7 @@ pub static PLANES_FIELDS: [Field; 2] = [
     },
 ];
 
-/// The fields of [`Form::Packed`].
+/// The fields of [`Form::Packed`](crate::observe::Form::Packed).
 pub static PACKED_FIELDS: [Field; 3] = [
     Field {
         name: "bits",
@@ -120,7 +120,7 @@ pub static PACKED_FIELDS: [Field; 3] = [
     },
 ];
 
-/// The fields of [`Form::Tokens`].
+/// The fields of [`Form::Tokens`](crate::observe::Form::Tokens).
 pub static TOKENS_FIELDS: [Field; 10] = [
     Field {
         name: "hand",
@@ -223,7 +223,7 @@ const fn flags(name: &'static str, offset: u32, shape: &'static [usize], doc: &'
     }
 }
 
-/// The fields of [`Form::Analysis`].
+/// The fields of [`Form::Analysis`](crate::observe::Form::Analysis).
 pub static ANALYSIS_FIELDS: [Field; 4] = [
     field(
         "discard_shanten",
@@ -255,7 +255,7 @@ pub static ANALYSIS_FIELDS: [Field; 4] = [
     ),
 ];
 
-/// The fields of [`Form::Oracle`].
+/// The fields of [`Form::Oracle`](crate::observe::Form::Oracle).
 pub static ORACLE_FIELDS: [Field; 9] = [
     field(
         "others_hand",

@@ -3,7 +3,7 @@
 //!
 //! * [`tile`]  — the protocol's tile names (`5mr`, `E`, `?`)
 //! * [`event`] — the events, with the optional extras real logs carry
-//! * [`write`] — a [`crate::tenhou::log::Game`] as an MJAI log, in the order the engines emit events
+//! * [`write`](mod@write) — a [`crate::tenhou::log::Game`] as an MJAI log, in the order the engines emit events
 //! * [`live`]  — a game being played as the events sent live, and each seat's view of them
 //! * [`reaction`] — a bot's reaction as the engine's action id
 //! * [`bot`]   — an MJAI bot as a child process, in mjai.app's or Mortal's dialect

@@ -3,7 +3,7 @@
 //! on any format. [`GameBuilder`] takes the events of a game in order (from this reader or the
 //! mjlog reader) and checks each round, when it ends, by the tenhou.net/6 reader's rules, so a
 //! game read in any format converts to the others; the events of a round are read in
-//! [`super::round`], the yaku of a win in [`super::yaku`].
+//! `mjai::round`, the yaku of a win in `mjai::yaku`.
 
 use rinshan_engine::tile::Tile;
 

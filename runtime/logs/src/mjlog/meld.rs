@@ -1,5 +1,5 @@
 //! The `m` code of an mjlog `N` tag: one 16-bit number for a call or a kan (the layout in
-//! NegativeMjark/tenhou-log's "Meld Format" and http://p.tenhou.net/img/mentsu136.txt). Bits
+//! NegativeMjark/tenhou-log's "Meld Format" and <http://p.tenhou.net/img/mentsu136.txt>). Bits
 //! 0-1 say where the tile came from ((discarder - caller) mod 4; 0 for a closed kan); bit 2 marks
 //! a chi, bit 3 a pon, bit 4 an added kan, bit 5 a North set aside (three-player); none of them,
 //! an open or closed kan. The high bits name the tiles.
