@@ -1,0 +1,97 @@
+//! The look-ahead agent where the command line seats it: the arena (with its totals in the
+//! report), `mjai-bot --agent search`, and clear errors for a bad setting or a command that does
+//! not seat it.
+
+use std::io::Write;
+use std::process::{Command, Output, Stdio};
+
+fn rinshan(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_rinshan"))
+        .args(args)
+        .output()
+        .expect("run rinshan")
+}
+
+#[test]
+fn the_arena_seats_the_look_ahead_and_reports_its_totals() {
+    let out = rinshan(&[
+        "arena",
+        "--agents",
+        "search:rollouts=8:focus=all,defensive,defensive,defensive",
+        "--games",
+        "4",
+        "--mode",
+        "single",
+        "--json",
+    ]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let report: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    let names: Vec<&str> = report["standings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| s["agent"].as_str().unwrap())
+        .collect();
+    assert!(names.contains(&"search:rollouts=8:focus=all"), "{names:?}");
+    let totals = &report["search"][0];
+    let decisions = totals["decisions"].as_u64().unwrap();
+    let searched = totals["searched"].as_u64().unwrap();
+    assert!(searched > 0 && searched <= decisions, "{totals}");
+    assert!(totals["rollouts"].as_u64().unwrap() >= searched * 4, "{totals}");
+    assert!(report["faults"].as_array().unwrap().is_empty());
+}
+
+#[test]
+fn a_bad_search_setting_is_refused_with_what_is_wrong() {
+    let out = rinshan(&["arena", "--agents", "search:depth=3,defensive,defensive,defensive"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("unknown search option `depth`"));
+    let out = rinshan(&[
+        "selfplay",
+        "--agents",
+        "search,defensive,defensive,defensive",
+        "--games",
+        "1",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("rinshan arena"));
+}
+
+#[test]
+fn mjai_bot_decides_with_the_look_ahead() {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_rinshan"))
+        .args(["mjai-bot", "--agent", "search:rollouts=16:focus=all"])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("run rinshan");
+    let hand = r#"["1m","2m","3m","4p","5p","6p","7s","8s","9s","E","E","P","P"]"#;
+    let q = r#"["?","?","?","?","?","?","?","?","?","?","?","?","?"]"#;
+    let lines = [
+        r#"[{"type":"start_game","id":1,"names":["a","b","c","d"]}]"#.to_string(),
+        format!(
+            r#"[{{"type":"start_kyoku","bakaze":"E","dora_marker":"1s","kyoku":1,"honba":0,"kyotaku":0,"oya":0,"scores":[25000,25000,25000,25000],"tehais":[{q},{hand},{q},{q}]}},{{"type":"tsumo","actor":0,"pai":"?"}},{{"type":"dahai","actor":0,"pai":"9m","tsumogiri":true}}]"#
+        ),
+        r#"[{"type":"tsumo","actor":1,"pai":"N"}]"#.to_string(),
+    ];
+    let mut stdin = child.stdin.take().unwrap();
+    for line in &lines {
+        writeln!(stdin, "{line}").unwrap();
+    }
+    drop(stdin);
+    let out = child.wait_with_output().unwrap();
+    assert!(out.status.success());
+    let replies: Vec<serde_json::Value> = String::from_utf8_lossy(&out.stdout)
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert_eq!(replies.len(), lines.len(), "one reply per line");
+    // Its own draw, tenpai on E and P: riichi, or a discard (the North keeps the hand).
+    assert_eq!(replies[2]["actor"], 1, "{replies:?}");
+    assert!(
+        ["dahai", "reach"].contains(&replies[2]["type"].as_str().unwrap()),
+        "{replies:?}"
+    );
+    assert!(out.stderr.is_empty(), "{}", String::from_utf8_lossy(&out.stderr));
+}
