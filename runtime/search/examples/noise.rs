@@ -9,14 +9,13 @@
 //! steps of a play-out to the round's end against one to the game's end.
 
 use rinshan_engine::agents::Agent;
-use rinshan_engine::generated::kernel::{GameState, ResetInput, MODE_HALF};
-use rinshan_engine::observe::OwnDraws;
 use rinshan_engine::random::Rng;
 use rinshan_engine::{with_variant, Variant};
+use rinshan_search::positions::defensive_game;
 use rinshan_search::rollout::play_round;
 use rinshan_search::value::placement_value;
 use rinshan_search::world::deal;
-use rinshan_search::{Options, Search};
+use rinshan_search::{Focus, Options, Search};
 
 fn variance(xs: &[f64]) -> f64 {
     let n = xs.len() as f64;
@@ -29,49 +28,49 @@ fn main() {
     let positions = args.next().unwrap_or(200);
     let worlds = args.next().unwrap_or(64);
     let variant = Variant::Red;
-    let search = Search::new(variant, Options::default());
+    // Every own-turn decision, as when the figures of docs/strength.md were taken.
+    let search = Search::new(
+        variant,
+        Options {
+            focus: Focus::All,
+            ..Options::default()
+        },
+    );
     let (mut paired, mut independent, mut single) = (Vec::new(), Vec::new(), Vec::new());
     let (mut round_steps, mut game_steps, mut plays) = (0u64, 0u64, 0u64);
     let mut rng = Rng::new(7);
     let mut seed = 0u64;
     while paired.len() < positions {
         seed += 1;
-        with_variant!(variant, v => {
-            let mut s: GameState = v::game_new(ResetInput {
-                seed: [seed as u32, 0],
-                mode: MODE_HALF,
-                dealer: 4,
-                use_wall: 0,
-                wall: [0; 136],
-                uma: [0; 4],
-                penalty: v::host::ILLEGAL_ACTION_PENALTY,
-                auto_reset: 0,
-            });
-            let mut own: Vec<OwnDraws> = vec![OwnDraws::default(); 4];
-            for q in 0..4 {
-                own[q as usize].update(variant, &s, &mut s.clone(), q);
-            }
-            let mut k = 0;
-            while s.terminated == 0 && paired.len() < positions {
-                k += 1;
-                if search.looks_ahead(&s) && k % 23 == 0 {
-                    let seat = s.current;
-                    let base = Agent::Defensive.act(variant, &s);
-                    let legal: Vec<u32> = (0..96).filter(|&a| s.mask[a / 32] >> (a % 32) & 1 == 1).map(|a| a as u32).collect();
-                    let other = legal.iter().copied().filter(|&a| a != base).nth(rng.below(legal.len() as u32 - 1) as usize).unwrap_or(base);
-                    let (mut a, mut b) = (Vec::new(), Vec::new());
-                    for _ in 0..worlds {
-                        let w = deal(variant, &s, seat, &own[seat as usize].positions, &mut rng);
-                        let (end_a, n) = play_round(variant, w, base, Agent::Defensive);
-                        let (end_b, _) = play_round(variant, w, other, Agent::Defensive);
-                        a.push(placement_value(&end_a, seat, 4));
-                        b.push(placement_value(&end_b, seat, 4));
-                        round_steps += u64::from(n);
-                        plays += 1;
-                    }
-                    // A play-out to the game's end, for its cost.
-                    let w = deal(variant, &s, seat, &own[seat as usize].positions, &mut rng);
-                    let mut g = w;
+        let mut k = 0;
+        defensive_game(variant, seed, &mut |p| {
+            k += 1;
+            if search.looks_ahead(&p.state) && k % 23 == 0 {
+                let (s, seat) = (&p.state, p.seat);
+                let base = Agent::Defensive.act(variant, s);
+                let legal: Vec<u32> = (0..96)
+                    .filter(|&a| s.mask[a / 32] >> (a % 32) & 1 == 1)
+                    .map(|a| a as u32)
+                    .collect();
+                let other = legal
+                    .iter()
+                    .copied()
+                    .filter(|&a| a != base)
+                    .nth(rng.below(legal.len() as u32 - 1) as usize)
+                    .unwrap_or(base);
+                let (mut a, mut b) = (Vec::new(), Vec::new());
+                for _ in 0..worlds {
+                    let w = deal(variant, s, seat, &p.own_draws, &mut rng);
+                    let (end_a, n) = play_round(variant, w, base, Agent::Defensive);
+                    let (end_b, _) = play_round(variant, w, other, Agent::Defensive);
+                    a.push(placement_value(&end_a, seat, 4));
+                    b.push(placement_value(&end_b, seat, 4));
+                    round_steps += u64::from(n);
+                    plays += 1;
+                }
+                // A play-out to the game's end, for its cost.
+                let mut g = deal(variant, s, seat, &p.own_draws, &mut rng);
+                game_steps += with_variant!(variant, v => {
                     v::game_step(&mut g, base);
                     let mut n = 1u64;
                     while g.terminated == 0 {
@@ -79,20 +78,15 @@ fn main() {
                         v::game_step(&mut g, x);
                         n += 1;
                     }
-                    game_steps += n;
-                    let d: Vec<f64> = a.iter().zip(&b).map(|(x, y)| x - y).collect();
-                    let w = worlds as f64;
-                    paired.push((variance(&d) / w).sqrt());
-                    independent.push(((variance(&a) + variance(&b)) / w).sqrt());
-                    single.push(variance(&a).sqrt());
-                }
-                let x = v::seat_act(&mut s, Agent::Defensive.kernel());
-                let before = s;
-                v::game_step(&mut s, x);
-                for q in 0..4 {
-                    own[q as usize].update(variant, &before, &mut s.clone(), q);
-                }
+                    n
+                });
+                let d: Vec<f64> = a.iter().zip(&b).map(|(x, y)| x - y).collect();
+                let w = worlds as f64;
+                paired.push((variance(&d) / w).sqrt());
+                independent.push(((variance(&a) + variance(&b)) / w).sqrt());
+                single.push(variance(&a).sqrt());
             }
+            paired.len() < positions
         });
     }
     let mean = |xs: &[f64]| xs.iter().sum::<f64>() / xs.len() as f64;

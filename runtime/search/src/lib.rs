@@ -9,6 +9,7 @@
 //! * [`value`]   — a round's final scores as a placement-aware value.
 //! * [`decide`]  — the budget spent over the candidates: common worlds for all (paired
 //!   comparisons), successive halving, and a switch from the base agent's choice only on evidence.
+//! * [`positions`] — the decisions of `defensive` self-play, for the tests and measurements.
 //! * [`options`] — `search:rollouts=256:base=defensive` as users write it.
 //! * [`seat`]    — the agent as an arena [`Entrant`](rinshan_engine::arena::Entrant).
 //!
@@ -42,6 +43,7 @@
 
 pub mod decide;
 pub mod options;
+pub mod positions;
 pub mod rollout;
 pub mod seat;
 pub mod value;

@@ -5,10 +5,10 @@
 use rinshan_engine::agents::Agent;
 use rinshan_engine::arena::{self, Arena, Player};
 use rinshan_engine::env::Mode;
-use rinshan_engine::generated::kernel::{GameState, ResetInput, MODE_HALF};
-use rinshan_engine::observe::{resample_hidden, OwnDraws};
+use rinshan_engine::observe::resample_hidden;
 use rinshan_engine::random::Rng;
-use rinshan_engine::{with_variant, Variant};
+use rinshan_engine::Variant;
+use rinshan_search::positions::{defensive_game, Position};
 use rinshan_search::value::placement_value;
 use rinshan_search::{Focus, Options, Search, SearchEntrant};
 
@@ -22,50 +22,21 @@ const ALL: Options = Options {
     focus: Focus::All,
 };
 
-/// A position where the look-ahead plays out its choice: the state, the seat to act, and the wall
-/// places that seat drew this round.
-struct Position {
-    state: GameState,
-    seat: u32,
-    own_draws: Vec<u32>,
-}
-
-/// Every `every`-th such position of a half game of `defensive` agents from `seed`.
+/// Every `every`-th position of a half game of `defensive` agents from `seed` where the look-ahead
+/// plays out its choice.
 fn positions(variant: Variant, seed: u64, every: usize) -> Vec<Position> {
     let search = Search::new(variant, ALL);
-    with_variant!(variant, v => {
-        let mut s = v::game_new(ResetInput {
-            seed: [seed as u32, (seed >> 32) as u32],
-            mode: MODE_HALF,
-            dealer: 4,
-            use_wall: 0,
-            wall: [0; 136],
-            uma: [0; 4],
-            penalty: v::host::ILLEGAL_ACTION_PENALTY,
-            auto_reset: 0,
-        });
-        let seats = variant.seats();
-        let mut own: Vec<OwnDraws> = vec![OwnDraws::default(); 4];
-        for q in 0..seats {
-            own[q as usize].update(variant, &s, &mut s.clone(), q);
-        }
-        let (mut out, mut k) = (Vec::new(), 0);
-        while s.terminated == 0 {
-            if search.looks_ahead(&s) {
-                k += 1;
-                if k % every == 0 {
-                    out.push(Position { state: s, seat: s.current, own_draws: own[s.current as usize].positions.clone() });
-                }
-            }
-            let a = v::seat_act(&mut { s }, Agent::Defensive.kernel());
-            let before = s;
-            v::game_step(&mut s, a);
-            for q in 0..seats {
-                own[q as usize].update(variant, &before, &mut s.clone(), q);
+    let (mut out, mut k) = (Vec::new(), 0);
+    defensive_game(variant, seed, &mut |p| {
+        if search.looks_ahead(&p.state) {
+            k += 1;
+            if k % every == 0 {
+                out.push(p.clone());
             }
         }
-        out
-    })
+        true
+    });
+    out
 }
 
 #[test]

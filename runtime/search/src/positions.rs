@@ -1,0 +1,55 @@
+//! Every decision of a half game of `defensive` agents, with what the deciding seat drew itself:
+//! the positions the look-ahead's tests and measurements (the `belief` and `noise` examples) are
+//! taken from.
+
+use rinshan_engine::agents::Agent;
+use rinshan_engine::generated::kernel::{GameState, ResetInput, MODE_HALF};
+use rinshan_engine::observe::OwnDraws;
+use rinshan_engine::{with_variant, Variant};
+
+/// A decision of a game: the state, the seat to act, and the wall places that seat drew this round.
+#[derive(Clone)]
+pub struct Position {
+    /// The state at the decision.
+    pub state: GameState,
+    /// The seat to act.
+    pub seat: u32,
+    /// The wall places `seat` drew this round ([`OwnDraws`]).
+    pub own_draws: Vec<u32>,
+}
+
+/// Plays a half game of `variant` from `seed` (its two words: low, high) with `defensive` in every
+/// seat, showing `visit` each decision before it is played, until the game ends or `visit` returns
+/// false.
+pub fn defensive_game(variant: Variant, seed: u64, visit: &mut dyn FnMut(&Position) -> bool) {
+    with_variant!(variant, v => {
+        let mut s: GameState = v::game_new(ResetInput {
+            seed: [seed as u32, (seed >> 32) as u32],
+            mode: MODE_HALF,
+            dealer: 4,
+            use_wall: 0,
+            wall: [0; 136],
+            uma: [0; 4],
+            penalty: v::host::ILLEGAL_ACTION_PENALTY,
+            auto_reset: 0,
+        });
+        let seats = variant.seats();
+        let mut own: Vec<OwnDraws> = vec![OwnDraws::default(); 4];
+        for q in 0..seats {
+            own[q as usize].update(variant, &s, &mut s.clone(), q);
+        }
+        while s.terminated == 0 {
+            let seat = s.current;
+            let position = Position { state: s, seat, own_draws: own[seat as usize].positions.clone() };
+            if !visit(&position) {
+                return;
+            }
+            let a = v::seat_act(&mut { s }, Agent::Defensive.kernel());
+            let before = s;
+            v::game_step(&mut s, a);
+            for q in 0..seats {
+                own[q as usize].update(variant, &before, &mut s.clone(), q);
+            }
+        }
+    })
+}
