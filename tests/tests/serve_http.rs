@@ -178,12 +178,13 @@ async fn a_whole_game_through_the_api_replays_from_its_log() {
         game.names
     );
     // The replay page of that log.
-    let (status, page) = send(&app, Method::POST, "/api/replay", Some(&text), false).await;
+    // (Each replay from a client of its own: one network waits out the cost of its last replay.)
+    let (status, page) = send_from(&app, "10.0.1.1:1", Method::POST, "/api/replay", Some(&text), false).await;
     assert_eq!(status, StatusCode::OK);
     assert!(page.starts_with("<!doctype html>") && page.contains("DecompressionStream"));
     // The same game as MJAI events makes the same page.
     let mjai = rinshan_logs::file::game_text(&game, rinshan_logs::Format::Mjai).expect("MJAI");
-    let (status, mjai_page) = send(&app, Method::POST, "/api/replay", Some(&mjai), false).await;
+    let (status, mjai_page) = send_from(&app, "10.0.2.1:1", Method::POST, "/api/replay", Some(&mjai), false).await;
     assert_eq!(status, StatusCode::OK, "{mjai_page}");
     assert_eq!(mjai_page, page);
     // The finished game was written to the data directory; a restarted server lists it too.
@@ -203,7 +204,8 @@ async fn a_whole_game_through_the_api_replays_from_its_log() {
     for server in [&app, &restarted] {
         let (status, kept) = get(server, &format!("/api/saved/{saved}")).await;
         assert_eq!((status, kept.as_str()), (StatusCode::OK, text.as_str()));
-        let (status, page) = get(server, &format!("/api/saved/{saved}/replay")).await;
+        let uri = format!("/api/saved/{saved}/replay");
+        let (status, page) = send_from(server, "10.0.3.1:1", Method::GET, &uri, None, false).await;
         assert_eq!(status, StatusCode::OK);
         assert!(page.starts_with("<!doctype html>"));
     }
@@ -583,14 +585,20 @@ async fn every_refusal_has_its_status_and_a_message() {
     assert_eq!(status, StatusCode::CONFLICT);
     let (status, text) = get(&app, &format!("/api/games/{id}/log")).await;
     assert_eq!(status, StatusCode::CONFLICT, "single games have no Tenhou log: {text}");
-    // The store is bounded: a fourth game waits.
-    new_game(
-        &app,
-        json!({"agents": ["rule", "rule", "rule", "rule"], "delay_ms": 10000}),
-    )
-    .await;
-    let (status, text) = post(&app, "/api/games", &json!({"agents": ["rule", "rule", "rule", "rule"]})).await;
+    // The store is bounded: a full table makes way by dropping a game nobody plays in, but once
+    // a person plays in every game a new one waits.
+    let person = json!({"seat": 0, "agents": ["rule", "rule", "rule"], "delay_ms": 10000});
+    let mut refused = None;
+    for _ in 0..4 {
+        let (status, text) = post(&app, "/api/games", &person).await;
+        if status != StatusCode::CREATED {
+            refused = Some((status, text));
+            break;
+        }
+    }
+    let (status, text) = refused.expect("a full table refuses");
     assert_eq!(status, StatusCode::SERVICE_UNAVAILABLE, "{text}");
+    assert!(error(&text).contains("each with a person"), "{text}");
     // A bad upload.
     let (status, text) = send(&app, Method::POST, "/api/replay", Some("{\"log\": 3}"), false).await;
     assert_eq!(status, StatusCode::UNPROCESSABLE_ENTITY, "{text}");
@@ -623,19 +631,13 @@ async fn idle_games_are_dropped() {
         idle: Duration::from_millis(200),
         ..Limits::default()
     });
-    new_game(
-        &app,
-        json!({"agents": ["rule", "rule", "rule", "rule"], "delay_ms": 10000}),
-    )
-    .await;
-    let (status, _) = post(&app, "/api/games", &json!({"agents": ["rule", "rule", "rule", "rule"]})).await;
+    // Games with a person: those make way for nobody until they idle out.
+    let person = json!({"seat": 0, "agents": ["rule", "rule", "rule"], "delay_ms": 10000});
+    new_game(&app, person.clone()).await;
+    let (status, _) = post(&app, "/api/games", &person).await;
     assert_eq!(status, StatusCode::SERVICE_UNAVAILABLE);
     tokio::time::sleep(Duration::from_millis(300)).await;
-    new_game(
-        &app,
-        json!({"agents": ["rule", "rule", "rule", "rule"], "delay_ms": 10000}),
-    )
-    .await;
+    new_game(&app, person).await;
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]

@@ -18,6 +18,7 @@ mod render;
 mod rules_as_data;
 mod scenarios;
 mod scoring_cases;
+mod serve_hold;
 mod serve_http;
 mod serve_mjai;
 mod shanten_data;

@@ -8,7 +8,7 @@
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-use rinshan_logs::file::{game_text, parse_log, write_log, Format};
+use rinshan_logs::file::{game_text, parse_log, read_log_bytes, write_log, Format};
 use rinshan_logs::tenhou::log::{collect_files, LOG_EXTENSIONS};
 
 use crate::args::FormatArg;
@@ -68,7 +68,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
         files.len() > 1 || args.paths.iter().any(|p| p.is_dir()) || args.output.as_ref().is_some_and(|o| o.is_dir());
     let read = |f: &Path| -> Result<(rinshan_logs::tenhou::log::Game, Format), String> {
         let name = f.display().to_string();
-        let bytes = std::fs::read(f).map_err(|e| format!("{name}: {e}"))?;
+        let bytes = read_log_bytes(f).map_err(|e| e.to_string())?;
         parse_log(&name, &bytes).map_err(|e| e.to_string())
     };
     if !into_folder {

@@ -188,7 +188,8 @@ fn state(env: &Env) -> Result<GameState, CliError> {
 }
 
 fn state_board(path: &Path, variant: Variant) -> Result<Board, CliError> {
-    let bytes = std::fs::read(path).map_err(|e| CliError::input(format!("{}: {e}", path.display())))?;
+    // A state is a few hundred words: a file past a log's cap is no state and is not read whole.
+    let bytes = rinshan_logs::file::read_log_bytes(path).map_err(CliError::input)?;
     if bytes.len() % 4 != 0 {
         return Err(CliError::input(format!(
             "{}: {} bytes is not a whole number of u32 words",

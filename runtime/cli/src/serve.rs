@@ -29,15 +29,40 @@ pub struct Args {
     /// Minutes after which any game is dropped
     #[arg(long, default_value_t = 240)]
     max_game_minutes: u64,
+    /// Games one network (an IPv4 /24, an IPv6 /64) may hold at once (429 past it)
+    #[arg(long, default_value_t = 16)]
+    games_per_network: usize,
     /// Event streams (open pages) one client may hold at once
     #[arg(long, default_value_t = 16)]
     streams_per_client: usize,
     /// Connections served at once; more wait to be accepted
     #[arg(long, default_value_t = 1024)]
     max_connections: usize,
-    /// Seconds a connection has to send a request's headers before it is closed
+    /// Connections one network may hold open; more are closed at once
+    #[arg(long, default_value_t = 64)]
+    connections_per_network: usize,
+    /// Seconds a connection has to send a request's headers (or its HTTP/2 preface) before it is
+    /// closed; also how long an idle connection is kept, and an HTTP/2 ping waits for its answer
     #[arg(long, default_value_t = 10)]
     header_timeout_seconds: u64,
+    /// Seconds a request's body has to arrive and its answer to be ready (408 past it)
+    #[arg(long, default_value_t = 30)]
+    request_timeout_seconds: u64,
+    /// MJAI bot processes running at once, server-wide (each bot seat runs one)
+    #[arg(long, default_value_t = 48)]
+    bot_processes: usize,
+    /// MJAI bot processes one client's games may run at once
+    #[arg(long, default_value_t = 6)]
+    bot_processes_per_client: usize,
+    /// Finished games kept at most in the data directory; the oldest are deleted past it
+    #[arg(long, default_value_t = 10_000)]
+    saved_games: usize,
+    /// Megabytes of finished games kept at most; the oldest are deleted past it
+    #[arg(long, default_value_t = 1024)]
+    saved_megabytes: u64,
+    /// Finished games one network may have kept in any hour; later ones are played, not kept
+    #[arg(long, default_value_t = 120)]
+    saves_per_network_hour: usize,
     /// Where finished games are kept as Tenhou logs (the replay page lists them); default: rinshan
     /// in the user's data directory (~/.local/share/rinshan on Linux)
     #[arg(long, value_name = "DIR", conflicts_with = "no_data_dir")]
@@ -84,9 +109,15 @@ pub fn run(args: Args) -> Result<(), CliError> {
         ("--games-per-client", args.games_per_client as u64),
         ("--idle-minutes", args.idle_minutes),
         ("--max-game-minutes", args.max_game_minutes),
+        ("--games-per-network", args.games_per_network as u64),
         ("--streams-per-client", args.streams_per_client as u64),
         ("--max-connections", args.max_connections as u64),
+        ("--connections-per-network", args.connections_per_network as u64),
         ("--header-timeout-seconds", args.header_timeout_seconds),
+        ("--request-timeout-seconds", args.request_timeout_seconds),
+        ("--saved-games", args.saved_games as u64),
+        ("--saved-megabytes", args.saved_megabytes),
+        ("--saves-per-network-hour", args.saves_per_network_hour as u64),
     ];
     if let Some((name, _)) = counts.iter().find(|(_, n)| *n == 0) {
         return Err(CliError::input(format!("{name} must be at least 1")));
@@ -101,12 +132,20 @@ pub fn run(args: Args) -> Result<(), CliError> {
     let limits = Limits {
         max_games: args.max_games,
         games_per_client: args.games_per_client,
+        games_per_network: args.games_per_network,
         idle: minutes(args.idle_minutes),
         max_duration: minutes(args.max_game_minutes),
         streams_per_client: args.streams_per_client,
         max_connections: args.max_connections,
+        connections_per_network: args.connections_per_network,
         header_timeout: Duration::from_secs(args.header_timeout_seconds),
+        request_timeout: Duration::from_secs(args.request_timeout_seconds),
+        bot_processes: args.bot_processes,
+        bot_processes_per_client: args.bot_processes_per_client,
         data_dir,
+        saved_games: args.saved_games,
+        saved_bytes: args.saved_megabytes.saturating_mul(1 << 20),
+        saves_per_network_hour: args.saves_per_network_hour,
         fixed_seed: None,
         bots,
     };

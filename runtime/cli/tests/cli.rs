@@ -1084,3 +1084,52 @@ fn selfplay_seats_mjai_bots_that_play_the_same_games_as_the_agents_they_run() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("--backend cpu"));
 }
+
+/// The connection cap leaves room under the process's descriptor limit (for bots' pipes and saved
+/// games): lowered to fit, or refused with what to do when nothing fits.
+#[cfg(unix)]
+#[test]
+fn serve_fits_its_connections_to_the_descriptor_limit() {
+    use std::io::BufRead as _;
+    let exe = env!("CARGO_BIN_EXE_rinshan");
+    let under = |n: u32| {
+        let mut c = Command::new("sh");
+        c.args([
+            "-c",
+            &format!("ulimit -n {n} && exec \"$0\" serve --no-data-dir --port 0"),
+            exe,
+        ]);
+        c
+    };
+    let out = under(150).output().expect("runs");
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("descriptor limit (150)") && err.contains("ulimit -n"),
+        "{err}"
+    );
+
+    let mut child = under(400).stdout(std::process::Stdio::piped()).spawn().expect("starts");
+    let stdout = child.stdout.take().expect("its output");
+    let (tx, rx) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        for line in std::io::BufReader::new(stdout).lines().map_while(Result::ok) {
+            let _ = tx.send(line);
+        }
+    });
+    let mut said = Vec::new();
+    while let Ok(line) = rx.recv_timeout(std::time::Duration::from_secs(20)) {
+        let done = line.contains("connections at once");
+        said.push(line);
+        if done {
+            break;
+        }
+    }
+    let _ = child.kill();
+    let _ = child.wait();
+    // 400 descriptors, 64 kept for the process and 3 for each of the 48 bot processes.
+    assert!(
+        said.iter().any(|l| l.contains("192 connections at once, not 1024")),
+        "{said:?}"
+    );
+}

@@ -41,9 +41,31 @@ impl Format {
     }
 }
 
-/// The most text a gzipped log may unpack to (a whole hanchan is under 200 KB in either format;
-/// the cap keeps a hostile file from filling memory).
-const MAX_TEXT: u64 = 64 << 20;
+/// The most text a log may hold, plain or unpacked from gzip (a whole hanchan is under 200 KB in
+/// either format; the cap keeps a hostile file from filling memory).
+pub const MAX_TEXT: u64 = 64 << 20;
+
+/// A log file's bytes, at most [`MAX_TEXT`] of them: a larger file is refused before it is read
+/// whole (a one-line log of gigabytes would otherwise be held, then parsed, in memory).
+pub fn read_log_bytes(path: &Path) -> Result<Vec<u8>, LogError> {
+    read_capped(path, MAX_TEXT)
+}
+
+fn read_capped(path: &Path, cap: u64) -> Result<Vec<u8>, LogError> {
+    let err = |message: String| LogError::file(&path.display().to_string(), message);
+    let file = std::fs::File::open(path).map_err(|e| err(e.to_string()))?;
+    let mut out = Vec::new();
+    file.take(cap + 1)
+        .read_to_end(&mut out)
+        .map_err(|e| err(e.to_string()))?;
+    if out.len() as u64 > cap {
+        return Err(err(format!(
+            "larger than {} MiB: not a log this reader takes",
+            cap >> 20
+        )));
+    }
+    Ok(out)
+}
 
 /// The text of a log's bytes, unpacked when they are gzipped.
 pub fn log_text(name: &str, bytes: &[u8]) -> Result<String, LogError> {
@@ -65,6 +87,8 @@ pub fn log_text(name: &str, bytes: &[u8]) -> Result<String, LogError> {
             return Err(file_err(format!("unpacks to more than {} MiB", MAX_TEXT >> 20)));
         }
         out
+    } else if bytes.len() as u64 > MAX_TEXT {
+        return Err(file_err(format!("larger than {} MiB", MAX_TEXT >> 20)));
     } else {
         bytes.to_vec()
     };
@@ -85,16 +109,8 @@ pub fn parse_log(name: &str, bytes: &[u8]) -> Result<(Game, Format), LogError> {
 
 /// Reads one log file of either format, plain or gzipped.
 pub fn read_log(path: &Path) -> Result<Game, LogError> {
-    let name = path.display().to_string();
-    let bytes = std::fs::read(path).map_err(|e| LogError {
-        file: name.clone(),
-        line: None,
-        column: None,
-        round: None,
-        field: None,
-        message: e.to_string(),
-    })?;
-    parse_log(&name, &bytes).map(|(game, _)| game)
+    let bytes = read_log_bytes(path)?;
+    parse_log(&path.display().to_string(), &bytes).map(|(game, _)| game)
 }
 
 /// A game as the text of a log of `format` (tenhou.net/6 or MJAI: mjlog is read, not written).
@@ -125,5 +141,29 @@ pub fn write_log(path: &Path, game: &Game, format: Format) -> Result<(), String>
         Ok(())
     } else {
         std::fs::write(path, text).map_err(io)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_log_file_past_the_cap_is_refused_unread() {
+        let path = std::env::temp_dir().join(format!("rinshan-big-log-{}.json", std::process::id()));
+        // Sparse: a file one byte past the cap costs no disk, and reading it whole would cost 64 MiB.
+        std::fs::File::create(&path)
+            .and_then(|f| f.set_len(MAX_TEXT + 1))
+            .expect("a sparse file");
+        let refused = read_log(&path).map(|_| ()).expect_err("refused");
+        assert!(refused.message.contains("larger than 64 MiB"), "{refused}");
+        let small = read_capped(&path, 1 << 20).expect_err("refused");
+        assert!(small.message.contains("larger than 1 MiB"), "{small}");
+        std::fs::write(&path, "x".repeat(1 << 20)).expect("written");
+        assert_eq!(read_capped(&path, 1 << 20).map(|b| b.len()).ok(), Some(1 << 20));
+        let _ = std::fs::remove_file(&path);
+        // In memory (the server's upload), plain text past the cap is refused too.
+        let big = vec![b' '; MAX_TEXT as usize + 1];
+        assert!(log_text("upload", &big).is_err_and(|e| e.message.contains("larger than 64 MiB")));
     }
 }

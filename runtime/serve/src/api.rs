@@ -6,6 +6,7 @@ use std::convert::Infallible;
 use std::str::FromStr;
 use std::time::Duration;
 
+use axum::error_handling::HandleErrorLayer;
 use axum::extract::{DefaultBodyLimit, State};
 use axum::http::{header, StatusCode};
 use axum::response::sse::{Event, KeepAlive, Sse};
@@ -16,10 +17,11 @@ use futures_util::Stream;
 use serde::Deserialize;
 use serde_json::{json, Value};
 
-use super::extract::{ApiError, Client, Json, Path, Query, Text};
+use super::extract::{network, ApiError, Client, Json, Path, Query, Text};
 use super::pages;
+use super::replays::NoTurn;
 use super::session::{first_dealer, Opponent, Refusal, Session, Setup};
-use super::store::{Limits, Refused, Store};
+use super::store::{Limits, NotRemoved, Refused, Store};
 use rinshan_engine::agents::Agent;
 use rinshan_engine::env::Mode;
 use rinshan_engine::Variant;
@@ -42,6 +44,7 @@ pub fn app(limits: Limits) -> Router {
 }
 
 pub(super) fn app_with_store(limits: Limits) -> (Router, Store) {
+    let request_timeout = limits.request_timeout;
     let store = Store::new(limits);
     let api = Router::new()
         .route("/api/agents", get(agents))
@@ -70,7 +73,23 @@ pub(super) fn app_with_store(limits: Limits) -> (Router, Store) {
                 "this path does not take that method".into(),
             )
         })
-        .with_state(store.clone());
+        .with_state(store.clone())
+        // A request's body must arrive, and its answer be ready, in time: a body sent a byte at
+        // a time holds its connection no longer than this. (An event stream's answer is ready at
+        // once; its events are not counted.)
+        .layer(
+            tower::ServiceBuilder::new()
+                .layer(HandleErrorLayer::new(move |_: tower::BoxError| async move {
+                    ApiError(
+                        StatusCode::REQUEST_TIMEOUT,
+                        format!(
+                            "the request took longer than {} s to arrive and be answered",
+                            request_timeout.as_secs_f64()
+                        ),
+                    )
+                }))
+                .layer(tower::timeout::TimeoutLayer::new(request_timeout)),
+        );
     (router, store)
 }
 
@@ -294,24 +313,39 @@ async fn create(
     Client(client): Client,
     Json(g): Json<NewGame>,
 ) -> Result<impl IntoResponse, ApiError> {
+    // Refusing is cheap and building a game is not: the limits are checked first.
+    let bots = g.agents.iter().filter(|a| a.starts_with(MJAI)).count();
+    store.admit(client, bots).map_err(refused)?;
     let setup = setup(g, store.limits())?;
-    let (id, held) = store.create(setup, client).map_err(|e| match e {
-        Refused::Invalid(m) => unprocessable(m),
-        Refused::Full => ApiError(
-            StatusCode::SERVICE_UNAVAILABLE,
-            "the server is holding as many games as it may: try again later".into(),
-        ),
-        Refused::ClientFull(n) => ApiError(
-            StatusCode::TOO_MANY_REQUESTS,
-            format!("you hold {n} games, as many as one client may: leave one first"),
-        ),
-    })?;
+    let (id, held) = store.create(setup, client).map_err(refused)?;
     let body = {
         let s = held.lock();
         view_json(id, &s, TileMode::En, false)?
     };
     held.changed();
     Ok((StatusCode::CREATED, axum::Json(body)))
+}
+
+fn refused(e: Refused) -> ApiError {
+    let busy = |m: String| ApiError(StatusCode::SERVICE_UNAVAILABLE, m);
+    let yours = |m: String| ApiError(StatusCode::TOO_MANY_REQUESTS, m);
+    match e {
+        Refused::Invalid(m) => unprocessable(m),
+        Refused::Full => busy("the server is holding as many games as it may, each with a person playing: try again later".into()),
+        Refused::Reserved(n) => busy(format!(
+            "the server is nearly full and keeps its last places for newcomers; your network holds {n} games: leave one first"
+        )),
+        Refused::ClientFull(n) => yours(format!("you hold {n} games, as many as one client may: leave one first")),
+        Refused::NetworkFull(n) => yours(format!(
+            "your network holds {n} games, as many as one network may: leave one first"
+        )),
+        Refused::ClientBots { running, wanted, cap } => yours(format!(
+            "this game would start {wanted} MJAI bot processes and your games run {running}; one client may run {cap} at once: leave a game with bots first"
+        )),
+        Refused::ServerBots { running, wanted, cap } => busy(format!(
+            "this game would start {wanted} MJAI bot processes and the server runs {running} of at most {cap}: try again later, or play the built-in agents"
+        )),
+    }
 }
 
 fn tiles_of(q: &ViewQuery) -> Result<TileMode, ApiError> {
@@ -370,11 +404,20 @@ async fn next(State(store): State<Store>, Path(id): Path<String>) -> Result<axum
     Ok(axum::Json(body))
 }
 
-async fn remove(State(store): State<Store>, Path(id): Path<String>) -> Result<StatusCode, ApiError> {
-    if store.remove(game_id(&id)?) {
-        Ok(StatusCode::NO_CONTENT)
-    } else {
-        Err(not_found(&id))
+/// `DELETE /api/games/{id}`: only the client that started a game ends it (anyone who knows a
+/// game's id may watch it).
+async fn remove(
+    State(store): State<Store>,
+    Client(client): Client,
+    Path(id): Path<String>,
+) -> Result<StatusCode, ApiError> {
+    match store.remove(game_id(&id)?, client) {
+        Ok(()) => Ok(StatusCode::NO_CONTENT),
+        Err(NotRemoved::Missing) => Err(not_found(&id)),
+        Err(NotRemoved::NotYours) => Err(ApiError(
+            StatusCode::FORBIDDEN,
+            format!("game {id} was started by another client: only it may end the game"),
+        )),
     }
 }
 
@@ -446,16 +489,15 @@ async fn tiles_sprite(Path(mode): Path<String>) -> Result<Response, ApiError> {
 
 /// The most rounds an uploaded log may have (a long half game has about 20).
 const MAX_REPLAY_ROUNDS: usize = 32;
-static REPLAYS: tokio::sync::Semaphore = tokio::sync::Semaphore::const_new(1);
 
 /// `POST /api/replay` with a log as the body (tenhou.net/6, MJAI or mjlog XML): the replay page
 /// of that game.
-async fn replay(Text(body): Text) -> Result<Response, ApiError> {
-    replay_page("upload", &body).await
+async fn replay(State(store): State<Store>, Client(client): Client, Text(body): Text) -> Result<Response, ApiError> {
+    replay_page(&store, client, "upload", &body).await
 }
 
-/// The replay page of a log.
-async fn replay_page(name: &str, body: &str) -> Result<Response, ApiError> {
+/// The replay page of a log, drawn at `client`'s turn.
+async fn replay_page(store: &Store, client: std::net::IpAddr, name: &str, body: &str) -> Result<Response, ApiError> {
     let (game, _) = rinshan_logs::file::parse_log(name, body.as_bytes()).map_err(unprocessable)?;
     if game.rounds.is_empty() || game.rounds.len() > MAX_REPLAY_ROUNDS {
         return Err(unprocessable(format!(
@@ -463,13 +505,26 @@ async fn replay_page(name: &str, body: &str) -> Result<Response, ApiError> {
             game.rounds.len()
         )));
     }
-    // Drawing a game holds its frames in memory (a few tens of MB): one at a time.
-    let Ok(_permit) = REPLAYS.try_acquire() else {
-        return Err(ApiError(
+    let _turn = store.replays().turn(network(client)).await.map_err(|e| match e {
+        NoTurn::Busy => ApiError(
+            StatusCode::TOO_MANY_REQUESTS,
+            "a replay of yours is waiting or being drawn: one at a time".into(),
+        ),
+        NoTurn::Resting(left) => ApiError(
+            StatusCode::TOO_MANY_REQUESTS,
+            format!(
+                "your last replay took a while to draw: the next may start in {:.1} s",
+                left.as_secs_f64()
+            ),
+        ),
+        NoTurn::Queue(waited) => ApiError(
             StatusCode::SERVICE_UNAVAILABLE,
-            "another replay is being drawn: try again in a moment".into(),
-        ));
-    };
+            format!(
+                "other replays are being drawn and yours waited {} s: try again in a moment",
+                waited.as_secs()
+            ),
+        ),
+    })?;
     // Drawing every decision of a long game takes a while: keep it off the async threads.
     let page = tokio::task::spawn_blocking(move || rinshan_render::html::replay_html(&game, 0))
         .await
@@ -510,7 +565,11 @@ async fn saved_log(State(store): State<Store>, Path(name): Path<String>) -> Resu
 }
 
 /// `GET /api/saved/{name}/replay`: a saved game's replay page.
-async fn saved_replay(State(store): State<Store>, Path(name): Path<String>) -> Result<Response, ApiError> {
+async fn saved_replay(
+    State(store): State<Store>,
+    Client(client): Client,
+    Path(name): Path<String>,
+) -> Result<Response, ApiError> {
     let text = saved_text(&store, name.clone()).await?;
-    replay_page(&name, &text).await
+    replay_page(&store, client, &name, &text).await
 }

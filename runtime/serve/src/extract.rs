@@ -80,6 +80,18 @@ impl<S: Send + Sync, T: DeserializeOwned> FromRequestParts<S> for Query<T> {
     }
 }
 
+/// The network an address is in, as the per-network limits count: an IPv4 /24, an IPv6 /64 (one
+/// machine, or one household, usually holds a whole /64; an IPv4-mapped address counts as IPv4).
+pub fn network(ip: IpAddr) -> IpAddr {
+    match ip {
+        IpAddr::V4(v4) => IpAddr::V4(Ipv4Addr::from(v4.to_bits() & !0xff)),
+        IpAddr::V6(v6) => match v6.to_ipv4_mapped() {
+            Some(v4) => network(IpAddr::V4(v4)),
+            None => IpAddr::V6(std::net::Ipv6Addr::from(v6.to_bits() & !((1u128 << 64) - 1))),
+        },
+    }
+}
+
 /// The client's IP address: what the per-client limits count by. A request that came without the
 /// connection's address (an in-process test) counts as from localhost.
 pub struct Client(pub IpAddr);
@@ -90,5 +102,21 @@ impl<S: Send + Sync> FromRequestParts<S> for Client {
     async fn from_request_parts(parts: &mut Parts, _: &S) -> Result<Client, ApiError> {
         let addr = parts.extensions.get::<ConnectInfo<SocketAddr>>().map(|c| c.0.ip());
         Ok(Client(addr.unwrap_or(IpAddr::V4(Ipv4Addr::LOCALHOST))))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::network;
+
+    #[test]
+    fn networks_are_a_v4_slash_24_and_a_v6_slash_64() {
+        let net = |a: &str| network(a.parse().expect("an address")).to_string();
+        assert_eq!(net("10.1.2.3"), "10.1.2.0");
+        assert_eq!(net("10.1.2.255"), "10.1.2.0");
+        assert_ne!(net("10.1.3.1"), net("10.1.2.1"));
+        assert_eq!(net("2001:db8:1:2:aaaa:bbbb:cccc:dddd"), "2001:db8:1:2::");
+        assert_ne!(net("2001:db8:1:3::1"), net("2001:db8:1:2::1"));
+        assert_eq!(net("::ffff:10.1.2.3"), "10.1.2.0");
     }
 }

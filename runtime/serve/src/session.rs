@@ -54,6 +54,16 @@ pub struct Setup {
     pub delay: Duration,
 }
 
+impl Setup {
+    /// Its MJAI bot seats: each runs a process of its own.
+    pub fn bot_seats(&self) -> usize {
+        self.seats
+            .iter()
+            .filter(|s| matches!(s, Some(Opponent::Bot(_))))
+            .count()
+    }
+}
+
 /// Where a game stands, as the page shows it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]

@@ -14,27 +14,50 @@ use tokio::sync::{watch, Notify};
 
 use super::archive::Archive;
 use super::bots::NamedBot;
+use super::extract::network;
+use super::replays::Replays;
 use super::session::{Phase, Session, Setup};
 
-/// How much the server keeps, and for whom.
+/// How much the server keeps, and for whom. A client is an IP address; a network is an IPv4 /24
+/// or an IPv6 /64 (what one machine or household can hold many addresses of).
 #[derive(Debug, Clone)]
 pub struct Limits {
-    /// Games held at once; a new game past it is refused (503) once idle ones are dropped.
+    /// Games held at once; a new game past it is refused (503) once idle ones are dropped and no
+    /// game without a person is left to make way.
     pub max_games: usize,
     /// Games one client (IP address) may hold at once; past it its new games are refused (429).
     pub games_per_client: usize,
+    /// Games one network may hold at once (429 past it).
+    pub games_per_network: usize,
     /// A game no client request touched for this long is dropped.
     pub idle: Duration,
     /// A game is dropped this long after it started, touched or not.
     pub max_duration: Duration,
     /// Event streams one client may hold open at once (429 past it).
     pub streams_per_client: usize,
-    /// Connections served at once; further ones wait to be accepted.
+    /// Connections served at once (lowered to what the descriptor limit leaves); further ones
+    /// wait to be accepted.
     pub max_connections: usize,
-    /// A connection that has not sent a request's headers within this time is closed.
+    /// Connections one network may hold open; further ones are closed at once.
+    pub connections_per_network: usize,
+    /// A connection that has not sent a request's headers (or, HTTP/2, its preface) within this
+    /// time is closed; so is an idle one, and an HTTP/2 peer that leaves a ping unanswered as long.
     pub header_timeout: Duration,
+    /// A request's body must arrive, and its answer be ready, within this time (408 past it).
+    pub request_timeout: Duration,
+    /// MJAI bot processes running at once, server-wide (each bot seat of a game runs one).
+    pub bot_processes: usize,
+    /// MJAI bot processes one client's games may run at once.
+    pub bot_processes_per_client: usize,
     /// Where finished games are written as Tenhou logs (`games/` inside); `None`: nowhere.
     pub data_dir: Option<PathBuf>,
+    /// Saved games kept at most; past it (or past `saved_bytes`) the oldest are deleted.
+    pub saved_games: usize,
+    /// Bytes of saved games kept at most.
+    pub saved_bytes: u64,
+    /// Games one network's clients may have saved in any hour; past it a game is played but not
+    /// kept (the game says so).
+    pub saves_per_network_hour: usize,
     /// Every game deals from this seed instead of the OS random source: for tests and demos that
     /// must repeat a game (clients never choose the seed of a game they play in).
     pub fixed_seed: Option<u64>,
@@ -47,12 +70,20 @@ impl Default for Limits {
         Limits {
             max_games: 256,
             games_per_client: 8,
+            games_per_network: 16,
             idle: Duration::from_secs(30 * 60),
             max_duration: Duration::from_secs(4 * 60 * 60),
             streams_per_client: 16,
             max_connections: 1024,
+            connections_per_network: 64,
             header_timeout: Duration::from_secs(10),
+            request_timeout: Duration::from_secs(30),
+            bot_processes: 48,
+            bot_processes_per_client: 6,
             data_dir: None,
+            saved_games: 10_000,
+            saved_bytes: 1 << 30,
+            saves_per_network_hour: 120,
             fixed_seed: None,
             bots: Vec::new(),
         }
@@ -64,10 +95,27 @@ impl Default for Limits {
 pub enum Refused {
     /// The setup cannot be played.
     Invalid(String),
-    /// The server holds as many games as it may.
+    /// The server holds as many games as it may, none of which may make way (503).
     Full,
+    /// The last part of the table is kept for networks that hold no game yet (503).
+    Reserved(usize),
     /// This client holds as many games as it may.
     ClientFull(usize),
+    /// This client's network holds as many games as it may.
+    NetworkFull(usize),
+    /// The game's MJAI bot processes would pass the client's share (429).
+    ClientBots { running: usize, wanted: usize, cap: usize },
+    /// The game's MJAI bot processes would pass the server's cap (503).
+    ServerBots { running: usize, wanted: usize, cap: usize },
+}
+
+/// Why a game was not dropped on request.
+#[derive(Debug, PartialEq, Eq)]
+pub enum NotRemoved {
+    /// No such game.
+    Missing,
+    /// Another client started it.
+    NotYours,
 }
 
 /// One held game: the session, a wake-up for its driver, a counter bumped on every change, who
@@ -78,6 +126,10 @@ pub struct Held {
     changed: watch::Sender<u64>,
     closed: Mutex<bool>,
     client: IpAddr,
+    /// Its MJAI bot seats (a process each).
+    bots: usize,
+    /// Whether a person sits at it (games without one are the first to make way).
+    person: bool,
     created: Instant,
 }
 
@@ -119,6 +171,7 @@ pub struct Store {
     archive: Option<Archive>,
     /// Open event streams per client.
     streams: Arc<Mutex<HashMap<IpAddr, usize>>>,
+    replays: Replays,
 }
 
 /// An open event stream, counted against its client until dropped (the client went away or the
@@ -142,14 +195,23 @@ impl Drop for StreamPermit {
 
 impl Store {
     pub fn new(limits: Limits) -> Store {
+        let limits_request_timeout = limits.request_timeout;
         Store {
             games: Arc::default(),
             next: Arc::new(Mutex::new(1)),
             keys: std::hash::RandomState::new(),
-            archive: limits.data_dir.as_deref().map(Archive::new),
+            archive: limits.data_dir.as_deref().map(|d| Archive::new(d, &limits)),
             limits: Arc::new(limits),
             streams: Arc::default(),
+            // A replay waits for its turn at most a third of a request's time, leaving the rest
+            // for the drawing.
+            replays: Replays::new(limits_request_timeout / 3),
         }
+    }
+
+    /// Turns at the replay renderer.
+    pub fn replays(&self) -> &Replays {
+        &self.replays
     }
 
     /// The limits the store keeps.
@@ -166,23 +228,72 @@ impl Store {
         self.games.lock().unwrap_or_else(|p| p.into_inner())
     }
 
-    /// A new game for `client`, with its driver started.
-    pub fn create(&self, setup: Setup, client: IpAddr) -> Result<(u64, Arc<Held>), Refused> {
+    /// Whether `client` may start a game with `bots` MJAI bot seats now: checked before the game
+    /// is built (building one costs more than refusing it), and again as it is stored. A full
+    /// table first drops its idlest game without a person, or already over, to make way.
+    pub fn admit(&self, client: IpAddr, bots: usize) -> Result<(), Refused> {
         self.sweep();
-        let session = Session::new(setup).map_err(Refused::Invalid)?;
-        let mut map = self.map();
-        if map.len() >= self.limits.max_games {
-            return Err(Refused::Full);
+        self.admit_in(&mut self.map(), client, bots)
+    }
+
+    fn admit_in(&self, map: &mut HashMap<u64, Arc<Held>>, client: IpAddr, bots: usize) -> Result<(), Refused> {
+        let l = &*self.limits;
+        let net = network(client);
+        let (mut own, mut own_net, mut own_bots) = (0, 0, 0);
+        for h in map.values() {
+            if h.client == client {
+                own += 1;
+                own_bots += h.bots;
+            }
+            own_net += usize::from(network(h.client) == net);
         }
-        let own = map.values().filter(|h| h.client == client).count();
-        if own >= self.limits.games_per_client {
+        if own >= l.games_per_client {
             return Err(Refused::ClientFull(own));
         }
+        if own_net >= l.games_per_network {
+            return Err(Refused::NetworkFull(own_net));
+        }
+        if own_bots + bots > l.bot_processes_per_client {
+            return Err(Refused::ClientBots {
+                running: own_bots,
+                wanted: bots,
+                cap: l.bot_processes_per_client,
+            });
+        }
+        // A quarter of the table is kept for networks that hold no game, so that a few networks
+        // cannot fill it for everyone who comes after.
+        if map.len() >= l.max_games && !evict_one(map) {
+            return Err(Refused::Full);
+        }
+        let reserve = l.max_games / 4;
+        if reserve > 0 && own_net > 0 && map.len() >= l.max_games - reserve && !evict_one(map) {
+            return Err(Refused::Reserved(own_net));
+        }
+        let all_bots: usize = map.values().map(|h| h.bots).sum();
+        if all_bots + bots > l.bot_processes {
+            return Err(Refused::ServerBots {
+                running: all_bots,
+                wanted: bots,
+                cap: l.bot_processes,
+            });
+        }
+        Ok(())
+    }
+
+    /// A new game for `client`, with its driver started.
+    pub fn create(&self, setup: Setup, client: IpAddr) -> Result<(u64, Arc<Held>), Refused> {
+        let bots = setup.bot_seats();
+        let person = setup.seats.iter().any(Option::is_none);
+        self.admit(client, bots)?;
+        let session = Session::new(setup).map_err(Refused::Invalid)?;
+        let mut map = self.map();
+        // Others may have come in while the game was built.
+        self.admit_in(&mut map, client, bots)?;
         let id = loop {
             let mut n = self.next.lock().unwrap_or_else(|p| p.into_inner());
             *n += 1;
             // The id is the counter hashed with this process's random SipHash keys: anyone can
-            // play, read or drop a game whose id they know, so ids must not be guessable.
+            // play or read a game whose id they know, so ids must not be guessable.
             let id = self.keys.hash_one(*n) >> 11;
             if !map.contains_key(&id) {
                 break id;
@@ -195,11 +306,13 @@ impl Store {
             changed,
             closed: Mutex::new(false),
             client,
+            bots,
+            person,
             created: Instant::now(),
         });
         map.insert(id, held.clone());
         drop(map);
-        tokio::spawn(drive(held.clone(), id, self.archive.clone()));
+        tokio::spawn(drive(held.clone(), self.archive.clone()));
         Ok((id, held))
     }
 
@@ -224,10 +337,19 @@ impl Store {
         Some(held)
     }
 
-    /// Drops the game `id`; `false` if there was none.
-    pub fn remove(&self, id: u64) -> bool {
-        let held = self.map().remove(&id);
-        held.map(|h| h.close()).is_some()
+    /// Drops the game `id` at the request of `client`: only the client that started it may.
+    pub fn remove(&self, id: u64, client: IpAddr) -> Result<(), NotRemoved> {
+        let mut map = self.map();
+        match map.get(&id) {
+            None => Err(NotRemoved::Missing),
+            Some(h) if h.client != client => Err(NotRemoved::NotYours),
+            Some(_) => {
+                if let Some(h) = map.remove(&id) {
+                    h.close();
+                }
+                Ok(())
+            }
+        }
     }
 
     /// Drops the games idle for longer than the limit, and those held longer than the longest
@@ -245,12 +367,29 @@ impl Store {
     }
 }
 
+/// Drops the idlest game that no person plays, or that is over, to make way for a new one;
+/// `false` when every game has a person still playing.
+fn evict_one(map: &mut HashMap<u64, Arc<Held>>) -> bool {
+    let idlest = map
+        .iter()
+        .filter_map(|(id, h)| {
+            let s = h.lock();
+            (!h.person || s.phase() == Phase::Over).then_some((s.touched, *id))
+        })
+        .min();
+    let Some((_, id)) = idlest else { return false };
+    if let Some(h) = map.remove(&id) {
+        h.close();
+    }
+    true
+}
+
 /// Plays a game's agent moves, each after the game's delay, until the game is dropped. A
 /// spectated game also moves on past each round's result. The MJAI bots hear each step as soon as
 /// it is played and answer on a blocking thread, the session unlocked meanwhile (a bot may take
 /// its whole timeout; the page is not held). Once the game is over its log is written to the
 /// archive.
-async fn drive(held: Arc<Held>, id: u64, archive: Option<Archive>) {
+async fn drive(held: Arc<Held>, archive: Option<Archive>) {
     let mut saved = false;
     loop {
         if held.is_closed() {
@@ -262,7 +401,8 @@ async fn drive(held: Arc<Held>, id: u64, archive: Option<Archive>) {
                 saved = true;
                 // Off the async threads: a slow disk must not stall other games.
                 let archive = archive.clone();
-                let written = tokio::task::spawn_blocking(move || archive.save(id, &log)).await;
+                let net = network(held.client);
+                let written = tokio::task::spawn_blocking(move || archive.save(net, &log)).await;
                 if let Ok(Err(e)) | Err(e) = written.map_err(std::io::Error::other) {
                     held.lock().note(&format!("the game could not be saved: {e}"));
                 }

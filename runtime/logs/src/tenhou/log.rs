@@ -187,7 +187,7 @@ pub struct LogError {
 }
 
 impl LogError {
-    fn file(file: &str, message: impl Into<String>) -> LogError {
+    pub(crate) fn file(file: &str, message: impl Into<String>) -> LogError {
         LogError {
             file: file.to_string(),
             line: None,
@@ -224,7 +224,8 @@ impl std::error::Error for LogError {}
 /// Reads one log file (see [`parse_game`]).
 pub fn read_game(path: &Path) -> Result<Game, LogError> {
     let name = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| LogError::file(&name, e.to_string()))?;
+    let bytes = crate::file::read_log_bytes(path)?;
+    let text = String::from_utf8(bytes).map_err(|e| LogError::file(&name, format!("not UTF-8 text: {e}")))?;
     parse_game(&name, &text)
 }
 
