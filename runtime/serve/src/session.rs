@@ -13,7 +13,7 @@ use rinshan_engine::agents::Agent;
 use rinshan_engine::arena::refused_action;
 use rinshan_engine::env::{events as ev, Backend, Config, Env, Mode};
 use rinshan_engine::generated::kernel::{self, GameState};
-use rinshan_engine::{Tile, Variant};
+use rinshan_engine::{with_variant, Tile, Variant};
 use rinshan_logs::mjai::bot::check_games;
 use rinshan_logs::tenhou::write::Recorder;
 use rinshan_render::{Board, Options, RoundEndInput, TileMode};
@@ -116,6 +116,9 @@ pub struct Session {
     told: u32,
     /// The pass action's id (claim prompts offer it).
     pass: u32,
+    /// While a bot considers a call, the board the page shows instead of the table as it stands,
+    /// and how many events it shows (see [`Session::hold_view`]).
+    held_view: Option<(Board, usize)>,
     /// When a client's request last touched the game (the agents' moves do not count).
     pub touched: Instant,
     /// The game's MJAI bots, while they are here (not at work, and the game has some).
@@ -199,6 +202,7 @@ impl Session {
             events: Vec::new(),
             told: 0,
             pass,
+            held_view: None,
             touched: Instant::now(),
             bots,
             untold: Vec::new(),
@@ -253,15 +257,15 @@ impl Session {
 
     /// The board as the person may see it (a spectator sees every hand).
     pub fn board(&self) -> Result<Board, String> {
-        let mut board = match &self.ended {
-            Some(b) => b.clone(),
-            None => {
+        let mut board = match (&self.ended, &self.held_view) {
+            (Some(b), _) => b.clone(),
+            (None, Some((b, _))) if self.claim_pending() => b.clone(),
+            (None, _) => {
                 let state = self.state()?;
                 let mut board = Board::from_state(&state, self.setup.variant);
                 if self.claim_pending() {
-                    // A bot considering a call: the page shows the seat that plays on if nobody
-                    // calls (the next to draw; the kan's own seat after an added kan), not who may
-                    // take the tile.
+                    // No view held (the last discard of a round): the seat that plays on if
+                    // nobody calls, not who may take the tile.
                     board.current = match state.claim_kan {
                         0 => (state.claim_from + 1) % self.setup.variant.seats(),
                         _ => state.claim_from,
@@ -273,6 +277,55 @@ impl Session {
         };
         board.names = self.names.clone();
         Ok(board)
+    }
+
+    /// The board before a step, to hold if the step leaves a bot considering a call.
+    fn view_before(&self) -> Option<(Board, usize)> {
+        match (&self.held_view, self.claim_pending()) {
+            (Some(held), true) => Some(held.clone()),
+            _ => self.board().ok().map(|b| (b, self.events.len())),
+        }
+    }
+
+    /// What the page shows while a bot considers a call: what it shows when the built-in agents
+    /// decide theirs (at once, out of sight). After another seat's move: the table as it was
+    /// before it, as during any agent's pause. After the person's own move (their discard, or
+    /// their pass on a discard), which the page shows at once: the table as it will be if everyone
+    /// passes, the next seat having drawn (a face-down tile); a call, when made, is public
+    /// anyway. When that next seat is the person, their draw is not shown early: the table as it
+    /// was before their move, without its buttons (the one case in which the pause shows).
+    fn hold_view(&mut self, before: Option<(Board, usize)>, person_moved: bool) {
+        self.held_view = None;
+        if !self.claim_pending() {
+            return;
+        }
+        let Ok(state) = self.state() else { return };
+        if person_moved && state.claim_kan == 0 {
+            let passed = self.all_pass(&state).filter(|b| Some(b.current) != self.human());
+            if let Some(mut passed) = passed {
+                passed.names = self.names.clone();
+                self.held_view = Some((passed, self.events.len()));
+                return;
+            }
+        }
+        self.held_view = before;
+    }
+
+    /// The board of `state` after every seat passes its claim prompt; `None` if the round would
+    /// end there (its last discard), where there is no draw to show.
+    fn all_pass(&self, state: &GameState) -> Option<Board> {
+        let mut s = *state;
+        let (rounds, pass) = (s.rounds, self.pass);
+        with_variant!(self.setup.variant, v => {
+            for _ in 0..4 {
+                if s.phase != kernel::PHASE_CLAIM {
+                    break;
+                }
+                v::game_step(&mut s, pass);
+            }
+        });
+        let drew = s.rounds == rounds && s.terminated == 0 && s.phase != kernel::PHASE_CLAIM;
+        drew.then(|| Board::from_state(&s, self.setup.variant))
     }
 
     /// `board` (this game's [`Session::board`]) drawn for the page (faces from the page's sprite).
@@ -314,8 +367,11 @@ impl Session {
 
     /// The last lines of the game's story.
     pub fn events(&self) -> &[String] {
-        let n = self.events.len();
-        &self.events[n.saturating_sub(12)..]
+        let n = match (&self.held_view, self.claim_pending()) {
+            (Some((_, shown)), true) => (*shown).min(self.events.len()),
+            _ => self.events.len(),
+        };
+        &self.events[n.saturating_sub(12)..n]
     }
 
     /// Names by seat.
@@ -443,8 +499,10 @@ impl Session {
             refused_action(&ask.state.mask)
         });
         if self.claim_prompt() {
+            let before = self.view_before();
             self.step_once(action)?;
             self.answer_claims()?;
+            self.hold_view(before, false);
         } else {
             self.apply(action)?;
         }
@@ -496,9 +554,12 @@ impl Session {
     /// discard is hidden information, so the page never sees an agent considering a call (no
     /// delay, no `current`, no decision counted); it sees the call, if one is made, on the table.
     fn apply(&mut self, action: u32) -> Result<(), String> {
+        let (before, person_moved) = (self.view_before(), self.phase() == Phase::Human);
         self.step_once(action)?;
         self.step += 1;
-        self.answer_claims()
+        self.answer_claims()?;
+        self.hold_view(before, person_moved);
+        Ok(())
     }
 
     /// The built-in agents' claim prompts that follow, answered at once; a bot's waits for it.
@@ -686,10 +747,26 @@ mod tests {
         assert_eq!(label("self_kan_1z", None), "Kan E");
     }
 
+    /// What the person sees of a board: their own hand, the others' hand sizes and whether they
+    /// hold a drawn tile, and everything on the table.
+    fn seen(s: &Session) -> String {
+        let mut b = s.board().expect("a board");
+        let sizes: Vec<(usize, bool)> = (0..4).map(|p| (b.hands[p].len(), b.drawn[p].is_some())).collect();
+        for p in 1..4 {
+            b.hands[p].clear();
+            b.drawn[p] = None;
+        }
+        format!("{b:?} {sizes:?} {:?} {}", s.events(), s.choices().len())
+    }
+
     #[test]
     fn bots_decide_their_calls_out_of_sight() {
         // The stdlib test bot pons every pair it can; with a person at seat 0 and bots at 1 and
-        // 3, the page never shows who is considering a call.
+        // 3, the page shows, while a bot considers a call, what it shows when the built-in
+        // agents decide theirs at once: the view before another seat's discard, or after the
+        // person's own move the view that follows if nobody calls. Views are read from the
+        // session's state alone, so a bot's thinking time cannot change them; every state the
+        // page could read while a bot thinks is checked here, before its work is taken.
         let script = concat!(env!("CARGO_MANIFEST_DIR"), "/../../tests/data/mjai/bots/simple_bot.py");
         let bot = |name: &str| NamedBot {
             name: name.into(),
@@ -711,19 +788,41 @@ mod tests {
             ..setup([None; 4])
         })
         .expect("a game");
-        let (mut hidden, mut moves) = (0, 0);
+        let (mut frozen, mut forecast, mut forecast_kept, mut moves) = (0, 0, 0, 0);
+        // The last view with no call pending, and a pending view that was not it.
+        let mut free = seen(&s);
+        let mut ahead: Option<(String, usize)> = None;
         while s.phase() != Phase::Over {
+            let view = seen(&s);
             if s.claim_pending() {
-                // The table as it would be if nobody could call: the next seat to draw, no
-                // tile marked as claimed, whoever is really deciding.
-                let (state, board) = (s.state().expect("a state"), s.board().expect("a board"));
-                let next = if state.claim_kan != 0 {
-                    state.claim_from
+                let b = s.board().expect("a board");
+                let cur = b.current as usize;
+                // The seat shown to move holds a whole hand: never 13 tiles and no draw.
+                assert_eq!(
+                    (b.hands[cur].len() + usize::from(b.drawn[cur].is_some())) % 3,
+                    2,
+                    "{view}"
+                );
+                assert_eq!(b.claim, None);
+                if view == free {
+                    frozen += 1;
                 } else {
-                    (state.claim_from + 1) % 4
-                };
-                assert_eq!((board.current, board.claim), (next, None));
-                hidden += 1;
+                    assert_ne!(b.current, 0, "the person's own draw shown early");
+                    let melds: usize = b.melds.iter().map(Vec::len).sum();
+                    ahead = Some((view.clone(), melds));
+                }
+            } else {
+                if let Some((forecast_view, melds)) = ahead.take() {
+                    forecast += 1;
+                    let b = s.board().expect("a board");
+                    let called = b.melds.iter().map(Vec::len).sum::<usize>() > melds;
+                    if !called && s.ended.is_none() {
+                        // Nobody called: the view shown while the bot thought is what followed.
+                        assert_eq!(view, forecast_view);
+                        forecast_kept += 1;
+                    }
+                }
+                free = view;
             }
             if let Some(work) = s.bot_work() {
                 s.bot_done(work.run()).expect("the bots' move");
@@ -738,7 +837,10 @@ mod tests {
             moves += 1;
             assert!(moves < 20_000);
         }
-        assert!(hidden > 0, "no bot was asked about a call");
+        assert!(
+            frozen > 0 && forecast_kept > 0,
+            "frozen {frozen}, forecast {forecast} ({forecast_kept} kept)"
+        );
         assert!(!s.events.iter().any(|e| e.contains("failed")), "{:?}", s.events);
     }
 
