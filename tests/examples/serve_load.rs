@@ -107,8 +107,10 @@ fn main() {
         let base = format!("http://{}", listener.local_addr().expect("an address"));
         // Every person here is one client (localhost): the per-client cap is the server's.
         let limits = Limits {
-            max_games: people as usize + 16,
+            // A quarter of the table is kept for newcomers: this one client needs the rest.
+            max_games: 2 * people as usize + 32,
             games_per_client: people as usize + 16,
+            games_per_network: people as usize + 16,
             ..Limits::default()
         };
         tokio::spawn(async move { axum::serve(listener, app(limits)).await });

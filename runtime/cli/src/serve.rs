@@ -35,8 +35,8 @@ pub struct Args {
     /// Event streams (open pages) one client may hold at once
     #[arg(long, default_value_t = 16)]
     streams_per_client: usize,
-    /// Connections served at once; more wait to be accepted
-    #[arg(long, default_value_t = 1024)]
+    /// Connections served at once (lowered to what `ulimit -n` allows); more wait to be accepted
+    #[arg(long, default_value_t = 16_384)]
     max_connections: usize,
     /// Connections one network may hold open; more are closed at once
     #[arg(long, default_value_t = 64)]

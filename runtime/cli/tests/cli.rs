@@ -1129,7 +1129,7 @@ fn serve_fits_its_connections_to_the_descriptor_limit() {
     let _ = child.wait();
     // 400 descriptors, 64 kept for the process and 3 for each of the 48 bot processes.
     assert!(
-        said.iter().any(|l| l.contains("192 connections at once, not 1024")),
+        said.iter().any(|l| l.contains("192 connections at once, not 16384")),
         "{said:?}"
     );
 }

@@ -166,4 +166,25 @@ mod tests {
         let big = vec![b' '; MAX_TEXT as usize + 1];
         assert!(log_text("upload", &big).is_err_and(|e| e.message.contains("larger than 64 MiB")));
     }
+
+    #[test]
+    fn a_record_too_long_for_a_game_is_refused_before_it_is_parsed() {
+        // One line of 5 MiB inside the cap on files: a tenhou.net/6 record, and an MJAI event.
+        let long = format!("{{\"log\": [], \"title\": [\"{}\"]}}", "x".repeat(5 << 20));
+        let e = parse_log("long.json", long.as_bytes())
+            .map(|_| ())
+            .expect_err("refused");
+        assert!(e.message.contains("at most 4 MiB") && e.line == Some(1), "{e}");
+        let mjai = format!(
+            "{{\"type\":\"start_game\"}}\n{{\"type\":\"none\",\"x\":\"{}\"}}\n",
+            "x".repeat(70_000)
+        );
+        let e = parse_log("long.mjson", mjai.as_bytes())
+            .map(|_| ())
+            .expect_err("refused");
+        assert!(
+            e.message.contains("no MJAI event is longer") && e.line == Some(2),
+            "{e}"
+        );
+    }
 }

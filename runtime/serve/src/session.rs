@@ -281,6 +281,8 @@ impl Session {
 
     /// The board before a step, to hold if the step leaves a bot considering a call.
     fn view_before(&self) -> Option<(Board, usize)> {
+        // Only a bot leaves a call to consider: without one, no board is drawn for nothing.
+        self.bots.as_ref()?;
         match (&self.held_view, self.claim_pending()) {
             (Some(held), true) => Some(held.clone()),
             _ => self.board().ok().map(|b| (b, self.events.len())),

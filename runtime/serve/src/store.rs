@@ -36,7 +36,8 @@ pub struct Limits {
     /// Event streams one client may hold open at once (429 past it).
     pub streams_per_client: usize,
     /// Connections served at once (lowered to what the descriptor limit leaves); further ones
-    /// wait to be accepted.
+    /// wait to be accepted. Held connections cost little (a task and a small buffer each), and
+    /// every one that waits in the kernel's queue makes a newcomer wait: the cap is high.
     pub max_connections: usize,
     /// Connections one network may hold open; further ones are closed at once.
     pub connections_per_network: usize,
@@ -74,7 +75,7 @@ impl Default for Limits {
             idle: Duration::from_secs(30 * 60),
             max_duration: Duration::from_secs(4 * 60 * 60),
             streams_per_client: 16,
-            max_connections: 1024,
+            max_connections: 16_384,
             connections_per_network: 64,
             header_timeout: Duration::from_secs(10),
             request_timeout: Duration::from_secs(30),

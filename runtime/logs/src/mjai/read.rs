@@ -18,8 +18,11 @@ use crate::tenhou::write::round_value;
 /// Whether a text looks like an MJAI log: its first non-blank line is an object with a `type`.
 pub fn is_mjai(text: &str) -> bool {
     let first = text.lines().map(str::trim).find(|l| !l.is_empty());
+    // A line too long for an event is no MJAI log (and is not read into a tree to find out).
     first.is_some_and(|l| {
-        serde_json::from_str::<serde_json::Map<String, serde_json::Value>>(l).is_ok_and(|m| m.contains_key("type"))
+        l.len() <= MAX_EVENT
+            && serde_json::from_str::<serde_json::Map<String, serde_json::Value>>(l)
+                .is_ok_and(|m| m.contains_key("type"))
     })
 }
 
@@ -52,6 +55,9 @@ fn with_fourth_seat(event: &mut serde_json::Value) {
     }
 }
 
+/// The longest event line read.
+const MAX_EVENT: usize = 64 << 10;
+
 /// Reads the text of an MJAI log; `path` only names it in messages.
 pub fn parse_game(path: &str, text: &str) -> Result<Game, LogError> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
@@ -73,6 +79,19 @@ pub fn parse_game(path: &str, text: &str) -> Result<Game, LogError> {
                 ..file_error(path, format!("not an MJAI event: {message}"))
             }
         };
+        // An event is a few hundred bytes; a longer line is refused before it is read into a tree.
+        if line.len() > MAX_EVENT {
+            return Err(LogError {
+                line: Some(index + 1),
+                ..file_error(
+                    path,
+                    format!(
+                        "a line of {} bytes: no MJAI event is longer than {MAX_EVENT}",
+                        line.len()
+                    ),
+                )
+            });
+        }
         let mut value: serde_json::Value = serde_json::from_str(line).map_err(not_json)?;
         if seats.is_none() {
             seats = listed_seats(&value).filter(|&n| n == 3 || n == 4);

@@ -281,6 +281,9 @@ pub fn collect_files(paths: &[PathBuf]) -> Result<Vec<PathBuf>, LogError> {
     Ok(files)
 }
 
+/// The longest record (one line, or a pretty-printed file) read.
+const MAX_RECORD: usize = 4 << 20;
+
 /// Parses the text of one log file; `path` only names it in messages.
 pub fn parse_game(path: &str, text: &str) -> Result<Game, LogError> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
@@ -289,11 +292,24 @@ pub fn parse_game(path: &str, text: &str) -> Result<Game, LogError> {
         if line.trim().is_empty() {
             continue;
         }
+        // A record is read whole into a JSON tree, which takes many times its text: past this
+        // size it is refused first (a whole hanchan's record is under 200 KB).
+        if line.len() > MAX_RECORD {
+            return Err(LogError {
+                line: Some(index + 1),
+                message: format!(
+                    "a record of {:.1} MiB: a game's record is well under 1 MiB (at most {} MiB is read)",
+                    line.len() as f64 / (1 << 20) as f64,
+                    MAX_RECORD >> 20
+                ),
+                ..LogError::file(path, "")
+            });
+        }
         match serde_json::from_str::<Value>(line) {
             Ok(value) => records.push((index + 1, value)),
             Err(e) => {
                 // A single record spread over many lines (pretty-printed) fails on its first line.
-                if records.is_empty() {
+                if records.is_empty() && text.len() <= MAX_RECORD {
                     if let Ok(value @ Value::Object(_)) = serde_json::from_str::<Value>(text) {
                         records.push((index + 1, value));
                         break;
