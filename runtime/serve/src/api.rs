@@ -505,7 +505,7 @@ async fn replay_page(store: &Store, client: std::net::IpAddr, name: &str, body: 
             game.rounds.len()
         )));
     }
-    let _turn = store.replays().turn(network(client)).await.map_err(|e| match e {
+    let turn = store.replays().turn(network(client)).await.map_err(|e| match e {
         NoTurn::Busy => ApiError(
             StatusCode::TOO_MANY_REQUESTS,
             "a replay of yours is waiting or being drawn: one at a time".into(),
@@ -525,11 +525,15 @@ async fn replay_page(store: &Store, client: std::net::IpAddr, name: &str, body: 
             ),
         ),
     })?;
-    // Drawing every decision of a long game takes a while: keep it off the async threads.
-    let page = tokio::task::spawn_blocking(move || rinshan_render::html::replay_html(&game, 0))
-        .await
-        .map_err(|e| ApiError(StatusCode::INTERNAL_SERVER_ERROR, e.to_string()))?
-        .map_err(unprocessable)?;
+    // Drawing every decision of a long game takes a while: keep it off the async threads. The
+    // turn goes with the drawing, so a request that times out does not free the renderer early.
+    let page = tokio::task::spawn_blocking(move || {
+        let _turn = turn;
+        rinshan_render::html::replay_html(&game, 0)
+    })
+    .await
+    .map_err(|e| ApiError(StatusCode::INTERNAL_SERVER_ERROR, e.to_string()))?
+    .map_err(unprocessable)?;
     Ok(([(header::CONTENT_TYPE, "text/html; charset=utf-8")], page).into_response())
 }
 

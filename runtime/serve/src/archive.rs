@@ -121,13 +121,20 @@ impl Archive {
         let name = format!("{secs}-{number}.json");
         let tmp = self.dir.join(format!(".{name}.tmp"));
         std::fs::write(&tmp, log)?;
-        std::fs::rename(&tmp, self.dir.join(&name))?;
+        let path = self.dir.join(&name);
+        std::fs::rename(&tmp, &path)?;
+        // The listing after a restart reads the file's time: the index holds the same.
+        let written = std::fs::metadata(&path)
+            .and_then(|m| m.modified())
+            .ok()
+            .and_then(|t| t.duration_since(UNIX_EPOCH).ok())
+            .map_or(secs, |d| d.as_secs());
         let mut guard = self.kept();
         let kept = guard.get_or_insert_with(Kept::default);
         kept.bytes += log.len() as u64;
         kept.games.push_back(Saved {
             name: name.clone(),
-            written: secs,
+            written,
             bytes: log.len() as u64,
         });
         while kept.games.len() > 1 && (kept.games.len() > self.budget.games || kept.bytes > self.budget.bytes) {
