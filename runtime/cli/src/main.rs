@@ -14,6 +14,7 @@ mod dataset;
 mod error;
 mod mjai_bot;
 mod observe;
+mod outlook;
 mod reference;
 mod render;
 mod replay;
@@ -46,6 +47,8 @@ enum Command {
     Shanten(shanten::Args),
     /// Score a winning hand, e.g. `rinshan score 234567m234p4566s --win 6s --tsumo`
     Score(score::Args),
+    /// Win odds per discard, drawing alone from the tiles the seat cannot see, e.g. `rinshan outlook 123456789m1145p9s --draws 12`
+    Outlook(outlook::Args),
     /// Self-play of the built-in agents (or a uniformly random policy): speed, game statistics and how each agent did, e.g. `rinshan selfplay --games 1000`
     Selfplay(selfplay::Args),
     /// Replay tenhou.net/6, MJAI or mjlog logs, each under its rule set (red for Tenhou's), and compare every round, e.g. `rinshan replay logs/`
@@ -80,6 +83,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
     match cli.command {
         Command::Shanten(a) => shanten::run(a),
         Command::Score(a) => score::run(a),
+        Command::Outlook(a) => outlook::run(a),
         Command::Selfplay(a) => selfplay::run(a),
         Command::Replay(a) => replay::run(a),
         Command::Convert(a) => convert::run(a),

@@ -1133,3 +1133,31 @@ fn serve_fits_its_connections_to_the_descriptor_limit() {
         "{said:?}"
     );
 }
+
+#[test]
+fn outlook_ranks_the_discard_that_keeps_tenpai_first() {
+    let out = rinshan(&[
+        "outlook",
+        "123456789m1145p9s",
+        "--draws",
+        "12",
+        "--trials",
+        "4000",
+        "--json",
+    ]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    let first = &v["discards"][0];
+    assert_eq!(
+        (first["discard"].as_str(), first["shanten"].as_i64()),
+        (Some("9s"), Some(0))
+    );
+    // Eight winning tiles among 122 unseen, 12 draws: 1 - C(114,12)/C(122,12) = 0.5745.
+    let win = first["win"][11].as_f64().expect("a chance");
+    assert!((win - 0.5745).abs() < 0.04, "{win}");
+    let out = rinshan(&["outlook", "123m"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("3k+2"));
+    let out = rinshan(&["outlook", "123456789m1145p9s", "--seen", "99999s"]);
+    assert_eq!(out.status.code(), Some(2));
+}

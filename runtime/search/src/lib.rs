@@ -12,6 +12,7 @@
 //! * [`positions`] — the decisions of `defensive` self-play, for the tests and measurements.
 //! * [`options`] — `search:rollouts=256:base=defensive` as users write it.
 //! * [`seat`]    — the agent as an arena [`Entrant`](rinshan_engine::arena::Entrant).
+//! * [`outlook`] — win odds per discard, drawing alone from the unseen tiles.
 //!
 //! It sees only what its seat sees: every world is dealt by the observation leak tests'
 //! resampler ([`rinshan_engine::observe::resample_hidden`]), which reads the hidden tiles only as a
@@ -43,6 +44,7 @@
 
 pub mod decide;
 pub mod options;
+pub mod outlook;
 pub mod positions;
 pub mod rollout;
 pub mod seat;
