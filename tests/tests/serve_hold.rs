@@ -202,6 +202,16 @@ async fn a_full_table_drops_its_idlest_game_without_a_person() {
     let (_, played) = create(&app, "10.2.1.1:1", PERSON).await;
     let (_, watched) = create(&app, "10.2.2.1:1", SPECTATE).await;
     let (_, left) = create(&app, "10.2.3.1:1", SPECTATE).await;
+    // A request refused for its setup makes nobody's game make way.
+    let bad = r#"{"variant": "blue", "seat": 0, "agents": ["rule", "rule", "rule"]}"#;
+    for _ in 0..3 {
+        let (status, _) = create(&app, "10.2.5.1:1", bad).await;
+        assert_eq!(status, StatusCode::UNPROCESSABLE_ENTITY);
+    }
+    for text in [&played, &left, &watched] {
+        let (status, _) = get(&app, &format!("/api/games/{}?board=0", id(text))).await;
+        assert_eq!(status, StatusCode::OK, "a refused request dropped a game");
+    }
     tokio::time::sleep(Duration::from_millis(50)).await;
     // Someone still watches the first spectated game; nobody the second.
     let (status, _) = get(&app, &format!("/api/games/{}?board=0", id(&watched))).await;

@@ -232,12 +232,22 @@ impl Store {
     /// Whether `client` may start a game with `bots` MJAI bot seats now: checked before the game
     /// is built (building one costs more than refusing it), and again as it is stored. A full
     /// table first drops its idlest game without a person, or already over, to make way.
+    /// Nothing is dropped here: a request that is refused later (a bad setup) must not have
+    /// made anyone's game make way.
     pub fn admit(&self, client: IpAddr, bots: usize) -> Result<(), Refused> {
         self.sweep();
-        self.admit_in(&mut self.map(), client, bots)
+        self.admit_in(&mut self.map(), client, bots, false)
     }
 
-    fn admit_in(&self, map: &mut HashMap<u64, Arc<Held>>, client: IpAddr, bots: usize) -> Result<(), Refused> {
+    /// As [`Store::admit`]; with `evict`, a game that makes way is dropped, otherwise it is only
+    /// found.
+    fn admit_in(
+        &self,
+        map: &mut HashMap<u64, Arc<Held>>,
+        client: IpAddr,
+        bots: usize,
+        evict: bool,
+    ) -> Result<(), Refused> {
         let l = &*self.limits;
         let net = network(client);
         let (mut own, mut own_net, mut own_bots) = (0, 0, 0);
@@ -261,13 +271,18 @@ impl Store {
                 cap: l.bot_processes_per_client,
             });
         }
-        // A quarter of the table is kept for networks that hold no game, so that a few networks
-        // cannot fill it for everyone who comes after.
-        if map.len() >= l.max_games && !evict_one(map) {
-            return Err(Refused::Full);
+        let mut games = map.len();
+        if games >= l.max_games {
+            if !make_way(map, evict) {
+                return Err(Refused::Full);
+            }
+            games -= 1;
         }
+        // A quarter of the table is kept for networks that hold no game, so that a few networks
+        // cannot fill it for everyone who comes after. (The check without dropping may count
+        // one game as making way twice; the check that drops is exact.)
         let reserve = l.max_games / 4;
-        if reserve > 0 && own_net > 0 && map.len() >= l.max_games - reserve && !evict_one(map) {
+        if reserve > 0 && own_net > 0 && games >= l.max_games - reserve && !make_way(map, evict) {
             return Err(Refused::Reserved(own_net));
         }
         let all_bots: usize = map.values().map(|h| h.bots).sum();
@@ -288,8 +303,9 @@ impl Store {
         self.admit(client, bots)?;
         let session = Session::new(setup).map_err(Refused::Invalid)?;
         let mut map = self.map();
-        // Others may have come in while the game was built.
-        self.admit_in(&mut map, client, bots)?;
+        // Again, now dropping a game to make way if one must: others may have come in while the
+        // game was built.
+        self.admit_in(&mut map, client, bots, true)?;
         let id = loop {
             let mut n = self.next.lock().unwrap_or_else(|p| p.into_inner());
             *n += 1;
@@ -368,9 +384,9 @@ impl Store {
     }
 }
 
-/// Drops the idlest game that no person plays, or that is over, to make way for a new one;
-/// `false` when every game has a person still playing.
-fn evict_one(map: &mut HashMap<u64, Arc<Held>>) -> bool {
+/// Finds (and with `evict` drops) the idlest game that no person plays, or that is over, to make
+/// way for a new one; `false` when every game has a person still playing.
+fn make_way(map: &mut HashMap<u64, Arc<Held>>, evict: bool) -> bool {
     let idlest = map
         .iter()
         .filter_map(|(id, h)| {
@@ -379,8 +395,10 @@ fn evict_one(map: &mut HashMap<u64, Arc<Held>>) -> bool {
         })
         .min();
     let Some((_, id)) = idlest else { return false };
-    if let Some(h) = map.remove(&id) {
-        h.close();
+    if evict {
+        if let Some(h) = map.remove(&id) {
+            h.close();
+        }
     }
     true
 }
