@@ -8,7 +8,7 @@ use rayon::prelude::*;
 
 use crate::agents::Agent;
 use crate::env::{env_seed, Mode};
-use crate::generated::kernel::{self, GameState, ResetInput};
+use crate::generated::kernel::{self, GameState};
 use crate::Variant;
 
 /// A policy of the caller's, for [`run`]: one action per decision, from the deciding seat's planes
@@ -179,16 +179,7 @@ struct Tally {
 /// and adds its entrants' faults to `faults`.
 fn play(arena: &Arena, seed: u64, seating: &[Player; 4], game: u64, faults: &mut Vec<Fault>) -> ([Tally; 4], u64) {
     with_variant!(arena.variant, v => {
-        let mut s: GameState = v::game_new(ResetInput {
-            seed: [seed as u32, (seed >> 32) as u32],
-            mode: arena.mode.kernel(),
-            dealer: 4,
-            use_wall: 0,
-            wall: [0; 136],
-            uma: [0; 4],
-            penalty: v::host::ILLEGAL_ACTION_PENALTY,
-            auto_reset: 0,
-        });
+        let mut s: GameState = arena.variant.new_game(seed, arena.mode);
         let mut t = [Tally::default(); 4];
         let (mut called, mut riichi) = ([false; 4], [false; 4]);
         let mut decisions = 0u64;

@@ -49,6 +49,24 @@ impl Variant {
         })
     }
 
+    /// A game of these rules dealt from `seed` (its two words: low, high), `mode` long, with the
+    /// spec's penalty for an illegal action: the single game the arena and the tests step seat by
+    /// seat.
+    pub fn new_game(self, seed: u64, mode: crate::env::Mode) -> crate::generated::kernel::GameState {
+        with_variant!(self, v => {
+            v::game_new(crate::generated::kernel::ResetInput {
+                seed: [seed as u32, (seed >> 32) as u32],
+                mode: mode.kernel(),
+                dealer: 4,
+                use_wall: 0,
+                wall: [0; 136],
+                uma: [0; 4],
+                penalty: v::host::ILLEGAL_ACTION_PENALTY,
+                auto_reset: 0,
+            })
+        })
+    }
+
     /// Whether one copy of each five is red (`[tiles] red_fives`).
     pub fn red_fives(self) -> bool {
         with_variant!(self, v => v::RED_FIVES)

@@ -3,7 +3,8 @@
 //! taken from.
 
 use rinshan_engine::agents::Agent;
-use rinshan_engine::generated::kernel::{GameState, ResetInput, MODE_HALF};
+use rinshan_engine::env::Mode;
+use rinshan_engine::generated::kernel::GameState;
 use rinshan_engine::observe::OwnDraws;
 use rinshan_engine::{with_variant, Variant};
 
@@ -23,16 +24,7 @@ pub struct Position {
 /// false.
 pub fn defensive_game(variant: Variant, seed: u64, visit: &mut dyn FnMut(&Position) -> bool) {
     with_variant!(variant, v => {
-        let mut s: GameState = v::game_new(ResetInput {
-            seed: [seed as u32, (seed >> 32) as u32],
-            mode: MODE_HALF,
-            dealer: 4,
-            use_wall: 0,
-            wall: [0; 136],
-            uma: [0; 4],
-            penalty: v::host::ILLEGAL_ACTION_PENALTY,
-            auto_reset: 0,
-        });
+        let mut s: GameState = variant.new_game(seed, Mode::Half);
         let seats = variant.seats();
         let mut own: Vec<OwnDraws> = vec![OwnDraws::default(); 4];
         for q in 0..seats {

@@ -294,21 +294,12 @@ fn unknown_fields_and_none_events_are_ignored() {
 /// kans, riichi and every ending), following each live; returns the live streams.
 fn live_games(variant: Variant, games: u64, check_each_step: impl Fn(&Live, &GameState)) -> Vec<Live> {
     use rinshan_engine::agents::Agent;
-    use rinshan_engine::generated::kernel::{self, ResetInput};
+    use rinshan_engine::env::Mode;
     let agents = [Agent::Rule, Agent::Greedy, Agent::Defensive, Agent::Random];
     (0..games)
         .map(|g| {
             rinshan_engine::with_variant!(variant, v => {
-                let mut s: GameState = v::game_new(ResetInput {
-                    seed: [g as u32 + 11, 5],
-                    mode: kernel::MODE_HALF,
-                    dealer: 4,
-                    use_wall: 0,
-                    wall: [0; 136],
-                    uma: [0; 4],
-                    penalty: v::host::ILLEGAL_ACTION_PENALTY,
-                    auto_reset: 0,
-                });
+                let mut s: GameState = variant.new_game((5 << 32) | (g + 11), Mode::Half);
                 let names = ["a", "b", "c", "d"].map(String::from);
                 let mut live = Live::new(&s, names, variant).expect("a fresh game is followed");
                 while s.terminated == 0 {
