@@ -18,6 +18,7 @@
 mod api;
 mod archive;
 pub mod bots;
+mod counted;
 mod extract;
 mod listener;
 mod pages;

@@ -6,10 +6,8 @@
 //! Connections are capped in all (no more than the process's descriptors allow) and per network
 //! (an IPv4 /24, an IPv6 /64), and a failing `accept` backs off instead of spinning.
 
-use std::collections::HashMap;
-use std::net::IpAddr;
 use std::pin::Pin;
-use std::sync::{Arc, Mutex};
+use std::sync::Arc;
 use std::task::{Context, Poll};
 use std::time::Duration;
 
@@ -22,6 +20,7 @@ use tokio::io::AsyncReadExt as _;
 use tokio::net::TcpStream;
 use tower::ServiceExt as _;
 
+use super::counted::PerAddress;
 use super::extract::network;
 use super::store::{Limits, Store};
 
@@ -46,44 +45,6 @@ pub fn connection_cap(limits: &Limits) -> std::io::Result<usize> {
         )));
     }
     Ok(limits.max_connections.min(room as usize).max(1))
-}
-
-/// Open connections per network.
-#[derive(Clone, Default)]
-struct Networks(Arc<Mutex<HashMap<IpAddr, usize>>>);
-
-/// A connection counted against its network until dropped.
-struct Counted {
-    networks: Networks,
-    net: IpAddr,
-}
-
-impl Networks {
-    fn take(&self, ip: IpAddr, cap: usize) -> Option<Counted> {
-        let net = network(ip);
-        let mut map = self.0.lock().unwrap_or_else(|p| p.into_inner());
-        let n = map.entry(net).or_insert(0);
-        if *n >= cap {
-            return None;
-        }
-        *n += 1;
-        Some(Counted {
-            networks: self.clone(),
-            net,
-        })
-    }
-}
-
-impl Drop for Counted {
-    fn drop(&mut self) {
-        let mut map = self.networks.0.lock().unwrap_or_else(|p| p.into_inner());
-        if let Some(n) = map.get_mut(&self.net) {
-            *n -= 1;
-            if *n == 0 {
-                map.remove(&self.net);
-            }
-        }
-    }
 }
 
 /// hyper's settings: every deadline it has, and bounds on what one connection may hold.
@@ -141,7 +102,8 @@ pub async fn serve_on(listener: tokio::net::TcpListener, limits: Limits) -> std:
         );
     }
     let connections = Arc::new(tokio::sync::Semaphore::new(cap));
-    let networks = Networks::default();
+    // Open connections per network.
+    let networks = PerAddress::default();
     let per_network = limits.connections_per_network.max(1);
     // Under pressure (three quarters of the connections taken) a new connection gets a second,
     // not the usual deadline, to send its request: a client sends its headers within a round
@@ -180,7 +142,7 @@ pub async fn serve_on(listener: tokio::net::TcpListener, limits: Limits) -> std:
         };
         // Past its network's share a connection is closed at once: one machine cannot fill the
         // table of connections however many it opens.
-        let Some(counted) = networks.take(peer.ip(), per_network) else {
+        let Some(counted) = networks.take(network(peer.ip()), per_network) else {
             continue;
         };
         let router = router.clone();

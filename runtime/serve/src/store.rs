@@ -14,6 +14,7 @@ use tokio::sync::{watch, Notify};
 
 use super::archive::Archive;
 use super::bots::NamedBot;
+use super::counted::{Counted, PerAddress};
 use super::extract::network;
 use super::replays::Replays;
 use super::session::{Phase, Session, Setup};
@@ -171,27 +172,8 @@ pub struct Store {
     limits: Arc<Limits>,
     archive: Option<Archive>,
     /// Open event streams per client.
-    streams: Arc<Mutex<HashMap<IpAddr, usize>>>,
+    streams: PerAddress,
     replays: Replays,
-}
-
-/// An open event stream, counted against its client until dropped (the client went away or the
-/// game ended).
-pub struct StreamPermit {
-    streams: Arc<Mutex<HashMap<IpAddr, usize>>>,
-    client: IpAddr,
-}
-
-impl Drop for StreamPermit {
-    fn drop(&mut self) {
-        let mut map = self.streams.lock().unwrap_or_else(|p| p.into_inner());
-        if let Some(n) = map.get_mut(&self.client) {
-            *n -= 1;
-            if *n == 0 {
-                map.remove(&self.client);
-            }
-        }
-    }
 }
 
 impl Store {
@@ -203,7 +185,7 @@ impl Store {
             keys: std::hash::RandomState::new(),
             archive: limits.data_dir.as_deref().map(|d| Archive::new(d, &limits)),
             limits: Arc::new(limits),
-            streams: Arc::default(),
+            streams: PerAddress::default(),
             // A replay waits for its turn at most a third of a request's time, leaving the rest
             // for the drawing.
             replays: Replays::new(limits_request_timeout / 3),
@@ -296,15 +278,15 @@ impl Store {
         Ok(())
     }
 
-    /// A new game for `client`, with its driver started.
+    /// A new game for `client`, with its driver started. The caller has checked [`Store::admit`]
+    /// before building the setup.
     pub fn create(&self, setup: Setup, client: IpAddr) -> Result<(u64, Arc<Held>), Refused> {
         let bots = setup.bot_seats();
         let person = setup.seats.iter().any(Option::is_none);
-        self.admit(client, bots)?;
         let session = Session::new(setup).map_err(Refused::Invalid)?;
         let mut map = self.map();
-        // Again, now dropping a game to make way if one must: others may have come in while the
-        // game was built.
+        // Checked again, now dropping a game to make way if one must: others may have come in
+        // since the caller's `admit`.
         self.admit_in(&mut map, client, bots, true)?;
         let id = loop {
             let mut n = self.next.lock().unwrap_or_else(|p| p.into_inner());
@@ -333,18 +315,10 @@ impl Store {
         Ok((id, held))
     }
 
-    /// Counts an event stream against `client`; `None` when it holds as many as it may.
-    pub fn open_stream(&self, client: IpAddr) -> Option<StreamPermit> {
-        let mut map = self.streams.lock().unwrap_or_else(|p| p.into_inner());
-        let n = map.entry(client).or_insert(0);
-        if *n >= self.limits.streams_per_client {
-            return None;
-        }
-        *n += 1;
-        Some(StreamPermit {
-            streams: self.streams.clone(),
-            client,
-        })
+    /// Counts an event stream against `client` until the returned count is dropped (the client
+    /// went away or the game ended); `None` when it holds as many as it may.
+    pub fn open_stream(&self, client: IpAddr) -> Option<Counted> {
+        self.streams.take(client, self.limits.streams_per_client)
     }
 
     /// The game `id`, marked as touched.
