@@ -27,7 +27,7 @@ const SEAT_DISCARDED: u32 = 256; // has discarded at least once this round
 pub const SEAT_KITA_SHIFT: u32 = 16;
 
 pub const NO_TILE_VALUE: u32 = 255;
-const NO_CHOICE: u32 = 255;
+pub const NO_CHOICE: u32 = 255; // a claimant has not chosen yet (claim_choices)
 
 // Claim options of one seat on a discard (or an added kan).
 const CLAIM_RON: u32 = 1;

@@ -18,6 +18,7 @@ mod outlook;
 mod reference;
 mod render;
 mod replay;
+mod review;
 mod score;
 mod selfplay;
 mod serve;
@@ -57,6 +58,8 @@ enum Command {
     Convert(convert::Args),
     /// Training data from logs: every decision replayed into .npy shards with a manifest, e.g. `rinshan dataset logs/ -o data/`
     Dataset(dataset::Args),
+    /// A player's decisions in a log judged by the look-ahead: each action's value, the mistakes ranked by loss, as text, JSON or an HTML report, e.g. `rinshan review game.json --player NAME -o review.html`
+    Review(review::Args),
     /// A seat's observation at a position of a log, e.g. `rinshan observe game.json --round 2 --step 10`
     Observe(observe::Args),
     /// Draw a table as SVG or PNG, or a whole logged game as an HTML replay, e.g. `rinshan render game.json --round 1 --step 20 --png -o board.png`
@@ -90,6 +93,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Dataset(a) => dataset::run(a),
         Command::Arena(a) => arena::run(a),
         Command::MjaiBot(a) => mjai_bot::run(a),
+        Command::Review(a) => review::run(a),
         Command::Observe(a) => observe::run(a),
         Command::Render(a) => render::run(a),
         Command::Serve(a) => serve::run(a),

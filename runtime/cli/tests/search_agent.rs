@@ -1,6 +1,6 @@
 //! The look-ahead agent where the command line seats it: the arena (with its totals in the
-//! report), `mjai-bot --agent search`, and clear errors for a bad setting or a command that does
-//! not seat it.
+//! report), `mjai-bot --agent search`, the reviewer (`review`), and clear errors for a bad setting
+//! or a command that does not seat it.
 
 use std::io::Write;
 use std::process::{Command, Output, Stdio};
@@ -94,4 +94,69 @@ fn mjai_bot_decides_with_the_look_ahead() {
         "{replies:?}"
     );
     assert!(out.stderr.is_empty(), "{}", String::from_utf8_lossy(&out.stderr));
+}
+
+#[test]
+fn review_judges_a_players_decisions_in_a_real_log() {
+    let log = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../tests/data/tenhou/2019060813gm-00a9-0000-08bb0ec3.json"
+    );
+    let html = std::env::temp_dir().join(format!("rinshan-review-{}.html", std::process::id()));
+    let html_arg = html.display().to_string();
+    let out = rinshan(&[
+        "review",
+        log,
+        "--player",
+        "Aさん",
+        "--round",
+        "0",
+        "--search",
+        "search:rollouts=32",
+        "--json",
+        "-o",
+        &html_arg,
+    ]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let review: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    assert_eq!(review["seat"], 0);
+    assert_eq!(review["search"], "search:rollouts=32");
+    let decisions = review["decisions"].as_array().expect("decisions");
+    assert_eq!(decisions.len() as u64, review["game"]["decisions"].as_u64().unwrap());
+    assert!(decisions.len() >= 10, "{} decisions", decisions.len());
+    for d in decisions {
+        let candidates = d["candidates"].as_array().expect("candidates");
+        assert!(candidates.len() >= 2, "{d}");
+        assert!(candidates.iter().any(|c| c["action"] == d["played"]), "{d}");
+    }
+    let page = std::fs::read_to_string(&html).expect("the report is written");
+    let _ = std::fs::remove_file(&html);
+    assert!(page.starts_with("<!doctype html>") && page.contains("Aさん"));
+
+    // The text form lists the rounds.
+    let out = rinshan(&[
+        "review",
+        log,
+        "--seat",
+        "0",
+        "--round",
+        "0",
+        "--search",
+        "search:rollouts=16",
+    ]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("East 1, 0 honba"));
+
+    // Bad input: an unknown player (the players are listed), a bad budget, a seat past the table.
+    for (args, says) in [
+        (vec!["--player", "nobody"], "seat 0 `Aさん`"),
+        (vec!["--seat", "0", "--search", "search:rollouts=0"], "needs a budget"),
+        (vec!["--seat", "5"], "seats 0..3"),
+        (vec!["--seat", "0", "--round", "99"], "no round 99"),
+    ] {
+        let out = rinshan(&[&["review", log][..], &args].concat());
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(says), "{args:?}: {err}");
+    }
 }

@@ -65,6 +65,16 @@ pub fn frames(game: &Game) -> Result<Vec<(String, Board)>, String> {
     Ok(out)
 }
 
+/// `data` as JSON, gzipped and in base64: how a self-contained page carries its boards (its
+/// script unpacks them with the browser's `DecompressionStream`).
+pub fn pack(data: &impl Serialize) -> Result<String, String> {
+    let json = serde_json::to_vec(data).map_err(|e| e.to_string())?;
+    let mut gz = flate2::write::GzEncoder::new(Vec::new(), flate2::Compression::default());
+    gz.write_all(&json).map_err(|e| e.to_string())?;
+    let packed = gz.finish().map_err(|e| e.to_string())?;
+    Ok(base64::engine::general_purpose::STANDARD.encode(packed))
+}
+
 /// The replay page of `game`.
 pub fn replay_html(game: &Game, pov: u32) -> Result<String, String> {
     let boards = frames(game)?;
@@ -96,11 +106,7 @@ pub fn replay_html(game: &Game, pov: u32) -> Result<String, String> {
         frames,
         sprites: TileMode::ALL.iter().map(|&m| (m.to_string(), sprite(m))).collect(),
     };
-    let json = serde_json::to_vec(&data).map_err(|e| e.to_string())?;
-    let mut gz = flate2::write::GzEncoder::new(Vec::new(), flate2::Compression::default());
-    gz.write_all(&json).map_err(|e| e.to_string())?;
-    let packed = gz.finish().map_err(|e| e.to_string())?;
-    let b64 = base64::engine::general_purpose::STANDARD.encode(packed);
+    let b64 = pack(&data)?;
     let title = escape(&format!(
         "rinshan replay: {}",
         game.path.rsplit('/').next().unwrap_or(&game.path)

@@ -51,6 +51,24 @@ pub struct Decision {
     pub steps: u64,
 }
 
+/// Every legal action's estimate at one decision, and the best other action against a kept one.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Appraisal {
+    /// Every candidate's estimate, best mean first (over the worlds each played: the halving's and,
+    /// for the two duellists, the duel's).
+    pub candidates: Vec<Candidate>,
+    /// The best action other than the kept one after the halving.
+    pub challenger: Option<u32>,
+    /// The challenger's paired mean gain over the kept action in fresh worlds, and its standard
+    /// error (`None` where there was no duel: one legal action, the kept action illegal, or out of
+    /// time).
+    pub duel: Option<(f64, f64)>,
+    /// Play-outs played, over all candidates.
+    pub rollouts: u32,
+    /// Env steps they took.
+    pub steps: u64,
+}
+
 /// The look-ahead agent of one rule set.
 #[derive(Debug, Clone)]
 pub struct Search {
@@ -144,25 +162,62 @@ impl Search {
         if s.current != observer || !self.looks_ahead(s) {
             return decision;
         }
+        let a = self.appraise(s, observer, own_draws, nonce, &[base]);
+        let margin = self.options.margin;
+        let base_legal = s.mask[base as usize / 32] >> (base % 32) & 1 == 1;
+        decision.action = match (a.challenger, a.duel) {
+            (Some(c), Some((gain, se))) if gain > 0.0 && (gain > margin * se || margin <= 0.0) => c,
+            // The base agent's action is always legal; a state whose mask lacks it is not a game's.
+            (Some(c), None) if !base_legal => c,
+            _ => base,
+        };
+        decision.candidates = a.candidates;
+        decision.rollouts = a.rollouts;
+        decision.steps = a.steps;
+        decision
+    }
+
+    /// Every legal action at `s` valued for `observer` (the seat to act, at any decision: its own
+    /// turn or a claim prompt) in common worlds, with successive halving that always keeps the
+    /// actions of `kept`, then the best survivor other than `kept[0]` against `kept[0]` in fresh
+    /// worlds: the look-ahead decides by it (`kept` = the base agent's action) and the reviewer
+    /// judges by it (`kept` = the action played, then the base agent's, a sound challenger that
+    /// the halving's first noisy rounds could otherwise drop). Seeded like [`Search::decide`];
+    /// capped by the options' `ms` as well.
+    pub fn appraise(&self, s: &GameState, observer: u32, own_draws: &[u32], nonce: u64, kept: &[u32]) -> Appraisal {
         let start = Instant::now();
         let out_of_time = || self.options.ms > 0 && start.elapsed().as_millis() >= u128::from(self.options.ms);
+        let mut appraisal = Appraisal {
+            candidates: Vec::new(),
+            challenger: None,
+            duel: None,
+            rollouts: 0,
+            steps: 0,
+        };
         let actions = legal(&s.mask);
-        let base_index = actions.iter().position(|&a| a == base);
+        if actions.is_empty() {
+            return appraisal;
+        }
+        let kept_index = kept.first().and_then(|k| actions.iter().position(|a| a == k));
+        let pinned: Vec<usize> = kept
+            .iter()
+            .filter_map(|k| actions.iter().position(|a| a == k))
+            .collect();
         let seats = self.variant.seats();
         let seed = mix(self.options.seed, nonce);
         let mut worlds: Vec<GameState> = Vec::new();
         let mut values: Vec<Vec<f64>> = vec![Vec::new(); actions.len()];
         let mut alive: Vec<usize> = (0..actions.len()).collect();
         let halvings = (usize::BITS - (actions.len() - 1).leading_zeros()).max(1);
-        // Half the budget chooses a challenger; the rest pits it against the base agent's action
-        // in fresh worlds. The halving's best is the luckiest of many noisy estimates (the
-        // winner's curse): only worlds that played no part in choosing it judge it fairly.
+        // Half the budget chooses a challenger; the rest pits it against the kept action in fresh
+        // worlds. The halving's best is the luckiest of many noisy estimates (the winner's
+        // curse): only worlds that played no part in choosing it judge it fairly.
         let selection = self.options.rollouts as usize / 2;
         let per_halving = selection / halvings as usize;
-        let play = |c: usize, world: &GameState, decision: &mut Decision| {
+        let play = |c: usize, world: &GameState, appraisal: &mut Appraisal| {
             let (end, steps) = play_round(self.variant, *world, actions[c], self.options.base);
-            decision.rollouts += 1;
-            decision.steps += u64::from(steps);
+            appraisal.rollouts += 1;
+            appraisal.steps += u64::from(steps);
             placement_value(&end, observer, seats)
         };
         let deal_more = |worlds: &mut Vec<GameState>, n: usize| {
@@ -178,7 +233,7 @@ impl Search {
             let from = deal_more(&mut worlds, (per_halving / alive.len()).max(1));
             for &c in &alive {
                 for world in &worlds[from..] {
-                    let v = play(c, world, &mut decision);
+                    let v = play(c, world, &mut appraisal);
                     values[c].push(v);
                 }
                 if out_of_time() {
@@ -196,8 +251,10 @@ impl Search {
                 let mut ranked = alive.clone();
                 ranked.sort_by(|&a, &b| mean_and_stderr(&values[b]).0.total_cmp(&mean_and_stderr(&values[a]).0));
                 ranked.truncate(alive.len().div_ceil(2));
-                if let Some(b) = base_index.filter(|b| !ranked.contains(b)) {
-                    ranked.push(b);
+                for &b in &pinned {
+                    if !ranked.contains(&b) {
+                        ranked.push(b);
+                    }
                 }
                 ranked.sort_unstable();
                 alive = ranked;
@@ -206,15 +263,16 @@ impl Search {
         let challenger = alive
             .iter()
             .copied()
-            .filter(|&c| Some(c) != base_index)
+            .filter(|&c| Some(c) != kept_index)
             .max_by(|&a, &b| mean_and_stderr(&values[a]).0.total_cmp(&mean_and_stderr(&values[b]).0));
-        decision.action = match (challenger, base_index) {
-            (Some(c), Some(b)) if !timed_out && alive.contains(&b) => {
+        appraisal.challenger = challenger.map(|c| actions[c]);
+        if let (Some(c), Some(b)) = (challenger, kept_index) {
+            if !timed_out && alive.contains(&b) {
                 let duel = (self.options.rollouts as usize - selection) / 2;
                 let from = deal_more(&mut worlds, duel.max(2));
                 let mut gains = Vec::new();
                 for world in &worlds[from..] {
-                    let (vc, vb) = (play(c, world, &mut decision), play(b, world, &mut decision));
+                    let (vc, vb) = (play(c, world, &mut appraisal), play(b, world, &mut appraisal));
                     values[c].push(vc);
                     values[b].push(vb);
                     gains.push(vc - vb);
@@ -222,27 +280,20 @@ impl Search {
                         break;
                     }
                 }
-                let (gain, se) = mean_and_stderr(&gains);
-                match gain > 0.0 && (gain > self.options.margin * se || self.options.margin <= 0.0) {
-                    true => actions[c],
-                    false => base,
-                }
+                appraisal.duel = Some(mean_and_stderr(&gains));
             }
-            // The base agent's action is always legal; a state whose mask lacks it is not a game's.
-            (Some(c), None) => actions[c],
-            _ => base,
-        };
+        }
         for (c, v) in values.iter().enumerate().filter(|(_, v)| !v.is_empty()) {
             let (mean, stderr) = mean_and_stderr(v);
-            decision.candidates.push(Candidate {
+            appraisal.candidates.push(Candidate {
                 action: actions[c],
                 mean,
                 stderr,
                 rollouts: v.len() as u32,
             });
         }
-        decision.candidates.sort_by(|a, b| b.mean.total_cmp(&a.mean));
-        decision
+        appraisal.candidates.sort_by(|a, b| b.mean.total_cmp(&a.mean));
+        appraisal
     }
 
     /// The base agent's action at `s` (for the decisions the look-ahead leaves alone).

@@ -51,6 +51,6 @@ pub mod seat;
 pub mod value;
 pub mod world;
 
-pub use decide::{Decision, Search};
+pub use decide::{Appraisal, Candidate, Decision, Search};
 pub use options::{Focus, Options};
 pub use seat::SearchEntrant;

@@ -13,7 +13,7 @@
 //! tries; the last is kept otherwise).
 
 use rinshan_engine::generated::kernel::{
-    self, GameState, ShantenInput, NO_TILE_VALUE, SEAT_FURITEN_RIICHI, SEAT_FURITEN_TEMP, SEAT_RIICHI,
+    self, GameState, ShantenInput, NO_CHOICE, NO_TILE_VALUE, SEAT_FURITEN_RIICHI, SEAT_FURITEN_TEMP, SEAT_RIICHI,
 };
 use rinshan_engine::observe::resample_hidden;
 use rinshan_engine::random::Rng;
@@ -25,8 +25,9 @@ pub const RIICHI_TRIES: u32 = 16;
 /// A world for `observer` at `s` (its decision): the hidden tiles dealt afresh from `rng`, each
 /// other seat's hand built by as many draws as it has discarded tiles, their waits recomputed,
 /// their furiten and claim prompts cleared (what made them is hidden: the world starts them
-/// fresh), and each riichi seat tenpai where [`RIICHI_TRIES`] deals allow. `own_draws` are the
-/// wall places `observer` drew from this round ([`rinshan_engine::observe::OwnDraws`]).
+/// fresh; at a claim window the others pass), and each riichi seat tenpai where
+/// [`RIICHI_TRIES`] deals allow. `own_draws` are the wall places `observer` drew from this round
+/// ([`rinshan_engine::observe::OwnDraws`]).
 pub fn deal(variant: Variant, s: &GameState, observer: u32, own_draws: &[u32], rng: &mut Rng) -> GameState {
     let seats = variant.seats();
     let replacements = variant.drawn_replacements(s);
@@ -45,8 +46,10 @@ pub fn deal(variant: Variant, s: &GameState, observer: u32, own_draws: &[u32], r
             kernel::update_waits(&mut world, q);
             let flags = &mut world.seat_flags[q as usize];
             *flags &= !(SEAT_FURITEN_TEMP | SEAT_FURITEN_RIICHI);
+            // At a claim window the others are taken to pass on the tile: their options, and the
+            // choices of those asked before the observer, are hidden.
             world.claim_options[q as usize] = 0;
-            world.claim_choices[q as usize] = 0;
+            world.claim_choices[q as usize] = NO_CHOICE;
             let tenpai = world.waits[(q * 2) as usize] | world.waits[(q * 2 + 1) as usize] != 0;
             riichi_tenpai &= *flags & SEAT_RIICHI == 0 || tenpai;
         }
