@@ -382,4 +382,70 @@ async fn spectate_and_replay(c: &Client, base: &str) {
     screenshot(&c, "replay.png").await;
     let errors = js(&c, "return window.__errors").await;
     assert_eq!(errors, json!([]), "no script error");
+    // The same log reviewed: seat 1's decisions, the mistakes listed, a click on one shows it.
+    js(&c, "document.getElementById('review-seat').value = '1'; return true;").await;
+    // The replay's network rests as long as the replay took to draw: the page says so, and the
+    // person tries again. The review replaces the replay in the same viewer.
+    for _ in 0..20 {
+        js(&c, "window.__opened = false; document.getElementById('open').click(); setTimeout(() => { window.__opened = true; }, 50); return true;").await;
+        until(
+            &c,
+            "return window.__opened && !document.getElementById('open').disabled",
+            120,
+        )
+        .await;
+        let refused = js(
+            &c,
+            "const e = document.getElementById('error'); return e.hidden ? '' : e.textContent",
+        )
+        .await;
+        match refused.as_str() {
+            Some(m) if m.contains("may start in") => tokio::time::sleep(Duration::from_millis(500)).await,
+            Some("") => break,
+            _ => panic!("the review was refused: {refused}"),
+        }
+    }
+    let frame = c.find(Locator::Id("viewer")).await.expect("the viewer");
+    frame.enter_frame().await.expect("into the viewer");
+    until(
+        &c,
+        "return document.body.dataset.ready === '1' && document.getElementById('candidates') !== null",
+        60,
+    )
+    .await;
+    // Laid out, not only loaded: the title and the board take room.
+    let sizes = js(
+        &c,
+        "return [document.querySelector('h1').offsetHeight, document.getElementById('board').offsetHeight]",
+    )
+    .await;
+    assert!(sizes[0].as_u64() > Some(0) && sizes[1].as_u64() > Some(100), "{sizes}");
+    let shown = js(
+        &c,
+        "return [document.querySelectorAll('#candidates tbody tr').length, document.querySelectorAll('#board svg').length,
+                 document.querySelectorAll('#rounds tbody tr').length, document.querySelectorAll('#mistakes button').length,
+                 document.getElementById('summary').textContent]",
+    )
+    .await;
+    assert!(
+        shown[0].as_u64() >= Some(2) && shown[1] == json!(1) && shown[2].as_u64() >= Some(5),
+        "{shown}"
+    );
+    if shown[3].as_u64() > Some(0) {
+        // The list scrolls beside the board: a click from the script reaches any entry.
+        js(&c, "document.querySelector('#mistakes button').click(); return true;").await;
+        until(
+            &c,
+            "return document.getElementById('verdict').textContent.startsWith('Mistake')",
+            10,
+        )
+        .await;
+    }
+    c.enter_parent_frame().await.expect("back");
+    // The viewer repaints after its page has drawn: bring it into view, then the picture.
+    js(&c, "document.getElementById('viewer').scrollIntoView(); return true;").await;
+    tokio::time::sleep(Duration::from_millis(500)).await;
+    screenshot(&c, "review.png").await;
+    let errors = js(&c, "return window.__errors").await;
+    assert_eq!(errors, json!([]), "no script error");
 }

@@ -187,6 +187,35 @@ async fn a_whole_game_through_the_api_replays_from_its_log() {
     let (status, mjai_page) = send_from(&app, "10.0.2.1:1", Method::POST, "/api/replay", Some(&mjai), false).await;
     assert_eq!(status, StatusCode::OK, "{mjai_page}");
     assert_eq!(mjai_page, page);
+    // The review page of the person's seat (a review takes its turn like a replay).
+    let person = (2 + 4 - first) % 4;
+    let (status, review) = send_from(
+        &app,
+        "10.0.5.1:1",
+        Method::POST,
+        &format!("/api/review?seat={person}"),
+        Some(&text),
+        false,
+    )
+    .await;
+    assert_eq!(status, StatusCode::OK, "{review}");
+    assert!(review.starts_with("<!doctype html>") && review.contains("rinshan review: You in"));
+    for (query, says) in [("seat=4", "seats 0..3"), ("", "seat"), ("seat=x", "seat")] {
+        let (status, error) = send_from(
+            &app,
+            "10.0.6.1:1",
+            Method::POST,
+            &format!("/api/review?{query}"),
+            Some(&text),
+            false,
+        )
+        .await;
+        assert_eq!(status, StatusCode::BAD_REQUEST, "{query}: {error}");
+        assert!(
+            parsed(&error)["error"].as_str().is_some_and(|e| e.contains(says)),
+            "{query}: {error}"
+        );
+    }
     // The finished game was written to the data directory; a restarted server lists it too.
     let deadline = Instant::now() + Duration::from_secs(20);
     let saved = loop {

@@ -24,6 +24,7 @@ struct Frame<'a> {
 struct Data<'a> {
     player: String,
     search: &'a str,
+    rollouts_per_decision: u32,
     game: &'a Summary,
     rounds: &'a [RoundSummary],
     frames: Vec<Frame<'a>>,
@@ -55,6 +56,7 @@ pub fn review_html(game: &Game, review: &Review) -> Result<String, String> {
     let data = Data {
         player: player.clone(),
         search: &review.search,
+        rollouts_per_decision: review.rollouts_per_decision,
         game: &review.game,
         rounds: &review.rounds,
         frames,

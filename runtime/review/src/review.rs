@@ -13,7 +13,7 @@ use rinshan_engine::generated::kernel::GameState;
 use rinshan_engine::observe::OwnDraws;
 use rinshan_logs::tenhou::log::Game;
 use rinshan_logs::tenhou::position::round_positions;
-use rinshan_search::{Options, Search};
+use rinshan_search::{Candidate, Options, Search};
 use serde::Serialize;
 
 /// A decision of the reviewed seat with a choice, replayed.
@@ -136,7 +136,7 @@ pub struct Reviewed {
     pub loss_stderr: Option<f64>,
     /// The loss is `margin` standard errors above zero.
     pub mistake: bool,
-    /// Every legal action's value, best first.
+    /// Every legal action's value: the longest in the halving first, by value within each stage.
     pub candidates: Vec<Valued>,
     /// Play-outs spent on the decision.
     pub rollouts: u32,
@@ -217,6 +217,8 @@ pub struct Review {
     pub player: String,
     /// The look-ahead's settings (`search:rollouts=...`).
     pub search: String,
+    /// Its budget: play-outs per decision.
+    pub rollouts_per_decision: u32,
     /// Every decision with a choice, in order of play.
     pub decisions: Vec<Reviewed>,
     /// Totals per round (rounds where the player had no choice left out).
@@ -234,6 +236,15 @@ fn nonce(round: usize, step: usize) -> u64 {
     z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
     z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
     z ^ (z >> 31)
+}
+
+/// The candidates as far as they got: those that survived the halving longest (the most
+/// play-outs) first, by value within each stage. An action dropped after a world or two can show
+/// a lucky mean; it is listed below the ones compared over many.
+fn ranked(candidates: &[Candidate]) -> Vec<Candidate> {
+    let mut out = candidates.to_vec();
+    out.sort_by(|a, b| b.rollouts.cmp(&a.rollouts).then(b.mean.total_cmp(&a.mean)));
+    out
 }
 
 fn finite(x: f64) -> Option<f64> {
@@ -279,8 +290,7 @@ pub fn review_spots(game: &Game, seat: u32, spots: &[Spot], options: Options, pr
                 gain,
                 loss_stderr: a.duel.and_then(|(_, se)| finite(se)),
                 mistake,
-                candidates: a
-                    .candidates
+                candidates: ranked(&a.candidates)
                     .iter()
                     .map(|c| Valued {
                         action: name(c.action),
@@ -312,6 +322,7 @@ pub fn review_spots(game: &Game, seat: u32, spots: &[Spot], options: Options, pr
         seat,
         player: game.names[seat as usize].clone(),
         search: options.name(),
+        rollouts_per_decision: options.rollouts,
         game: Summary::of(decisions.iter()),
         rollouts: decisions.iter().map(|d| u64::from(d.rollouts)).sum(),
         decisions,

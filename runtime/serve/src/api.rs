@@ -1,4 +1,4 @@
-//! The HTTP routes: pages, the game API, the replay upload and the saved games. Every error is
+//! The HTTP routes: pages, the game API, the replay and review uploads and the saved games. Every error is
 //! JSON `{"error": ...}` with its status: axum's own extractors' rejections too (malformed bodies
 //! 400/415/422, the body limit 413; see `extract`), an unknown path 404 and a wrong method 405.
 
@@ -62,6 +62,7 @@ pub(super) fn app_with_store(limits: Limits) -> (Router, Store) {
     // A tenhou.net/6 log of a long game is a few tens of kilobytes; a megabyte bounds the upload.
     let replay = Router::new()
         .route("/api/replay", post(replay))
+        .route("/api/review", post(review))
         .layer(DefaultBodyLimit::max(1024 * 1024));
     let router = pages::routes()
         .merge(api)
@@ -498,6 +499,51 @@ async fn replay(State(store): State<Store>, Client(client): Client, Text(body): 
 
 /// The replay page of a log, drawn at `client`'s turn.
 async fn replay_page(store: &Store, client: std::net::IpAddr, name: &str, body: &str) -> Result<Response, ApiError> {
+    let game = replayable(name, body)?;
+    at_turn(store, client, move || rinshan_render::html::replay_html(&game, 0)).await
+}
+
+/// The look-ahead's budget per decision for a review on the page: a half game takes about 3 s
+/// of 2 cores (the command line's default, 1,024, four times as long).
+pub const REVIEW_ROLLOUTS: u32 = 256;
+
+/// `?seat=S`: the seat a review judges.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ReviewQuery {
+    seat: u32,
+}
+
+/// `POST /api/review?seat=S` with a log as the body: the review page of that seat's decisions
+/// ([`rinshan_review`]), judged at `client`'s turn like a replay (a review's cost makes the
+/// network rest as long).
+async fn review(
+    State(store): State<Store>,
+    Client(client): Client,
+    Query(q): Query<ReviewQuery>,
+    Text(body): Text,
+) -> Result<Response, ApiError> {
+    let game = replayable("upload", &body)?;
+    let seats = game.variant.seats();
+    if q.seat >= seats {
+        return Err(ApiError(
+            StatusCode::BAD_REQUEST,
+            format!("seat {}: a {seats}-player game has seats 0..{}", q.seat, seats - 1),
+        ));
+    }
+    let options = rinshan_search::Options {
+        rollouts: REVIEW_ROLLOUTS,
+        ..rinshan_search::Options::default()
+    };
+    at_turn(&store, client, move || {
+        let review = rinshan_review::review(&game, q.seat, None, options)?;
+        rinshan_review::review_html(&game, &review)
+    })
+    .await
+}
+
+/// A log a replay or a review reads: parsed, of a length the page draws.
+fn replayable(name: &str, body: &str) -> Result<rinshan_logs::tenhou::log::Game, ApiError> {
     let (game, _) = rinshan_logs::file::parse_log(name, body.as_bytes()).map_err(unprocessable)?;
     if game.rounds.is_empty() || game.rounds.len() > MAX_REPLAY_ROUNDS {
         return Err(unprocessable(format!(
@@ -505,6 +551,15 @@ async fn replay_page(store: &Store, client: std::net::IpAddr, name: &str, body: 
             game.rounds.len()
         )));
     }
+    Ok(game)
+}
+
+/// The page `draw` makes, drawn at `client`'s turn among the replays and reviews.
+async fn at_turn(
+    store: &Store,
+    client: std::net::IpAddr,
+    draw: impl FnOnce() -> Result<String, String> + Send + 'static,
+) -> Result<Response, ApiError> {
     let turn = store.replays().turn(network(client)).await.map_err(|e| match e {
         NoTurn::Busy => ApiError(
             StatusCode::TOO_MANY_REQUESTS,
@@ -529,7 +584,7 @@ async fn replay_page(store: &Store, client: std::net::IpAddr, name: &str, body: 
     // turn goes with the drawing, so a request that times out does not free the renderer early.
     let page = tokio::task::spawn_blocking(move || {
         let _turn = turn;
-        rinshan_render::html::replay_html(&game, 0)
+        draw()
     })
     .await
     .map_err(|e| ApiError(StatusCode::INTERNAL_SERVER_ERROR, e.to_string()))?

@@ -279,9 +279,13 @@ async function openReplay(ev) {
   showError(null);
   const file = $("file").files[0];
   if (!file) { showError("choose a log file first"); return; }
+  const seat = $("review-seat").value;
+  const url = seat === "" ? "/api/replay" : "/api/review?seat=" + seat;
+  $("open").disabled = true;
   try {
-    await showReplay(await fetch("/api/replay", { method: "POST", body: await file.text() }));
+    await showReplay(await fetch(url, { method: "POST", body: await file.text() }));
   } catch (e) { showError(e); }
+  $("open").disabled = false;
 }
 
 // The games this server finished and kept, newest first (none where it keeps none).
