@@ -24,7 +24,8 @@ from .env import (
     unpack_planes,
 )
 from .evaluate import Evaluation, evaluate
-from .hands import score, shanten
+from .hands import outlook, score, shanten
+from .review import review
 from .tenhou import replay
 
 __all__ = [
@@ -43,8 +44,10 @@ __all__ = [
     "fields",
     "make",
     "mjai",
+    "outlook",
     "packed_rows",
     "replay",
+    "review",
     "score",
     "shanten",
     "tenhou",

@@ -25,6 +25,8 @@ __all__ = [
     "dataset_build",
     "dataset_records",
     "dataset_sources",
+    "review",
+    "outlook",
 ]
 
 __version__: str
@@ -100,10 +102,14 @@ def dataset_records(
 def dataset_sources(inputs: list[str]) -> list[tuple[str, bool]]: ...
 def fields(form: str) -> tuple[int, list[tuple[str, int, str, list[int], str]]]: ...
 def names() -> tuple[list[str], list[str], list[str], list[str]]: ...
+def outlook(hand: str, seen: str, draws: int, trials: int, seed: int) -> str: ...
 def packed_rows() -> list[tuple[str, int]]: ...
 def replay(
     paths: list[str], backend: str = "cpu", variant: str | None = None
 ) -> dict[str, Any]: ...
+def review(
+    path: str, seat: int | None, player: str | None, round: int | None, search: str
+) -> str: ...
 def score(
     variant: str,
     hand: str,

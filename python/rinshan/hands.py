@@ -56,3 +56,21 @@ def score(
             variant, hand, win, on, round_wind, seat_wind, dora, ura, list(melds), honba, sticks
         )
     )
+
+
+def outlook(
+    hand: str, *, seen: str = "", draws: int = 12, trials: int = 10_000, seed: int = 1
+) -> dict:
+    """Win odds per discard, drawing alone from the tiles the seat cannot see, as
+    `rinshan outlook --json` gives them: `{"draws", "discards": [{"discard", "shanten", "tenpai",
+    "win", "trials"}]}`, best first, where `tenpai[k]` and `win[k]` are the chances of being tenpai
+    and of having won within `k + 1` draws. `seen` holds the tiles the seat sees elsewhere
+    (rivers, melds, dora indicators), which it cannot draw. Each chance `p` has the standard error
+    `sqrt(p * (1 - p) / trials)`; other seats' wins and an open hand's yaku are not counted.
+
+    >>> odds = outlook("123456789m1145p9s", draws=12, trials=2000)
+    >>> best = odds["discards"][0]
+    >>> best["discard"], best["shanten"], len(best["win"])
+    ('9s', 0, 12)
+    """
+    return json.loads(_core.outlook(hand, seen, draws, trials, seed))

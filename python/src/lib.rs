@@ -2,6 +2,7 @@
 
 use pyo3::prelude::*;
 
+mod analysis;
 mod dataset;
 mod env;
 mod mjai;
@@ -15,5 +16,6 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<env::PyEnv>()?;
     m.add_class::<mjai::PyMjaiPlayer>()?;
     tools::register(m)?;
+    analysis::register(m)?;
     dataset::register(m)
 }

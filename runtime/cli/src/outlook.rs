@@ -1,7 +1,6 @@
 //! `rinshan outlook`: a hand's odds per discard, drawing alone from the tiles the seat cannot see.
 
-use rinshan_engine::notation::parse_tiles;
-use rinshan_search::outlook::{solo, unseen};
+use rinshan_search::outlook::{of_notation, to_json};
 
 use crate::error::CliError;
 
@@ -28,39 +27,9 @@ pub struct Args {
 }
 
 pub fn run(args: Args) -> Result<(), CliError> {
-    let hand = parse_tiles(&args.hand)
-        .map_err(|e| CliError::input(format!("hand: {e}")))?
-        .counts();
-    let seen = match args.seen.trim() {
-        "" => [0; 34],
-        s => parse_tiles(s)
-            .map_err(|e| CliError::input(format!("--seen: {e}")))?
-            .counts(),
-    };
-    if let Some(t) = (0..34).find(|&t| hand[t] + seen[t] > 4) {
-        return Err(CliError::input(format!(
-            "{} copies of tile {t} in the hand and --seen: there are only 4",
-            hand[t] + seen[t]
-        )));
-    }
-    if args.trials == 0 || args.draws == 0 {
-        return Err(CliError::input("--trials and --draws must be at least 1"));
-    }
-    let odds = solo(&hand, &unseen(&hand, &seen), args.draws, args.trials, args.seed).map_err(CliError::input)?;
+    let odds = of_notation(&args.hand, &args.seen, args.draws, args.trials, args.seed).map_err(CliError::input)?;
     if args.json {
-        let v: Vec<serde_json::Value> = odds
-            .iter()
-            .map(|o| {
-                serde_json::json!({
-                    "discard": o.discard.name(),
-                    "shanten": o.shanten,
-                    "tenpai": o.tenpai,
-                    "win": o.win,
-                    "trials": o.trials,
-                })
-            })
-            .collect();
-        println!("{}", serde_json::json!({ "draws": args.draws, "discards": v }));
+        println!("{}", to_json(&odds, args.draws));
         return Ok(());
     }
     let last = args.draws - 1;

@@ -6,7 +6,7 @@ use std::path::PathBuf;
 
 use indicatif::{ProgressBar, ProgressStyle};
 use rinshan_logs::read_log;
-use rinshan_review::{review_html, review_spots, seat_of, spots};
+use rinshan_review::{review_html, review_spots, seat_for, spots};
 use rinshan_search::Options;
 
 use crate::error::CliError;
@@ -46,11 +46,7 @@ pub struct Args {
 pub fn run(args: Args) -> Result<(), CliError> {
     let options: Options = args.search.parse().map_err(CliError::input)?;
     let game = read_log(&args.log).map_err(CliError::input)?;
-    let seat = match (&args.player, args.seat) {
-        (Some(name), _) => seat_of(&game, name).map_err(CliError::input)?,
-        (None, Some(s)) => s,
-        (None, None) => return Err(CliError::input("give --player NAME or --seat S")),
-    };
+    let seat = seat_for(&game, args.seat, args.player.as_deref()).map_err(CliError::input)?;
     let spots = spots(&game, seat, args.round).map_err(CliError::input)?;
     let bar = match std::io::stderr().is_terminal() && !args.json {
         true => {

@@ -19,4 +19,4 @@ pub mod html;
 pub mod review;
 
 pub use html::review_html;
-pub use review::{review, review_spots, seat_of, spots, Review, Reviewed, Spot, Summary};
+pub use review::{review, review_spots, seat_for, seat_of, spots, Review, Reviewed, Spot, Summary};

@@ -78,6 +78,16 @@ pub fn spots(game: &Game, seat: u32, round: Option<usize>) -> Result<Vec<Spot>, 
     Ok(out)
 }
 
+/// The seat to review: `seat` itself, or that of the player called `player`; one of the two.
+pub fn seat_for(game: &Game, seat: Option<u32>, player: Option<&str>) -> Result<u32, String> {
+    match (seat, player) {
+        (Some(_), Some(_)) => Err("give a seat or a player, not both".into()),
+        (Some(s), None) => Ok(s),
+        (None, Some(name)) => seat_of(game, name),
+        (None, None) => Err("give the seat to review, or the player's name".into()),
+    }
+}
+
 /// The seat of the player called `name` in `game`.
 pub fn seat_of(game: &Game, name: &str) -> Result<u32, String> {
     let seats = game.variant.seats() as usize;

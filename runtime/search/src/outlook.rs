@@ -8,8 +8,10 @@
 //! checked here, nor are the other seats' wins that would end the round first.
 
 use rinshan_engine::hand::shanten;
+use rinshan_engine::notation::parse_tiles;
 use rinshan_engine::random::Rng;
 use rinshan_engine::tile::TileType;
+use serde_json::{json, Value};
 
 /// One candidate discard's odds.
 #[derive(Debug, Clone, PartialEq)]
@@ -165,6 +167,46 @@ pub fn solo(hand: &[u8; 34], unseen: &[u8; 34], draws: usize, trials: u32, seed:
         last(b).total_cmp(&last(a)).then(a.shanten.cmp(&b.shanten))
     });
     Ok(out)
+}
+
+/// [`solo`] from tiles in notation, as `rinshan outlook` and Python's `rinshan.outlook` take
+/// them: `hand` to discard from (`123456789m1145p9s`, 0 = a red five) and `seen`, the tiles the
+/// seat sees elsewhere (rivers, melds, dora indicators; may be empty).
+pub fn of_notation(hand: &str, seen: &str, draws: usize, trials: u32, seed: u64) -> Result<Vec<Odds>, String> {
+    let hand = parse_tiles(hand).map_err(|e| format!("hand: {e}"))?.counts();
+    let seen = match seen.trim() {
+        "" => [0; 34],
+        s => parse_tiles(s).map_err(|e| format!("seen: {e}"))?.counts(),
+    };
+    if let Some(t) = (0..34).find(|&t| hand[t] + seen[t] > 4) {
+        let name = TileType::new(t as u8).map_or_else(|| t.to_string(), |t| t.name());
+        return Err(format!(
+            "{} copies of {name} in the hand and the tiles seen: there are only 4",
+            hand[t] + seen[t]
+        ));
+    }
+    if trials == 0 || draws == 0 {
+        return Err("trials and draws must be at least 1".into());
+    }
+    solo(&hand, &unseen(&hand, &seen), draws, trials, seed)
+}
+
+/// `odds` (of `draws` draws) as JSON: `{"draws": k, "discards": [{"discard", "shanten", "tenpai",
+/// "win", "trials"}]}`, best first, `tenpai[i]` and `win[i]` the chances by draw `i + 1`.
+pub fn to_json(odds: &[Odds], draws: usize) -> Value {
+    let discards: Vec<Value> = odds
+        .iter()
+        .map(|o| {
+            json!({
+                "discard": o.discard.name(),
+                "shanten": o.shanten,
+                "tenpai": o.tenpai,
+                "win": o.win,
+                "trials": o.trials,
+            })
+        })
+        .collect();
+    json!({ "draws": draws, "discards": discards })
 }
 
 #[cfg(test)]
