@@ -175,8 +175,15 @@ async fn play_a_round(c: &Client, base: &str) {
         .await
         .expect("start");
     until(&c, "return !!document.querySelector('#board svg')", 20).await;
+    // The person asks for the odds of each discard at their turns.
+    c.find(Locator::Id("odds-on"))
+        .await
+        .expect("the odds switch")
+        .click()
+        .await
+        .expect("odds on");
     let deadline = Instant::now() + Duration::from_secs(150);
-    let (mut clicks, mut shot) = (0, false);
+    let (mut clicks, mut shot, mut odds) = (0, false, 0);
     loop {
         assert!(
             Instant::now() < deadline && clicks < 400,
@@ -200,6 +207,16 @@ async fn play_a_round(c: &Client, base: &str) {
             screenshot(&c, "play.png").await;
             shot = true;
         }
+        if buttons.is_empty() && odds < 3 {
+            // An own turn: the odds table lists the discards, the best first.
+            until(
+                &c,
+                "return document.querySelectorAll('#odds .odds-table tr').length > 1",
+                20,
+            )
+            .await;
+            odds += 1;
+        }
         let target = match buttons.into_iter().next() {
             Some(b) => b,
             None => c
@@ -212,6 +229,7 @@ async fn play_a_round(c: &Client, base: &str) {
         until(&c, &format!("return document.body.dataset.step !== '{step}'"), 20).await;
     }
     assert!(clicks >= 5, "the person played ({clicks} clicks)");
+    assert!(odds >= 1, "the odds were shown at an own turn");
     let result = c.find(Locator::Id("result")).await.expect("the result panel");
     assert!(
         result.is_displayed().await.expect("visible"),

@@ -409,6 +409,70 @@ async fn a_person_starts_as_the_wind_they_chose() {
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn the_odds_are_offered_at_the_persons_own_turn() {
+    let app = app(Limits {
+        fixed_seed: Some(4),
+        ..Limits::default()
+    });
+    for (variant, agents, draws) in [
+        ("red", &["rule", "rule", "rule"][..], 18),
+        ("sanma", &["rule", "rule"][..], 18),
+    ] {
+        // The person deals first; the agents would wait 10 s: the game stays at its first decision.
+        let body = json!({"variant": variant, "mode": "east", "wind": 0, "agents": agents, "delay_ms": 10000});
+        let v = new_game(&app, body).await;
+        let id = v["id"].as_str().expect("an id").to_string();
+        assert_eq!(v["phase"], "human", "{v}");
+        let (status, text) = get(&app, &format!("/api/games/{id}/outlook")).await;
+        assert_eq!(status, StatusCode::OK, "{text}");
+        let o = parsed(&text);
+        assert_eq!(o["draws"], draws, "{variant}: {o}");
+        let discards = o["discards"].as_array().expect("discards");
+        // One line per tile type the person may discard (a red five's line is its type's).
+        let legal: std::collections::BTreeSet<String> = v["legal"]
+            .as_array()
+            .expect("legal")
+            .iter()
+            .filter_map(|c| c["tile"].as_str())
+            .map(|t| t.replace('0', "5"))
+            .collect();
+        let offered: std::collections::BTreeSet<String> = discards
+            .iter()
+            .map(|d| d["discard"].as_str().unwrap_or_default().to_string())
+            .collect();
+        // Discarding the tile just drawn is tsumogiri, not a discard_ choice, when no other copy is held.
+        let tsumogiri = v["legal"]
+            .as_array()
+            .is_some_and(|l| l.iter().any(|c| c["name"] == "tsumogiri"));
+        assert!(
+            legal.is_subset(&offered) && offered.len() <= legal.len() + usize::from(tsumogiri),
+            "{variant}: {offered:?} vs {legal:?}"
+        );
+        for d in discards {
+            assert_eq!(d["win"].as_array().map(Vec::len), Some(draws), "{d}");
+            assert_eq!(d["trials"], rinshan_serve::OUTLOOK_TRIALS, "{d}");
+        }
+        // The same odds on a second look (the same draws).
+        assert_eq!(get(&app, &format!("/api/games/{id}/outlook")).await.1, text);
+    }
+    // Not the person's turn: refused with the reason.
+    let body =
+        json!({"variant": "red", "mode": "east", "wind": 1, "agents": ["rule", "rule", "rule"], "delay_ms": 10000});
+    let v = new_game(&app, body).await;
+    let id = v["id"].as_str().expect("an id");
+    let (status, text) = get(&app, &format!("/api/games/{id}/outlook")).await;
+    assert_eq!(status, StatusCode::CONFLICT, "{text}");
+    assert!(
+        parsed(&text)["error"]
+            .as_str()
+            .is_some_and(|e| e.contains("your own turn")),
+        "{text}"
+    );
+    let (status, _) = get(&app, "/api/games/123456789/outlook").await;
+    assert_eq!(status, StatusCode::NOT_FOUND);
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn every_refusal_has_its_status_and_a_message() {
     let app = app(Limits {
         max_games: 3,

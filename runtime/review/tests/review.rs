@@ -138,8 +138,8 @@ fn a_tenpai_hand_is_not_thrown_away() {
                 })
                 .collect();
             let keeps = |s: &rinshan_review::Spot, a: u32| -> bool {
+                // The concealed tiles, the one just drawn among them.
                 let mut hand = kernel::hand_counts(&mut s.state.clone(), seat);
-                hand[kernel::value_type(s.state.drawn) as usize] += 1;
                 let t = match a {
                     _ if a == riichi => return true,
                     _ if a == tsumogiri => s.state.drawn,

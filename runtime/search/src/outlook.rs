@@ -7,10 +7,13 @@
 //! paired. A completed closed hand always has a yaku (menzen tsumo); an open hand's yaku is not
 //! checked here, nor are the other seats' wins that would end the round first.
 
+use rinshan_engine::generated::kernel::{self, GameState, S_TILES_LEFT};
 use rinshan_engine::hand::shanten;
 use rinshan_engine::notation::parse_tiles;
+use rinshan_engine::observe::{field_values, record, Form};
 use rinshan_engine::random::Rng;
 use rinshan_engine::tile::TileType;
+use rinshan_engine::Variant;
 use serde_json::{json, Value};
 
 /// One candidate discard's odds.
@@ -209,10 +212,47 @@ pub fn to_json(odds: &[Odds], draws: usize) -> Value {
     json!({ "draws": draws, "discards": discards })
 }
 
+/// The odds of `seat`'s hand at `s`, its own turn with a tile to discard, from what the seat
+/// sees there (the observation's `tiles_seen`; the types a three-player game does not play are
+/// never drawn). Its draws are the live tiles left shared among the seats, rounded up. Returns the
+/// odds and that number of draws.
+pub fn at_turn(
+    variant: Variant,
+    s: &GameState,
+    seat: u32,
+    trials: u32,
+    seed: u64,
+) -> Result<(Vec<Odds>, usize), String> {
+    if s.current != seat {
+        return Err(format!("seat {seat} is not the one to act"));
+    }
+    // The concealed tiles, the one just drawn among them.
+    let mut hand = [0u8; 34];
+    for (h, c) in hand.iter_mut().zip(kernel::hand_counts(&mut s.clone(), seat)) {
+        *h = c as u8;
+    }
+    let view = record(variant, Form::Tokens, s, seat);
+    let seen = field_values(Form::Tokens, &view, "tiles_seen");
+    let mut unseen = [0u8; 34];
+    for (t, u) in unseen.iter_mut().enumerate() {
+        let seen = seen.get(t).copied().unwrap_or(4).clamp(0, 4) as u8;
+        *u = if variant.tile_in_play(t as u32) { 4 - seen } else { 0 };
+    }
+    let left = field_values(Form::Tokens, &view, "scalars")
+        .get(S_TILES_LEFT as usize)
+        .copied()
+        .unwrap_or(0)
+        .max(0) as usize;
+    let draws = left.div_ceil(variant.seats() as usize);
+    if draws == 0 {
+        return Err("no draws are left".into());
+    }
+    solo(&hand, &unseen, draws, trials, seed).map(|odds| (odds, draws))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use rinshan_engine::notation::parse_tiles;
 
     fn counts(hand: &str) -> [u8; 34] {
         parse_tiles(hand).expect("a hand").counts()
@@ -275,5 +315,37 @@ mod tests {
         assert!(solo(&hand, &pool, 5, 10, 1).is_err_and(|e| e.contains("there are 4")));
         let hand = counts("123456789m1145p9s");
         assert!(solo(&hand, &unseen(&hand, &[0; 34]), 200, 10, 1).is_err_and(|e| e.contains("200 draws")));
+    }
+
+    #[test]
+    fn at_the_dealers_first_turn_every_discard_is_judged_from_its_view() {
+        for variant in [Variant::Red, Variant::Sanma] {
+            let s = variant.new_game(3, rinshan_engine::env::Mode::Half);
+            let (odds, draws) = at_turn(variant, &s, s.current, 500, 1).expect("odds");
+            // 69 live tiles for four players, 54 for three: each seat's share, rounded up.
+            assert_eq!(draws, 18, "{variant}");
+            let mut hand = [0u8; 34];
+            for (h, c) in hand.iter_mut().zip(kernel::hand_counts(&mut s.clone(), s.current)) {
+                *h = c as u8;
+            }
+            assert_eq!(
+                hand.iter().map(|&c| u32::from(c)).sum::<u32>(),
+                14,
+                "the drawn tile is held"
+            );
+            let kinds = hand.iter().filter(|&&c| c > 0).count();
+            assert_eq!(odds.len(), kinds, "{variant}: one line per tile type held");
+            let best = (0..34)
+                .filter(|&t| hand[t] > 0)
+                .map(|t| {
+                    let mut h = hand;
+                    h[t] -= 1;
+                    shanten(&h).shanten
+                })
+                .min();
+            assert_eq!(odds.iter().map(|o| o.shanten).min(), best, "{variant}");
+        }
+        let s = Variant::Red.new_game(3, rinshan_engine::env::Mode::Half);
+        assert!(at_turn(Variant::Red, &s, (s.current + 1) % 4, 10, 1).is_err());
     }
 }

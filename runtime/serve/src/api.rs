@@ -54,6 +54,7 @@ pub(super) fn app_with_store(limits: Limits) -> (Router, Store) {
         .route("/api/games/{id}/next", post(next))
         .route("/api/games/{id}/events", get(events))
         .route("/api/games/{id}/log", get(log))
+        .route("/api/games/{id}/outlook", get(outlook))
         .route("/api/sprite/{mode}", get(tiles_sprite))
         .route("/api/saved", get(saved_list))
         .route("/api/saved/{name}", get(saved_log))
@@ -486,6 +487,33 @@ async fn tiles_sprite(Path(mode): Path<String>) -> Result<Response, ApiError> {
         sprite(mode),
     )
         .into_response())
+}
+
+/// Play-outs per discard behind the page's odds: a 95% interval of at most ±2.2 points, worked
+/// out in well under a tenth of a second.
+pub const OUTLOOK_TRIALS: u32 = 2000;
+
+/// `GET /api/games/{id}/outlook`: at the person's own turn, each discard's chances of tenpai and
+/// of a win by each of their draws left, drawing alone from the tiles they cannot see
+/// ([`rinshan_search::outlook::at_turn`]); 409 at any other time.
+async fn outlook(State(store): State<Store>, Path(id): Path<String>) -> Result<axum::Json<Value>, ApiError> {
+    let held = store.get(game_id(&id)?).ok_or_else(|| not_found(&id))?;
+    let turn = held.lock().own_turn();
+    let Some((state, seat, variant)) = turn else {
+        return Err(ApiError(
+            StatusCode::CONFLICT,
+            "the odds are worked out at your own turn to discard".into(),
+        ));
+    };
+    // The same draws for every request at this decision: the odds do not flicker on a refresh.
+    let seed = u64::from(state.next_draw) << 8 | u64::from(seat);
+    let (odds, draws) = tokio::task::spawn_blocking(move || {
+        rinshan_search::outlook::at_turn(variant, &state, seat, OUTLOOK_TRIALS, seed)
+    })
+    .await
+    .map_err(|e| ApiError(StatusCode::INTERNAL_SERVER_ERROR, e.to_string()))?
+    .map_err(|e| ApiError(StatusCode::CONFLICT, e))?;
+    Ok(axum::Json(rinshan_search::outlook::to_json(&odds, draws)))
 }
 
 /// The most rounds an uploaded log may have (a long half game has about 20).

@@ -447,6 +447,15 @@ impl Session {
         self.env.last().legal_actions(0).any(|a| a == self.pass)
     }
 
+    /// The state and the person's seat at the person's own turn (a tile to discard, not a claim
+    /// prompt): what the page's odds are worked out from. `None` at any other time.
+    pub fn own_turn(&self) -> Option<(GameState, u32, Variant)> {
+        if self.ended.is_some() || self.phase() != Phase::Human || self.claim_prompt() {
+            return None;
+        }
+        Some((self.state().ok()?, self.human()?, self.setup.variant))
+    }
+
     /// An agent or bot decides whether to call: the page must not learn who may.
     pub fn claim_pending(&self) -> bool {
         self.ended.is_none() && self.phase() == Phase::Agent && self.claim_prompt()

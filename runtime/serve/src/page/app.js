@@ -148,6 +148,7 @@ function draw() {
     $("status").appendChild(seed);
   }
   if ($("actions")) drawActions(v);
+  if ($("odds")) drawOdds(v);
   drawResult(v);
   const ev = $("events");
   ev.innerHTML = "";
@@ -192,6 +193,39 @@ function drawActions(v) {
     b.addEventListener("click", () => act(c.id));
     box.appendChild(b);
   });
+}
+
+// The odds of each discard at the person's own turn, drawing alone from the tiles they cannot
+// see (the server plays the draws out); asked once per decision, only while the box is ticked.
+let oddsStep = null;
+async function drawOdds(v) {
+  const box = $("odds");
+  const own = v.phase === "human" && v.legal.some((c) => c.tile || c.name === "tsumogiri");
+  if (!$("odds-on").checked || !own) { box.replaceChildren(); oddsStep = null; return; }
+  if (oddsStep === v.step) return;
+  oddsStep = v.step;
+  box.textContent = "working out the odds…";
+  let o;
+  try { o = await api("GET", "/api/games/" + game + "/outlook"); } catch (e) { box.textContent = String(e.message || e); return; }
+  if (oddsStep !== v.step) return;
+  const t = document.createElement("table");
+  t.className = "odds-table";
+  const head = document.createElement("tr");
+  ["discard", "shanten", "tenpai", "win"].forEach((h) => { const th = document.createElement("th"); th.textContent = h; head.appendChild(th); });
+  t.appendChild(head);
+  const pct = (p) => (100 * p).toFixed(1) + "%";
+  for (const d of o.discards.slice(0, 8)) {
+    const tr = document.createElement("tr");
+    tr.dataset.tile = d.discard;
+    [d.discard, String(d.shanten), pct(d.tenpai[o.draws - 1]), pct(d.win[o.draws - 1])].forEach((x) => {
+      const td = document.createElement("td"); td.textContent = x; tr.appendChild(td);
+    });
+    t.appendChild(tr);
+  }
+  const note = document.createElement("p");
+  note.className = "note";
+  note.textContent = "By your last draw (" + o.draws + " left), drawing alone: others' wins and calls are not counted.";
+  box.replaceChildren(t, note);
 }
 
 function drawResult(v) {
@@ -316,6 +350,7 @@ async function listSaved() {
 }
 
 async function init() {
+  if ($("odds-on")) $("odds-on").addEventListener("change", () => { oddsStep = null; if (view) drawOdds(view); });
   document.querySelectorAll("[data-nav]").forEach((a) => a.classList.toggle("here", a.dataset.nav === PAGE));
   $("tiles").value = tiles;
   $("tiles").addEventListener("change", async (e) => {
