@@ -1,11 +1,15 @@
 //! `rinshan observe <log> --round R --step K`: what a seat's observation holds at a position of a
-//! real game (how a user checks what the network sees); `--fields` prints the field reference.
+//! real game (how a user checks what the network sees); `--fields` prints the field reference;
+//! `--outlook` adds the deciding seat's win odds per discard.
 
 use std::path::PathBuf;
 
-use rinshan_engine::observe::{describe, field_values, fields_markdown, Form};
+use rinshan_engine::agents::Agent;
+use rinshan_engine::observe::{describe, field_values, fields_markdown, Form, OwnDraws};
 use rinshan_logs::read_log;
-use rinshan_logs::tenhou::position::round_positions;
+use rinshan_logs::tenhou::log::Game;
+use rinshan_logs::tenhou::position::{round_positions, Position};
+use rinshan_search::outlook::{at_turn, in_play, to_json, InPlay, Odds};
 use serde_json::json;
 
 use crate::error::CliError;
@@ -33,6 +37,13 @@ pub struct Args {
     /// Print the reference of every observation field (markdown) and exit
     #[arg(long)]
     fields: bool,
+    /// Add the deciding seat's win odds per discard at its own turn: drawing alone, and with
+    /// every seat played by `defensive` in worlds dealt from its view
+    #[arg(long)]
+    outlook: bool,
+    /// Worlds per discard for the odds with the others playing
+    #[arg(long, default_value_t = 128, requires = "outlook")]
+    worlds: u32,
 }
 
 pub fn run(args: Args) -> Result<(), CliError> {
@@ -64,6 +75,10 @@ pub fn run(args: Args) -> Result<(), CliError> {
         Some(s) => s,
         None => pos.seat,
     };
+    let odds = match args.outlook {
+        true => Some(outlook(&game, &positions, args.step, seat, args.worlds)?),
+        false => None,
+    };
     let record = rinshan_engine::observe::record(game.variant, args.form, &pos.state, seat);
     let round = &game.rounds[args.round];
     if args.json {
@@ -73,10 +88,13 @@ pub fn run(args: Args) -> Result<(), CliError> {
             .iter()
             .map(|f| (f.name.to_string(), json!({"dtype": f.dtype.name(), "shape": f.shape, "values": field_values(args.form, &record, f.name)})))
             .collect();
-        let out = json!({
+        let mut out = json!({
             "log": path.display().to_string(), "line": round.line, "round": round.to_string(), "step": pos.step,
             "deciding_seat": pos.seat, "observer": seat, "log_plays": pos.what, "form": args.form.name(), "fields": fields,
         });
+        if let Some(o) = &odds {
+            out["outlook"] = o.json();
+        }
         println!("{out:#}");
         return Ok(());
     }
@@ -91,5 +109,92 @@ pub fn run(args: Args) -> Result<(), CliError> {
         args.form
     );
     print!("{}", describe(args.form, &record));
+    if let Some(o) = &odds {
+        o.print();
+    }
     Ok(())
+}
+
+/// The deciding seat's odds at position `step` of a round's `positions`.
+struct Outlook {
+    alone: Vec<Odds>,
+    draws: usize,
+    in_play: Vec<InPlay>,
+}
+
+fn outlook(game: &Game, positions: &[Position], step: usize, seat: u32, worlds: u32) -> Result<Outlook, CliError> {
+    let pos = &positions[step];
+    if seat != pos.seat {
+        return Err(CliError::input(format!(
+            "--outlook: the odds are the deciding seat's (seat {}), not seat {seat}'s",
+            pos.seat
+        )));
+    }
+    // The wall places the seat drew this round, followed from the round's first decision.
+    let mut own = OwnDraws::default();
+    for (i, p) in positions[..=step].iter().enumerate() {
+        let before = &positions[i.saturating_sub(1)].state;
+        own.update(game.variant, before, &mut p.state.clone(), seat);
+    }
+    let (alone, draws) = at_turn(game.variant, &pos.state, seat, 10_000, 1)
+        .map_err(|e| CliError::input(format!("--outlook at step {step}: {e}")))?;
+    let in_play = in_play(
+        game.variant,
+        &pos.state,
+        seat,
+        &own.positions,
+        worlds,
+        Agent::Defensive,
+        1,
+    );
+    Ok(Outlook { alone, draws, in_play })
+}
+
+impl Outlook {
+    fn json(&self) -> serde_json::Value {
+        let in_play: Vec<serde_json::Value> = self
+            .in_play
+            .iter()
+            .map(|o| {
+                json!({"action": o.name, "win": o.win, "deal_in": o.deal_in, "points": o.points,
+                       "win_points": o.win_points, "worlds": o.worlds})
+            })
+            .collect();
+        json!({"alone": to_json(&self.alone, self.draws), "in_play": in_play})
+    }
+
+    fn print(&self) {
+        let last = self.draws - 1;
+        println!("outlook, drawing alone ({} draws left, 95%):", self.draws);
+        println!("  discard  shanten  tenpai by the last draw  win by the last draw");
+        for o in &self.alone {
+            println!(
+                "  {:>7}  {:>7}  {:>22.1}%  {:>13.1}% +- {:.1}",
+                o.discard.name(),
+                o.shanten,
+                100.0 * o.tenpai[last],
+                100.0 * o.win[last],
+                100.0 * o.interval(o.win[last])
+            );
+        }
+        if let Some(first) = self.in_play.first() {
+            println!(
+                "outlook with every seat played by defensive ({} worlds, 95%):",
+                first.worlds
+            );
+            println!("  action          win           deal-in        points  points per win");
+            for o in &self.in_play {
+                println!(
+                    "  {:<12} {:>5.1}% +- {:<4.1} {:>5.1}% +- {:<4.1} {:>+8.0}  {}",
+                    o.name,
+                    100.0 * o.win,
+                    100.0 * o.interval(o.win),
+                    100.0 * o.deal_in,
+                    100.0 * o.interval(o.deal_in),
+                    o.points,
+                    o.win_points.map_or("-".into(), |p| format!("{p:+.0}"))
+                );
+            }
+        }
+    }
 }

@@ -160,3 +160,31 @@ fn review_judges_a_players_decisions_in_a_real_log() {
         assert!(err.contains(says), "{args:?}: {err}");
     }
 }
+
+#[test]
+fn observe_adds_the_deciding_seats_outlook() {
+    let log = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../tests/data/tenhou/2019060813gm-00a9-0000-08bb0ec3.json"
+    );
+    // Step 0 of East 1: the dealer's first discard.
+    let out = rinshan(&["observe", log, "--step", "0", "--outlook", "--worlds", "16", "--json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    let alone = &v["outlook"]["alone"];
+    assert_eq!(alone["draws"], 18, "{alone}");
+    let discards = alone["discards"].as_array().expect("discards");
+    let in_play = v["outlook"]["in_play"].as_array().expect("in play");
+    assert!(!discards.is_empty() && in_play.len() >= discards.len(), "{v}");
+    for o in in_play {
+        assert_eq!(o["worlds"], 16, "{o}");
+        let (win, deal_in) = (o["win"].as_f64().unwrap(), o["deal_in"].as_f64().unwrap());
+        assert!((0.0..=1.0).contains(&(win + deal_in)), "{o}");
+    }
+    let text = rinshan(&["observe", log, "--step", "0", "--outlook", "--worlds", "8"]);
+    assert!(String::from_utf8_lossy(&text.stdout).contains("outlook with every seat played by defensive"));
+    // Another seat's odds are not the deciding seat's to give.
+    let out = rinshan(&["observe", log, "--step", "0", "--seat", "2", "--outlook"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("deciding seat"));
+}

@@ -12,7 +12,8 @@
 //! * [`positions`] — the decisions of `defensive` self-play, for the tests and measurements.
 //! * [`options`] — `search:rollouts=256:base=defensive` as users write it.
 //! * [`seat`]    — the agent as an arena [`Entrant`](rinshan_engine::arena::Entrant).
-//! * [`outlook`] — win odds per discard, drawing alone from the unseen tiles.
+//! * [`outlook`] — win odds per discard: drawing alone from the unseen tiles, and with the other
+//!   seats playing.
 //!
 //! It sees only what its seat sees: every world is dealt by the observation leak tests'
 //! resampler ([`rinshan_engine::observe::resample_hidden`]), which reads the hidden tiles only as a

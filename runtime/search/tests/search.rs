@@ -168,3 +168,59 @@ fn by_default_only_decisions_with_much_at_stake_are_played_out() {
     }
     assert!(searched >= 1 && searched < total, "{searched} of {total}");
 }
+
+#[test]
+fn the_outlook_in_play_keeps_to_the_seats_view_and_counts_real_outcomes() {
+    use rinshan_search::outlook::in_play;
+    let riichi = rinshan_engine::generated::red::ACTION_RIICHI;
+    let (mut cases, mut margin) = (0, 0.0);
+    let mut rng = Rng::new(9);
+    for seed in 200..230 {
+        // Closed tenpai hands (riichi legal).
+        for p in positions(Variant::Red, seed, 1) {
+            if p.state.mask[riichi as usize / 32] >> (riichi % 32) & 1 == 0 || cases >= 12 {
+                continue;
+            }
+            let odds = in_play(Variant::Red, &p.state, p.seat, &p.own_draws, 48, Agent::Defensive, seed);
+            assert!(!odds.is_empty());
+            for o in &odds {
+                assert!(o.win + o.deal_in <= 1.0 && o.worlds == 48, "{o:?}");
+                // A win always gains points; one that was not counted would show here.
+                assert!(o.win_points.is_none_or(|w| w > 0.0), "{o:?}");
+                assert_eq!(o.win_points.is_some(), o.win > 0.0, "{o:?}");
+            }
+            // The same outlook whatever the hidden tiles are.
+            let other = resample_hidden(Variant::Red, &p.state, p.seat, &p.own_draws, &mut rng);
+            assert_eq!(
+                in_play(Variant::Red, &other, p.seat, &p.own_draws, 48, Agent::Defensive, seed),
+                odds
+            );
+            // The tenpai-keeping discards against the rest: the best of each by its chance to win.
+            // The concealed tiles, the one just drawn among them.
+            let hand = rinshan_engine::generated::kernel::hand_counts(&mut p.state.clone(), p.seat);
+            let names = rinshan_engine::env::action_names(Variant::Red);
+            let first = names.iter().position(|n| n == "discard_1m").expect("discards") as u32;
+            let keeps = |o: &rinshan_search::outlook::InPlay| {
+                let v = match o.name.as_str() {
+                    "tsumogiri" => p.state.drawn,
+                    _ => o.action - first,
+                };
+                let mut after = hand.map(|c| c as u8);
+                after[rinshan_engine::generated::kernel::value_type(v) as usize] -= 1;
+                rinshan_engine::hand::shanten(&after).shanten == 0
+            };
+            let best_keeping = odds.iter().filter(|o| keeps(o)).map(|o| o.win).fold(0.0, f64::max);
+            let best_breaking = odds.iter().filter(|o| !keeps(o)).map(|o| o.win).fold(0.0, f64::max);
+            cases += 1;
+            margin += best_keeping - best_breaking;
+        }
+    }
+    // Not at every position (a one-tile wait may be worth breaking for a better shape), but on
+    // average keeping tenpai wins clearly more often.
+    assert!(cases >= 8, "{cases} closed tenpai positions");
+    assert!(
+        margin / f64::from(cases) > 0.05,
+        "tenpai kept wins more by {:.3} on average",
+        margin / f64::from(cases)
+    );
+}

@@ -1,4 +1,4 @@
-//! Win odds drawing alone (the first part of the outlook): for a hand of 14 concealed tiles, per
+//! Win odds drawing alone: for a hand of 14 concealed tiles, per
 //! candidate discard, the chance of being tenpai and of completing the hand by each number of own
 //! draws left, when the seat draws from the tiles it cannot see and nobody else plays. Each play-out
 //! deals the draws afresh from the unseen pool (all four copies of each tile but those the seat
