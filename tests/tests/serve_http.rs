@@ -346,6 +346,46 @@ pub(crate) async fn play_to_the_end(app: &Router, id: &str) -> Value {
     }
 }
 
+/// The look-ahead as an opponent: it thinks its own turns out on a blocking thread and plays a
+/// whole game that replays from its log; its budget is bounded.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn the_look_ahead_plays_as_an_opponent() {
+    let app = app(Limits {
+        fixed_seed: Some(8),
+        ..Limits::default()
+    });
+    let (_, agents) = get(&app, "/api/agents").await;
+    assert!(
+        parsed(&agents)["agents"]
+            .as_array()
+            .is_some_and(|a| a.contains(&json!("search"))),
+        "{agents}"
+    );
+    let body = json!({"variant": "red", "mode": "east", "wind": 0, "agents": ["search:rollouts=16:focus=all", "defensive", "search"], "delay_ms": 0});
+    let v = new_game(&app, body).await;
+    let seat = v["seat"].as_u64().expect("a seat") as usize;
+    assert_eq!(
+        v["names"][(seat + 1) % 4],
+        "search:rollouts=16:focus=all 1".replace(" 1", &format!(" {}", (seat + 1) % 4))
+    );
+    let id = v["id"].as_str().expect("an id").to_string();
+    let last = play_to_the_end(&app, &id).await;
+    assert_eq!(last["phase"], "over", "{last}");
+    replayed_log(&app, &id).await;
+    for (agent, says) in [
+        ("search:rollouts=100000", "at most 2048"),
+        ("search:depth=3", "unknown search option"),
+    ] {
+        let body = json!({"wind": 0, "agents": [agent, "rule", "rule"]});
+        let (status, text) = post(&app, "/api/games", &body).await;
+        assert_eq!(status, StatusCode::UNPROCESSABLE_ENTITY, "{agent}: {text}");
+        assert!(
+            parsed(&text)["error"].as_str().is_some_and(|e| e.contains(says)),
+            "{agent}: {text}"
+        );
+    }
+}
+
 /// A game of another rule set is logged too: the log names it and replays under it.
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn a_wrc_game_is_logged_under_its_rules() {

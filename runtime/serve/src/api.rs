@@ -100,7 +100,7 @@ pub(super) fn app_with_store(limits: Limits) -> (Router, Store) {
 async fn agents(State(store): State<Store>) -> axum::Json<Value> {
     let bots = store.limits().bots.iter().map(|b| format!("{MJAI}{}", b.name));
     axum::Json(json!({
-        "agents": Agent::ALL.iter().map(|a| a.name().to_string()).chain(bots).collect::<Vec<_>>(),
+        "agents": Agent::ALL.iter().map(|a| a.name().to_string()).chain(["search".to_string()]).chain(bots).collect::<Vec<_>>(),
         "variants": Variant::ALL.iter().map(|v| v.to_string()).collect::<Vec<_>>(),
         "variant_descriptions": Variant::ALL.iter().map(|v| (v.to_string(), Value::from(v.description()))).collect::<serde_json::Map<_, _>>(),
         // The page offers as many opponents and seats as the rule set has seats.
@@ -178,8 +178,22 @@ const WINDS: [&str; 4] = ["East", "South", "West", "North"];
 /// How a new game names one of the server's MJAI bots among its agents.
 const MJAI: &str = "mjai:";
 
-/// A new game's agent: a built-in one by name, or a bot the server offers as `mjai:NAME`.
+/// The most play-outs a look-ahead opponent may spend per decision (about 60 ms on one core at
+/// 2,048, its budget in docs/strength.md's strongest runs).
+pub const MAX_SEARCH_ROLLOUTS: u32 = 2048;
+
+/// A new game's agent: a built-in one by name, the look-ahead (`search` or `search:rollouts=N`),
+/// or a bot the server offers as `mjai:NAME`.
 fn opponent(name: &str, limits: &Limits) -> Result<Opponent, ApiError> {
+    if name.starts_with("search") {
+        let o: rinshan_search::Options = name.parse().map_err(unprocessable)?;
+        if o.rollouts > MAX_SEARCH_ROLLOUTS || o.ms > 1000 {
+            return Err(unprocessable(format!(
+                "{name}: this server's look-ahead spends at most {MAX_SEARCH_ROLLOUTS} play-outs and 1000 ms a decision"
+            )));
+        }
+        return Ok(Opponent::Search(o));
+    }
     let Some(bot) = name.strip_prefix(MJAI) else {
         return parse("agent", name).map(Opponent::Agent);
     };

@@ -13,6 +13,7 @@ use rinshan_engine::agents::Agent;
 use rinshan_engine::arena::refused_action;
 use rinshan_engine::env::{events as ev, Backend, Config, Env, Mode};
 use rinshan_engine::generated::kernel::{self, GameState};
+use rinshan_engine::observe::OwnDraws;
 use rinshan_engine::{with_variant, Tile, Variant};
 use rinshan_logs::mjai::bot::check_games;
 use rinshan_logs::tenhou::write::Recorder;
@@ -27,6 +28,9 @@ pub enum Opponent {
     Agent(Agent),
     /// One of the server's MJAI bots.
     Bot(NamedBot),
+    /// The look-ahead: its own turns thought out on a blocking thread (see
+    /// [`Session::search_work`]), its claims its base agent's.
+    Search(rinshan_search::Options),
 }
 
 impl std::fmt::Display for Opponent {
@@ -34,6 +38,7 @@ impl std::fmt::Display for Opponent {
         match self {
             Opponent::Agent(a) => write!(f, "{a}"),
             Opponent::Bot(b) => f.write_str(&b.name),
+            Opponent::Search(o) => f.write_str(&o.name()),
         }
     }
 }
@@ -125,6 +130,28 @@ pub struct Session {
     bots: Option<Bots>,
     /// Steps the bots have not heard yet.
     untold: Vec<Stepped>,
+    /// The wall places each seat drew this round: what a look-ahead seat knows beyond the table.
+    own_draws: [OwnDraws; 4],
+}
+
+/// A look-ahead seat's decision, taken out of the session to be thought out on a blocking thread
+/// ([`Session::search_work`]), its answer handed back with [`Session::search_done`].
+pub struct Thinking {
+    search: rinshan_search::Search,
+    state: GameState,
+    seat: u32,
+    own_draws: Vec<u32>,
+    /// The decision it answers (the session's step count then).
+    step: u64,
+}
+
+impl Thinking {
+    /// The action, and the decision it is for.
+    pub fn run(self) -> (u64, u32) {
+        // Each decision's worlds seeded apart by the step (the game's seed is hidden from it).
+        let d = self.search.decide(&self.state, self.seat, &self.own_draws, self.step);
+        (self.step, d.action)
+    }
 }
 
 fn err(e: impl std::fmt::Display) -> String {
@@ -206,7 +233,12 @@ impl Session {
             touched: Instant::now(),
             bots,
             untold: Vec::new(),
+            own_draws: Default::default(),
         };
+        let state = s.state()?;
+        for q in 0..s.setup.variant.seats() {
+            s.own_draws[q as usize].update(s.setup.variant, &state, &mut state.clone(), q);
+        }
         // The log numbers seats from East 1's dealer, the page by the engine's seats.
         let first = s.state()?.dealer;
         if let Some(r) = &mut s.recorder {
@@ -424,7 +456,7 @@ impl Session {
     /// The built-in agent to move plays, if one is to move; `true` if it did (a bot's move is
     /// the driver's: see [`Session::bot_work`]).
     pub fn agent_move(&mut self) -> Result<bool, String> {
-        if self.phase() != Phase::Agent || self.bot_to_move() {
+        if self.phase() != Phase::Agent || self.bot_to_move() || self.search_to_move() {
             return Ok(false);
         }
         let action = self.agent_action()?;
@@ -434,8 +466,11 @@ impl Session {
 
     fn agent_action(&mut self) -> Result<u32, String> {
         let current = self.current() as usize;
-        let Some(Opponent::Agent(agent)) = self.setup.seats[current] else {
-            return Err("no built-in agent sits there".into());
+        let agent = match &self.setup.seats[current] {
+            Some(Opponent::Agent(a)) => *a,
+            // The look-ahead leaves claims to its base agent.
+            Some(Opponent::Search(o)) => o.base,
+            _ => return Err("no built-in agent sits there".into()),
         };
         // Every seat gets the deciding seat's agent; only the current player's entry is read.
         let action = self.env.agent_actions(&[[agent; 4]]).map_err(err)?;
@@ -459,6 +494,40 @@ impl Session {
     /// An agent or bot decides whether to call: the page must not learn who may.
     pub fn claim_pending(&self) -> bool {
         self.ended.is_none() && self.phase() == Phase::Agent && self.claim_prompt()
+    }
+
+    /// A look-ahead seat is to move on its own turn (its claims are answered at once).
+    fn search_to_move(&self) -> bool {
+        self.phase() == Phase::Agent
+            && !self.claim_prompt()
+            && matches!(self.setup.seats[self.current() as usize], Some(Opponent::Search(_)))
+    }
+
+    /// The look-ahead's decision to think out, when a look-ahead seat is to move.
+    pub fn search_work(&self) -> Option<Thinking> {
+        if !self.search_to_move() {
+            return None;
+        }
+        let seat = self.current();
+        let Some(Opponent::Search(options)) = &self.setup.seats[seat as usize] else {
+            return None;
+        };
+        Some(Thinking {
+            search: rinshan_search::Search::new(self.setup.variant, *options),
+            state: self.state().ok()?,
+            seat,
+            own_draws: self.own_draws[seat as usize].positions.clone(),
+            step: self.step,
+        })
+    }
+
+    /// Plays the look-ahead's answer to decision `step`; `false` if the game has moved on since.
+    pub fn search_done(&mut self, (step, action): (u64, u32)) -> Result<bool, String> {
+        if step != self.step || !self.search_to_move() {
+            return Ok(false);
+        }
+        self.apply(action)?;
+        Ok(true)
     }
 
     /// A bot is to move.
@@ -591,6 +660,12 @@ impl Session {
                 action,
                 after: self.state()?,
             });
+        }
+        if self.setup.seats.iter().any(|s| matches!(s, Some(Opponent::Search(_)))) {
+            let after = self.state()?;
+            for q in 0..self.setup.variant.seats() {
+                self.own_draws[q as usize].update(self.setup.variant, &before, &mut after.clone(), q);
+            }
         }
         if let Some(r) = &mut self.recorder {
             r.observe(&self.env, &[action]).map_err(err)?;

@@ -450,6 +450,29 @@ async fn drive(held: Arc<Held>, archive: Option<Archive>) {
             }
             continue;
         }
+        // The look-ahead thinks on a blocking thread, the session unlocked: other games and the
+        // page's requests go on meanwhile.
+        let thinking = held.lock().search_work();
+        if let Some(thinking) = thinking {
+            let answer = tokio::task::spawn_blocking(move || thinking.run()).await;
+            let moved = {
+                let mut s = held.lock();
+                match answer {
+                    Ok(answer) => s.search_done(answer).unwrap_or_else(|e| {
+                        s.stop(&e);
+                        true
+                    }),
+                    Err(e) => {
+                        s.stop(&format!("the look-ahead failed: {e}"));
+                        true
+                    }
+                }
+            };
+            if moved {
+                held.changed();
+            }
+            continue;
+        }
         let moved = {
             let mut s = held.lock();
             match s.phase() {

@@ -164,6 +164,8 @@ function drawActions(v) {
   box.hidden = v.phase !== "human" && v.phase !== "agent";
   if (v.phase !== "human") {
     box.textContent = v.phase === "agent" ? "Waiting for " + v.names[v.current] + "…" : "";
+    // The look-ahead may think a while: a spinner says it is at work.
+    if (v.phase === "agent") { const sp = document.createElement("span"); sp.className = "spinner"; box.appendChild(sp); }
     return;
   }
   const discards = v.legal.filter((c) => c.tile);
