@@ -179,7 +179,8 @@ pub struct PyEnv {
     actions: Vec<u32>,
     /// Per env: which seats the caller plays (hero mode), a bit per seat.
     caller_seats: Vec<u8>,
-    /// MJAI bots playing the other seats (`opponents="mjai:COMMAND"`).
+    /// MJAI bots or the look-ahead playing the other seats (`opponents="mjai:COMMAND"`,
+    /// `"search"`).
     bots: Option<Opponents>,
     num_actions: usize,
     num_yaku: usize,
@@ -473,7 +474,7 @@ impl PyEnv {
             (None, None) => Vec::new(),
             (None, Some(_)) => {
                 return Err(PyValueError::new_err(
-                    "hero_seats needs opponents (random, rule, greedy, defensive or mjai:COMMAND)",
+                    "hero_seats needs opponents (random, rule, greedy, defensive, search or mjai:COMMAND)",
                 ))
             }
             (Some(name), seats) => {
@@ -491,7 +492,14 @@ impl PyEnv {
                         table - 1
                     )));
                 }
-                if let Some(command) = name.strip_prefix("mjai:") {
+                if name.starts_with("search") {
+                    bots = Some(Opponents::search(name, &seats, num_envs, (variant, backend))?);
+                    // The kernel plays no seat: the caller's and the look-ahead's actions go in by step.
+                    hero_bits = (0..num_envs)
+                        .map(|i| 1u8 << seats[if seats.len() == 1 { 0 } else { i }])
+                        .collect();
+                    Vec::new()
+                } else if let Some(command) = name.strip_prefix("mjai:") {
                     let options = BotOptions {
                         dialect: mjai_dialect,
                         timeout: mjai_timeout,
@@ -741,7 +749,7 @@ impl PyEnv {
         if self.bots.is_some() {
             // A bot has followed its game from the start; it cannot be put in the middle of another.
             return Err(PyValueError::new_err(
-                "an env with MJAI opponents cannot restore states (its bots cannot follow a restored game)",
+                "an env with MJAI or look-ahead opponents cannot restore states (they follow their games from the start)",
             ));
         }
         let env = self.env()?;

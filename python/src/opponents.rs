@@ -1,6 +1,8 @@
-//! MJAI bots as the Python env's opponents (`opponents="mjai:COMMAND"`): each game's other seats
-//! are played by the bot, one process per seat and game, asked in `step` where they act. The
-//! caller's action for an env where a bot acts is ignored (`info["hero"]` is False there).
+//! Opponents the Python env asks in `step`, outside the kernel: MJAI bots
+//! (`opponents="mjai:COMMAND"`: each game's other seats played by the bot, one process per seat
+//! and game) and the look-ahead (`opponents="search"` or `"search:rollouts=N:..."`: it follows
+//! every game and decides, in parallel, where its seats act). The caller's action for an env
+//! where an opponent acts is ignored (`info["hero"]` is False there).
 
 use std::sync::Mutex;
 use std::time::Duration;
@@ -25,13 +27,38 @@ pub(crate) struct BotOptions<'a> {
     pub startup: f64,
 }
 
-/// The bots of every env, or an error saying why these games cannot have them.
+/// The opponents of every env.
 pub(crate) struct Opponents {
-    /// A pyclass is shared between threads: the bots' pipe receivers are not `Sync`, so they sit
-    /// behind a lock (taken only by the env's `&mut` methods: never contended).
-    bots: Option<Mutex<BatchBots>>,
-    seating: Vec<[Option<MjaiEntrant>; 4]>,
+    players: Players,
     variant: Variant,
+}
+
+enum Players {
+    Mjai {
+        /// A pyclass is shared between threads: the bots' pipe receivers are not `Sync`, so they
+        /// sit behind a lock (taken only by the env's `&mut` methods: never contended).
+        bots: Option<Mutex<BatchBots>>,
+        seating: Vec<[Option<MjaiEntrant>; 4]>,
+    },
+    Search {
+        options: rinshan_search::Options,
+        /// Per env, the seats it plays.
+        seats: Vec<[bool; 4]>,
+        /// Made at the first reset.
+        batch: Option<rinshan_search::BatchSearch>,
+    },
+}
+
+/// Per env, the seats other than its hero seat (`seats`: one for all, or one per env) at a table
+/// of `variant`.
+fn others(seats: &[u32], num_envs: usize, variant: Variant) -> Vec<[bool; 4]> {
+    (0..num_envs)
+        .map(|i| {
+            let hero = seats[if seats.len() == 1 { 0 } else { i }];
+            // A three-player game's fourth place is never played.
+            std::array::from_fn(|p| p as u32 != hero && p < variant.seats() as usize)
+        })
+        .collect()
 }
 
 fn seconds(what: &str, s: f64) -> PyResult<Duration> {
@@ -78,16 +105,36 @@ impl Opponents {
                 startup: seconds("mjai_startup", options.startup)?,
             },
         };
-        let seating = (0..num_envs)
-            .map(|i| {
-                let hero = seats[if seats.len() == 1 { 0 } else { i }];
-                // A three-player game's fourth place is never played.
-                std::array::from_fn(|p| (p as u32 != hero && p < variant.seats() as usize).then(|| entrant.clone()))
-            })
+        let seating = others(seats, num_envs, variant)
+            .into_iter()
+            .map(|o| o.map(|plays| plays.then(|| entrant.clone())))
             .collect();
         Ok(Opponents {
-            bots: None,
-            seating,
+            players: Players::Mjai { bots: None, seating },
+            variant,
+        })
+    }
+
+    /// The look-ahead `spec` (`search` or `search:rollouts=N:...`) at every seat but each env's
+    /// hero seat.
+    pub(crate) fn search(
+        spec: &str,
+        seats: &[u32],
+        num_envs: usize,
+        (variant, backend): (Variant, Backend),
+    ) -> PyResult<Opponents> {
+        let options: rinshan_search::Options = spec.parse().map_err(PyValueError::new_err)?;
+        if backend != Backend::Cpu {
+            return Err(PyValueError::new_err(
+                "look-ahead opponents need backend=\"cpu\": they follow every game's state after every step",
+            ));
+        }
+        Ok(Opponents {
+            players: Players::Search {
+                options,
+                seats: others(seats, num_envs, variant),
+                batch: None,
+            },
             variant,
         })
     }
@@ -95,33 +142,56 @@ impl Opponents {
     /// New games in every env (after a reset): the bots of the old ones are stopped.
     pub(crate) fn restart(&mut self, py: Python<'_>, env: &Env) -> PyResult<()> {
         let states = env.game_states().map_err(env_error)?;
-        let (bots, seating, variant) = (&mut self.bots, &self.seating, self.variant);
-        py.detach(|| match bots {
-            Some(b) => b.get_mut().unwrap_or_else(|p| p.into_inner()).restart(states),
-            None => *bots = Some(Mutex::new(BatchBots::new(seating.clone(), states, variant))),
+        let variant = self.variant;
+        py.detach(|| match &mut self.players {
+            Players::Mjai { bots: Some(b), .. } => b.get_mut().unwrap_or_else(|p| p.into_inner()).restart(states),
+            Players::Mjai { bots, seating } => {
+                *bots = Some(Mutex::new(BatchBots::new(seating.clone(), states, variant)))
+            }
+            Players::Search { batch: Some(b), .. } => b.restart(states),
+            Players::Search { options, seats, batch } => {
+                *batch = Some(rinshan_search::BatchSearch::new(
+                    variant,
+                    *options,
+                    seats.clone(),
+                    states,
+                ))
+            }
         });
         Ok(())
     }
 
-    /// Puts the bots' actions where they act; a failing bot's is illegal (its game ends with
+    /// Puts the opponents' actions where they act; a failing bot's is illegal (its game ends with
     /// the penalty). Returns the failures, for [`warn`] once the step is taken.
     pub(crate) fn act(&mut self, py: Python<'_>, actions: &mut [u32]) -> PyResult<Vec<String>> {
-        let Some(bots) = self.bots.as_mut() else {
-            return Err(PyValueError::new_err("reset the env before the first step"));
-        };
-        let bots = bots.get_mut().unwrap_or_else(|p| p.into_inner());
-        Ok(py.detach(|| bots.act(actions)))
+        match &mut self.players {
+            Players::Mjai { bots: Some(bots), .. } => {
+                let bots = bots.get_mut().unwrap_or_else(|p| p.into_inner());
+                Ok(py.detach(|| bots.act(actions)))
+            }
+            Players::Search { batch: Some(batch), .. } => {
+                py.detach(|| batch.act(actions));
+                Ok(Vec::new())
+            }
+            _ => Err(PyValueError::new_err("reset the env before the first step")),
+        }
     }
 
-    /// Tells the bots the step just taken; returns the failures, as `act` does.
+    /// Tells the opponents the step just taken; returns the failures, as `act` does.
     pub(crate) fn stepped(&mut self, py: Python<'_>, env: &Env, actions: &[u32]) -> PyResult<Vec<String>> {
-        let Some(bots) = self.bots.as_mut() else {
-            return Ok(Vec::new());
-        };
-        let bots = bots.get_mut().unwrap_or_else(|p| p.into_inner());
         py.detach(|| -> Result<Vec<String>, EnvError> {
-            let after = env.game_states()?;
-            Ok(bots.stepped(actions, after, &env.last().terminated))
+            match &mut self.players {
+                Players::Mjai { bots: Some(bots), .. } => {
+                    let bots = bots.get_mut().unwrap_or_else(|p| p.into_inner());
+                    let after = env.game_states()?;
+                    Ok(bots.stepped(actions, after, &env.last().terminated))
+                }
+                Players::Search { batch: Some(batch), .. } => {
+                    batch.stepped(env.game_states()?, &env.last().terminated);
+                    Ok(Vec::new())
+                }
+                _ => Ok(Vec::new()),
+            }
         })
         .map_err(env_error)
     }

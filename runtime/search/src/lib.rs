@@ -12,6 +12,7 @@
 //! * [`positions`] — the decisions of `defensive` self-play, for the tests and measurements.
 //! * [`options`] — `search:rollouts=256:base=defensive` as users write it.
 //! * [`seat`]    — the agent as an arena [`Entrant`](rinshan_engine::arena::Entrant).
+//! * [`batch`]   — the look-ahead at seats of a batch of games stepped by someone else (Python).
 //! * [`outlook`] — win odds per discard: drawing alone from the unseen tiles, and with the other
 //!   seats playing.
 //!
@@ -43,6 +44,7 @@
 
 #![warn(missing_docs)]
 
+pub mod batch;
 pub mod decide;
 pub mod options;
 pub mod outlook;
@@ -52,6 +54,7 @@ pub mod seat;
 pub mod value;
 pub mod world;
 
+pub use batch::BatchSearch;
 pub use decide::{Appraisal, Candidate, Decision, Search};
 pub use options::{Focus, Options};
 pub use seat::SearchEntrant;
