@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import dataclasses
 import functools
+import json
 from collections.abc import Sequence
 from typing import Any, Optional, Union
 
@@ -442,6 +443,24 @@ class Env:
         return self._core.render(
             int(i), str(tiles), None if pov is None else int(pov), bool(reveal), bool(png)
         )
+
+    def outlook(self, i: int = 0, trials: int = 2000, seed: int = 0) -> Optional[dict]:
+        """Env `i`'s win odds per discard for the seat to act at its own turn, from what that seat
+        sees (its share of the live wall left as its draws), drawing alone: the fields of
+        `rinshan.outlook` (`{"draws", "discards": [...]}`, best first). None at a decision
+        without a discard (a claim prompt, a finished game).
+
+        >>> import rinshan
+        >>> env = rinshan.make("red", num_envs=1, seed=3)
+        >>> _ = env.reset()
+        >>> odds = env.outlook(0, trials=500)
+        >>> odds["draws"], len(odds["discards"]) > 0
+        (18, True)
+        """
+        if not isinstance(i, (int, np.integer)) or isinstance(i, bool) or i < 0:
+            raise TypeError(f"i must be an env index (an int >= 0), not {i!r}")
+        text = self._core.outlook(int(i), int(trials), int(seed))
+        return None if text is None else json.loads(text)
 
     def get_state(self) -> np.ndarray:
         """Every game as (num_envs, W) uint32 words (pickle-able), for `set_state`."""

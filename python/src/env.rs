@@ -696,6 +696,33 @@ impl PyEnv {
         Ok(PyArray1::from_vec(py, actions.into_iter().map(i64::from).collect()))
     }
 
+    /// Env `i`'s win odds per discard for the seat to act, at its own turn, drawing alone from
+    /// the tiles it cannot see: JSON text (`rinshan outlook --json`'s fields); `None` at any
+    /// other decision.
+    #[pyo3(signature = (i, trials, seed))]
+    fn outlook(&mut self, py: Python<'_>, i: usize, trials: u32, seed: u64) -> PyResult<Option<String>> {
+        let env = self.env()?;
+        let b = env.batch();
+        if i >= b {
+            return Err(PyValueError::new_err(format!("env {i} does not exist: there are {b}")));
+        }
+        if trials == 0 {
+            return Err(PyValueError::new_err("trials must be at least 1"));
+        }
+        let variant = env.variant();
+        let state = env.game_states().map_err(env_error)?.swap_remove(i);
+        let names = rinshan_engine::env::action_names(variant);
+        let discards = (0..names.len())
+            .any(|a| state.mask[a / 32] >> (a % 32) & 1 == 1 && (names[a].starts_with("discard_") || names[a] == "tsumogiri"));
+        if !discards {
+            return Ok(None);
+        }
+        let (odds, draws) = py
+            .detach(|| rinshan_search::outlook::at_turn(variant, &state, state.current, trials, seed))
+            .map_err(PyValueError::new_err)?;
+        Ok(Some(rinshan_search::outlook::to_json(&odds, draws).to_string()))
+    }
+
     /// Env `i`'s table as SVG text (`png`: PNG bytes), `pov` at the bottom (default: the seat to act).
     #[pyo3(signature = (i, tiles, pov, reveal, png))]
     fn render<'py>(

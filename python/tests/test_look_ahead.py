@@ -107,3 +107,28 @@ def test_search_opponent_settings_are_checked():
         rinshan.make("red", opponents="search:depth=3", hero_seats=0)
     with pytest.raises(ValueError, match="needs a budget"):
         rinshan.make("red", opponents="search:rollouts=0", hero_seats=0)
+
+
+def test_env_outlook_is_the_seat_to_acts_at_its_own_turn():
+    env = rinshan.make("red", num_envs=2, seed=5)
+    ts = env.reset()
+    odds = env.outlook(1, trials=800, seed=2)
+    # The dealer's first turn: 69 live tiles left, a quarter of them (rounded up) its draws.
+    assert odds["draws"] == 18
+    hand = [n for n in env.spec.action_names if n.startswith("discard_")]
+    legal = {
+        hand[a][len("discard_") :] for a in np.flatnonzero(ts.legal_action_mask[1][: len(hand)])
+    }
+    offered = {d["discard"] for d in odds["discards"]}
+    assert {t.replace("0", "5") for t in legal} <= offered
+    assert odds == env.outlook(1, trials=800, seed=2)
+    with pytest.raises(ValueError, match="does not exist"):
+        env.outlook(2)
+    # At a claim prompt there is no discard to weigh.
+    pass_id = env.spec.action_names.index("pass")
+    for _ in range(2000):
+        if ts.legal_action_mask[0][pass_id]:
+            break
+        ts = env.step(env.agent_actions("rule"))
+    assert ts.legal_action_mask[0][pass_id], "no claim prompt in 2000 steps"
+    assert env.outlook(0) is None
