@@ -13,6 +13,7 @@ use rinshan_engine::generated::kernel::GameState;
 use rinshan_engine::random::Rng;
 use rinshan_engine::Variant;
 
+use crate::positions::defensive_game;
 use crate::rollout::play_round;
 use crate::world::deal;
 
@@ -103,4 +104,47 @@ pub fn in_play(
         .collect();
     out.sort_by(|a, b| b.win.total_cmp(&a.win).then(b.points.total_cmp(&a.points)));
     out
+}
+
+/// How well [`in_play`] predicts what happens: at every `every`-th decision of the seat to act in
+/// `defensive` self-play half games from `seeds` (own turns with a discard), the outlook of the
+/// action `defensive` took (`worlds` worlds) against the game itself played on from there with
+/// the real hidden tiles. Returns the predicted wins and deal-ins (sums of the chances), the
+/// counted ones, and the positions.
+pub fn calibration(
+    variant: Variant,
+    seeds: std::ops::Range<u64>,
+    every: usize,
+    worlds: u32,
+) -> ((f64, f64), (u32, u32), usize) {
+    let (mut predicted, mut counted, mut n) = ((0.0, 0.0), (0u32, 0u32), 0);
+    for seed in seeds {
+        let mut k = 0;
+        defensive_game(variant, seed, &mut |p| {
+            k += 1;
+            if k % every != 0 {
+                return true;
+            }
+            let played = Agent::Defensive.act(variant, &p.state);
+            let odds = in_play(
+                variant,
+                &p.state,
+                p.seat,
+                &p.own_draws,
+                worlds,
+                Agent::Defensive,
+                seed << 20 | k as u64,
+            );
+            if let Some(o) = odds.iter().find(|o| o.action == played) {
+                let (end, _) = play_round(variant, p.state, played, Agent::Defensive);
+                predicted.0 += o.win;
+                predicted.1 += o.deal_in;
+                counted.0 += end.winners >> p.seat & 1;
+                counted.1 += u32::from(end.deal_in == p.seat + 1);
+                n += 1;
+            }
+            true
+        });
+    }
+    (predicted, counted, n)
 }
