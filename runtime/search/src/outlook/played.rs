@@ -1,4 +1,4 @@
-//! Win odds with the other seats playing. Drawing alone ([`super::solo`]) ignores that the round
+//! Win odds with the other seats playing. Drawing alone ([`super::solo()`]) ignores that the round
 //! ends when someone else wins, that a discard may deal in, and what a win is worth. Here each
 //! discard is played, then the round to its end, in worlds dealt from what the seat can see
 //! ([`crate::world::deal`]: the others' hands built as their discards suggest, riichi seats
