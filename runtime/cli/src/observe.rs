@@ -164,19 +164,8 @@ impl Outlook {
     }
 
     fn print(&self) {
-        let last = self.draws - 1;
-        println!("outlook, drawing alone ({} draws left, 95%):", self.draws);
-        println!("  discard  shanten  tenpai by the last draw  win by the last draw");
-        for o in &self.alone {
-            println!(
-                "  {:>7}  {:>7}  {:>22.1}%  {:>13.1}% +- {:.1}",
-                o.discard.name(),
-                o.shanten,
-                100.0 * o.tenpai[last],
-                100.0 * o.win[last],
-                100.0 * o.interval(o.win[last])
-            );
-        }
+        println!("outlook, drawing alone ({} draws left):", self.draws);
+        crate::outlook::print_table(&self.alone, self.draws, "  ");
         if let Some(first) = self.in_play.first() {
             println!(
                 "outlook with every seat played by defensive ({} worlds, 95%):",

@@ -1,6 +1,6 @@
 //! `rinshan outlook`: a hand's odds per discard, drawing alone from the tiles the seat cannot see.
 
-use rinshan_search::outlook::{of_notation, to_json};
+use rinshan_search::outlook::{of_notation, to_json, Odds};
 
 use crate::error::CliError;
 
@@ -32,14 +32,22 @@ pub fn run(args: Args) -> Result<(), CliError> {
         println!("{}", to_json(&odds, args.draws));
         return Ok(());
     }
-    let last = args.draws - 1;
-    println!(
-        "discard  shanten  tenpai by draw {:>2}  win by draw {:>2} (95%)",
-        args.draws, args.draws
+    print_table(&odds, args.draws, "");
+    eprintln!(
+        "drawing alone from the unseen tiles, {} play-outs per discard; other seats' wins and an open hand's yaku are not counted",
+        args.trials
     );
-    for o in &odds {
+    Ok(())
+}
+
+/// The odds drawing alone as a table: each discard's shanten and its chances by the last of
+/// `draws` draws, each line after `indent`.
+pub(crate) fn print_table(odds: &[Odds], draws: usize, indent: &str) {
+    let last = draws - 1;
+    println!("{indent}discard  shanten  tenpai by draw {draws:>2}  win by draw {draws:>2} (95%)");
+    for o in odds {
         println!(
-            "{:>7}  {:>7}  {:>17.1}%  {:>8.1}% +- {:.1}",
+            "{indent}{:>7}  {:>7}  {:>17.1}%  {:>8.1}% +- {:.1}",
             o.discard.name(),
             o.shanten,
             100.0 * o.tenpai[last],
@@ -47,9 +55,4 @@ pub fn run(args: Args) -> Result<(), CliError> {
             100.0 * o.interval(o.win[last])
         );
     }
-    eprintln!(
-        "drawing alone from the unseen tiles, {} play-outs per discard; other seats' wins and an open hand's yaku are not counted",
-        args.trials
-    );
-    Ok(())
 }

@@ -377,6 +377,33 @@ fn make_way(map: &mut HashMap<u64, Arc<Held>>, evict: bool) -> bool {
     true
 }
 
+/// Runs `work` on a blocking thread, then hands its answer to the session with `done`; an error,
+/// or a panic of `who`'s, stops the game where it is, saying so (it cannot go on without them).
+async fn off_thread<T: Send + 'static>(
+    held: &Held,
+    work: impl FnOnce() -> T + Send + 'static,
+    done: fn(&mut Session, T) -> Result<bool, String>,
+    who: &str,
+) {
+    let answer = tokio::task::spawn_blocking(work).await;
+    let moved = {
+        let mut s = held.lock();
+        match answer {
+            Ok(answer) => done(&mut s, answer).unwrap_or_else(|e| {
+                s.stop(&e);
+                true
+            }),
+            Err(e) => {
+                s.stop(&format!("{who} failed: {e}"));
+                true
+            }
+        }
+    };
+    if moved {
+        held.changed();
+    }
+}
+
 /// Plays a game's agent moves, each after the game's delay, until the game is dropped. A
 /// spectated game also moves on past each round's result. The MJAI bots hear each step as soon as
 /// it is played and answer on a blocking thread, the session unlocked meanwhile (a bot may take
@@ -428,49 +455,16 @@ async fn drive(held: Arc<Held>, archive: Option<Archive>) {
         } else {
             tokio::task::yield_now().await;
         }
+        // The bots answer, and the look-ahead thinks, on a blocking thread with the session
+        // unlocked: other games and the page's requests go on meanwhile.
         let work = held.lock().bot_work();
         if let Some(work) = work {
-            let done = tokio::task::spawn_blocking(move || work.run()).await;
-            let moved = {
-                let mut s = held.lock();
-                match done {
-                    Ok(done) => s.bot_done(done).unwrap_or_else(|e| {
-                        s.stop(&e);
-                        true
-                    }),
-                    // The bots went with the panic: the game cannot go on.
-                    Err(e) => {
-                        s.stop(&format!("the MJAI bots failed: {e}"));
-                        true
-                    }
-                }
-            };
-            if moved {
-                held.changed();
-            }
+            off_thread(&held, move || work.run(), Session::bot_done, "the MJAI bots").await;
             continue;
         }
-        // The look-ahead thinks on a blocking thread, the session unlocked: other games and the
-        // page's requests go on meanwhile.
         let thinking = held.lock().search_work();
         if let Some(thinking) = thinking {
-            let answer = tokio::task::spawn_blocking(move || thinking.run()).await;
-            let moved = {
-                let mut s = held.lock();
-                match answer {
-                    Ok(answer) => s.search_done(answer).unwrap_or_else(|e| {
-                        s.stop(&e);
-                        true
-                    }),
-                    Err(e) => {
-                        s.stop(&format!("the look-ahead failed: {e}"));
-                        true
-                    }
-                }
-            };
-            if moved {
-                held.changed();
-            }
+            off_thread(&held, move || thinking.run(), Session::search_done, "the look-ahead").await;
             continue;
         }
         let moved = {
