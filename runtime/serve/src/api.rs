@@ -512,13 +512,20 @@ pub const OUTLOOK_TRIALS: u32 = 2000;
 /// ([`rinshan_search::outlook::at_turn`]); 409 at any other time.
 async fn outlook(State(store): State<Store>, Path(id): Path<String>) -> Result<axum::Json<Value>, ApiError> {
     let held = store.get(game_id(&id)?).ok_or_else(|| not_found(&id))?;
-    let turn = held.lock().own_turn();
+    let (turn, step, kept) = {
+        let s = held.lock();
+        (s.own_turn(), s.step, s.odds.clone())
+    };
     let Some((state, seat, variant)) = turn else {
         return Err(ApiError(
             StatusCode::CONFLICT,
             "the odds are worked out at your own turn to discard".into(),
         ));
     };
+    // Worked out once per decision: asking again, or from many tabs, costs nothing.
+    if let Some((_, odds)) = kept.filter(|(at, _)| *at == step) {
+        return Ok(axum::Json(odds));
+    }
     // The same draws for every request at this decision: the odds do not flicker on a refresh.
     let seed = u64::from(state.next_draw) << 8 | u64::from(seat);
     let (odds, draws) = tokio::task::spawn_blocking(move || {
@@ -527,7 +534,9 @@ async fn outlook(State(store): State<Store>, Path(id): Path<String>) -> Result<a
     .await
     .map_err(|e| ApiError(StatusCode::INTERNAL_SERVER_ERROR, e.to_string()))?
     .map_err(|e| ApiError(StatusCode::CONFLICT, e))?;
-    Ok(axum::Json(rinshan_search::outlook::to_json(&odds, draws)))
+    let odds = rinshan_search::outlook::to_json(&odds, draws);
+    held.lock().odds = Some((step, odds.clone()));
+    Ok(axum::Json(odds))
 }
 
 /// The most rounds an uploaded log may have (a long half game has about 20).

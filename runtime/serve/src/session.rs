@@ -132,6 +132,8 @@ pub struct Session {
     untold: Vec<Stepped>,
     /// The wall places each seat drew this round: what a look-ahead seat knows beyond the table.
     own_draws: [OwnDraws; 4],
+    /// The person's odds per discard (`GET .../outlook`) at the decision they were worked out for.
+    pub odds: Option<(u64, serde_json::Value)>,
 }
 
 /// A look-ahead seat's decision, taken out of the session to be thought out on a blocking thread
@@ -234,6 +236,7 @@ impl Session {
             bots,
             untold: Vec::new(),
             own_draws: Default::default(),
+            odds: None,
         };
         let state = s.state()?;
         for q in 0..s.setup.variant.seats() {
