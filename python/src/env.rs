@@ -711,11 +711,8 @@ impl PyEnv {
         }
         let variant = env.variant();
         let state = env.game_states().map_err(env_error)?.swap_remove(i);
-        let names = rinshan_engine::env::action_names(variant);
-        let discards = (0..names.len()).any(|a| {
-            state.mask[a / 32] >> (a % 32) & 1 == 1 && (names[a].starts_with("discard_") || names[a] == "tsumogiri")
-        });
-        if !discards {
+        let own = variant.discard_actions();
+        if (0..3).all(|w| state.mask[w] & own[w] == 0) {
             return Ok(None);
         }
         let (odds, draws) = py

@@ -13,7 +13,7 @@ use rinshan_logs::mjai::seat::MjaiEntrant;
 use rinshan_search::SearchEntrant;
 use serde_json::json;
 
-use crate::args::{MjaiArgs, SeatArg, VariantArg};
+use crate::args::{on_threads, MjaiArgs, SeatArg, VariantArg};
 use crate::error::CliError;
 
 #[derive(clap::Args)]
@@ -131,15 +131,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
     };
     let started = Instant::now();
     let progress = |done: u64| bar.set_position(done);
-    let report = match args.threads {
-        Some(0) => return Err(CliError::input("--threads must be at least 1")),
-        Some(n) => rayon::ThreadPoolBuilder::new()
-            .num_threads(n)
-            .build()
-            .map_err(|e| CliError::failure(format!("thread pool: {e}")))?
-            .install(|| arena::run(&arena, &progress)),
-        None => arena::run(&arena, &progress),
-    };
+    let report = on_threads(args.threads, || arena::run(&arena, &progress))?;
     bar.finish_and_clear();
     let seconds = started.elapsed().as_secs_f64();
     let verdict = fault_verdict(&report, args.max_fault_rate);

@@ -169,3 +169,16 @@ impl MjaiArgs {
         })
     }
 }
+
+/// `work` on `threads` CPU threads (`--threads`; `None`: all cores), in a rayon pool of its own.
+pub fn on_threads<T: Send>(threads: Option<usize>, work: impl FnOnce() -> T + Send) -> Result<T, CliError> {
+    match threads {
+        Some(0) => Err(CliError::input("--threads must be at least 1")),
+        Some(n) => Ok(rayon::ThreadPoolBuilder::new()
+            .num_threads(n)
+            .build()
+            .map_err(|e| CliError::failure(format!("thread pool: {e}")))?
+            .install(work)),
+        None => Ok(work()),
+    }
+}

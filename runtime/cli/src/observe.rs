@@ -5,10 +5,10 @@
 use std::path::PathBuf;
 
 use rinshan_engine::agents::Agent;
-use rinshan_engine::observe::{describe, field_values, fields_markdown, Form, OwnDraws};
+use rinshan_engine::observe::{describe, field_values, fields_markdown, Form};
 use rinshan_logs::read_log;
 use rinshan_logs::tenhou::log::Game;
-use rinshan_logs::tenhou::position::{round_positions, Position};
+use rinshan_logs::tenhou::position::{own_draws, round_positions, Position};
 use rinshan_search::outlook::{at_turn, in_play, to_json, InPlay, Odds};
 use serde_json::json;
 
@@ -130,23 +130,12 @@ fn outlook(game: &Game, positions: &[Position], step: usize, seat: u32, worlds: 
             pos.seat
         )));
     }
-    // The wall places the seat drew this round, followed from the round's first decision.
-    let mut own = OwnDraws::default();
-    for (i, p) in positions[..=step].iter().enumerate() {
-        let before = &positions[i.saturating_sub(1)].state;
-        own.update(game.variant, before, &mut p.state.clone(), seat);
-    }
+    let own = own_draws(game.variant, &positions[..=step], seat)
+        .pop()
+        .unwrap_or_default();
     let (alone, draws) = at_turn(game.variant, &pos.state, seat, 10_000, 1)
         .map_err(|e| CliError::input(format!("--outlook at step {step}: {e}")))?;
-    let in_play = in_play(
-        game.variant,
-        &pos.state,
-        seat,
-        &own.positions,
-        worlds,
-        Agent::Defensive,
-        1,
-    );
+    let in_play = in_play(game.variant, &pos.state, seat, &own, worlds, Agent::Defensive, 1);
     Ok(Outlook { alone, draws, in_play })
 }
 

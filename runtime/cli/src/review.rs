@@ -9,6 +9,7 @@ use rinshan_logs::read_log;
 use rinshan_review::{review_html, review_spots, seat_for, spots};
 use rinshan_search::Options;
 
+use crate::args::on_threads;
 use crate::error::CliError;
 
 #[derive(clap::Args)]
@@ -59,16 +60,9 @@ pub fn run(args: Args) -> Result<(), CliError> {
         }
         false => ProgressBar::hidden(),
     };
-    let judge = || review_spots(&game, seat, &spots, options, &|| bar.inc(1));
-    let review = match args.threads {
-        Some(0) => return Err(CliError::input("--threads must be at least 1")),
-        Some(n) => rayon::ThreadPoolBuilder::new()
-            .num_threads(n)
-            .build()
-            .map_err(|e| CliError::failure(format!("thread pool: {e}")))?
-            .install(judge),
-        None => judge(),
-    };
+    let review = on_threads(args.threads, || {
+        review_spots(&game, seat, &spots, options, &|| bar.inc(1))
+    })?;
     bar.finish_and_clear();
     if let Some(path) = &args.html {
         let page = review_html(&game, &review).map_err(CliError::failure)?;

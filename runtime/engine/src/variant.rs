@@ -106,6 +106,18 @@ impl Variant {
         (0..n).map(|k| self.replacement_index(k)).collect()
     }
 
+    /// The actions that discard a tile (`discard_<tile>` and `tsumogiri`), one bit per action id
+    /// as the legal masks hold them.
+    pub fn discard_actions(self) -> [u32; 3] {
+        let (first, count, tsumogiri) =
+            with_variant!(self, v => (v::ACTION_DISCARD, v::ACTION_DISCARD_COUNT, v::ACTION_TSUMOGIRI));
+        let mut mask = [0u32; 3];
+        for a in (first..first + count).chain([tsumogiri]) {
+            mask[a as usize / 32] |= 1 << (a % 32);
+        }
+        mask
+    }
+
     /// Whether tile type `t` (0..33) is in the set: three players have no 2m-8m.
     pub fn tile_in_play(self, t: u32) -> bool {
         with_variant!(self, v => v::tile_in_play(t))
@@ -142,5 +154,22 @@ impl std::str::FromStr for Variant {
 
     fn from_str(name: &str) -> Result<Variant, UnknownName> {
         Variant::from_name(name).ok_or_else(|| UnknownName::new("variant", name, Variant::ALL))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_discard_actions_are_those_the_layout_names_so() {
+        for &v in Variant::ALL {
+            let names = crate::env::action_names(v);
+            let mask = v.discard_actions();
+            for (a, name) in names.iter().enumerate() {
+                let named = name.starts_with("discard_") || name == "tsumogiri";
+                assert_eq!(mask[a / 32] >> (a % 32) & 1 == 1, named, "{v}: {name}");
+            }
+        }
     }
 }

@@ -10,9 +10,8 @@
 use rayon::prelude::*;
 use rinshan_engine::env::action_names;
 use rinshan_engine::generated::kernel::GameState;
-use rinshan_engine::observe::OwnDraws;
 use rinshan_logs::tenhou::log::Game;
-use rinshan_logs::tenhou::position::round_positions;
+use rinshan_logs::tenhou::position::{own_draws, round_positions};
 use rinshan_search::{Candidate, Options, Search};
 use serde::Serialize;
 
@@ -55,13 +54,7 @@ pub fn spots(game: &Game, seat: u32, round: Option<usize>) -> Result<Vec<Spot>, 
     let mut out = Vec::new();
     for round in (0..game.rounds.len()).filter(|&r| round.is_none_or(|only| only == r)) {
         let positions = round_positions(game, round)?;
-        let mut own = OwnDraws::default();
-        for (i, p) in positions.iter().enumerate() {
-            let before = match i {
-                0 => &p.state,
-                _ => &positions[i - 1].state,
-            };
-            own.update(variant, before, &mut p.state.clone(), seat);
+        for (p, own_draws) in positions.iter().zip(own_draws(variant, &positions, seat)) {
             let choices: u32 = p.state.mask.iter().map(|w| w.count_ones()).sum();
             if p.seat == seat && choices >= 2 {
                 out.push(Spot {
@@ -70,7 +63,7 @@ pub fn spots(game: &Game, seat: u32, round: Option<usize>) -> Result<Vec<Spot>, 
                     action: p.action,
                     what: p.what.clone(),
                     state: p.state,
-                    own_draws: own.positions.clone(),
+                    own_draws,
                 });
             }
         }

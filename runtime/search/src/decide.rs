@@ -12,7 +12,6 @@
 use std::time::Instant;
 
 use rinshan_engine::agents::Agent;
-use rinshan_engine::env::action_names;
 use rinshan_engine::generated::kernel::{GameState, SEAT_RIICHI};
 use rinshan_engine::random::Rng;
 use rinshan_engine::{with_variant, Variant};
@@ -107,16 +106,10 @@ fn mean_and_stderr(xs: &[f64]) -> (f64, f64) {
 impl Search {
     /// The look-ahead for games of `variant`.
     pub fn new(variant: Variant, options: Options) -> Search {
-        let mut own_turn = [0u32; 3];
-        for (a, name) in action_names(variant).iter().enumerate() {
-            if name.starts_with("discard_") || name == "tsumogiri" {
-                own_turn[a / 32] |= 1 << (a % 32);
-            }
-        }
         Search {
             variant,
             options,
-            own_turn,
+            own_turn: variant.discard_actions(),
             riichi: with_variant!(variant, v => v::ACTION_RIICHI),
         }
     }

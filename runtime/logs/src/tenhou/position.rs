@@ -24,6 +24,23 @@ pub struct Position {
     pub state: GameState,
 }
 
+/// For each of a round's `positions` (in order of play, from its first decision), the wall
+/// places `seat` had drawn by then: what it knows beyond the table
+/// ([`rinshan_engine::observe::OwnDraws`]), which a look-ahead from its seat deals around.
+pub fn own_draws(variant: Variant, positions: &[Position], seat: u32) -> Vec<Vec<u32>> {
+    let mut own = rinshan_engine::observe::OwnDraws::default();
+    positions
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            // The first position is followed from itself: the round's start.
+            let before = &positions[i.saturating_sub(1)].state;
+            own.update(variant, before, &mut p.state.clone(), seat);
+            own.positions.clone()
+        })
+        .collect()
+}
+
 /// How a replayed round ended: the step that ended it and the table after it.
 #[derive(Clone)]
 pub struct RoundEnd {

@@ -57,9 +57,9 @@ pub fn in_play(
     seed: u64,
 ) -> Vec<InPlay> {
     let names = action_names(variant);
+    let own = variant.discard_actions();
     let discards: Vec<u32> = (0..names.len() as u32)
-        .filter(|&a| s.mask[a as usize / 32] >> (a % 32) & 1 == 1)
-        .filter(|&a| names[a as usize].starts_with("discard_") || names[a as usize] == "tsumogiri")
+        .filter(|&a| (s.mask[a as usize / 32] & own[a as usize / 32]) >> (a % 32) & 1 == 1)
         .collect();
     if s.current != seat || discards.is_empty() {
         return Vec::new();
