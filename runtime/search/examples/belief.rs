@@ -4,7 +4,9 @@
 //!     cargo run --release -p rinshan-search --example belief -- [positions] [worlds]
 //!
 //! At own-turn positions of `defensive` self-play (red half games), each other seat's shanten in
-//! the real game and in worlds dealt by `world::deal`, by how many tiles that seat has discarded.
+//! the real game and in worlds dealt by `world::deal`, by how many tiles that seat has discarded,
+//! and how many kinds of tile a tenpai hand among them waits on (what decides how often it is
+//! dealt into) and how many of those kinds are honors.
 
 use rinshan_engine::generated::kernel::{self, GameState, ShantenInput};
 use rinshan_engine::random::Rng;
@@ -18,6 +20,16 @@ fn shanten(s: &GameState, q: u32) -> i32 {
         hand: kernel::hand_counts(&mut s.clone(), q),
     })
     .shanten
+}
+
+/// Adds seat `q`'s waits at `s`, if it is tenpai, to `into` with weight `w`.
+fn count_waits(into: &mut [f64; 3], s: &GameState, q: u32, w: f64) {
+    let mask = u64::from(s.waits[(q * 2) as usize]) | u64::from(s.waits[(q * 2 + 1) as usize]) << 32;
+    if mask != 0 {
+        into[0] += w;
+        into[1] += w * f64::from(mask.count_ones());
+        into[2] += w * f64::from((mask >> 27).count_ones());
+    }
 }
 
 fn main() {
@@ -36,6 +48,8 @@ fn main() {
     // Per bucket of discards made (0-5, 6-11, 12+): (real shanten sum, real tenpai, world shanten
     // sum, world tenpai, count).
     let mut buckets = [[0f64; 5]; 3];
+    // Over tenpai hands, real and in the worlds: (hands, wait kinds, honor wait kinds).
+    let mut waits = [[0f64; 3]; 2];
     let mut rng = Rng::new(3);
     let (mut seed, mut found) = (0u64, 0usize);
     while found < positions {
@@ -62,6 +76,10 @@ fn main() {
                         b[3] += f64::from(u8::from(x == 0)) / worlds as f64;
                     }
                     b[4] += 1.0;
+                    count_waits(&mut waits[0], s, q, 1.0);
+                    for w in &ws {
+                        count_waits(&mut waits[1], w, q, 1.0 / worlds as f64);
+                    }
                 }
             }
             found < positions
@@ -82,6 +100,16 @@ fn main() {
             b[2] / n,
             100.0 * b[1] / n,
             100.0 * b[3] / n
+        );
+    }
+    for (i, w) in waits.iter().enumerate() {
+        let n = w[0].max(1e-9);
+        println!(
+            "{} tenpai hands: {:.1}, wait kinds {:.2}, of them honors {:.2}",
+            ["real ", "world"][i],
+            w[0],
+            w[1] / n,
+            w[2] / n
         );
     }
 }
