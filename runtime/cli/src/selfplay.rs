@@ -10,12 +10,14 @@ use std::time::Instant;
 use indicatif::{ProgressBar, ProgressStyle};
 use rinshan_engine::agents::Agent;
 use rinshan_engine::env::{env_seed, events, Backend, Config, Env, Mode};
+use rinshan_engine::generated::kernel::GameState;
 use rinshan_engine::random::Rng;
 use rinshan_engine::Variant;
 use rinshan_logs::file::write_log;
 use rinshan_logs::mjai::batch::BatchBots;
 use rinshan_logs::mjai::seat::MjaiEntrant;
 use rinshan_logs::tenhou::write::{Finished, Recorder};
+use rinshan_search::BatchSearch;
 use serde_json::json;
 
 use crate::args::{FormatArg, GameArgs, MjaiArgs, SeatArg};
@@ -34,8 +36,9 @@ pub struct Args {
     /// Print the summary as JSON
     #[arg(long)]
     json: bool,
-    /// Who plays the seats: built-in agents (random, rule, greedy, defensive) or MJAI bots
-    /// (`mjai:COMMAND`, see `arena`), one per seat (three players: three, or four taking turns to
+    /// Who plays the seats: built-in agents (random, rule, greedy, defensive), the look-ahead
+    /// (`search`, or with settings as in `arena`; CPU backend) or MJAI bots (`mjai:COMMAND`, see
+    /// `arena`), one per seat (three players: three, or four taking turns to
     /// sit out); env i seats agent (p + i) mod n of the n listed at seat p, so over a batch of a
     /// multiple of n envs each agent plays every seat equally; or `uniform` for a uniformly random
     /// legal policy drawn on the host (most such games end in draws)
@@ -162,12 +165,6 @@ fn seatings(
             "--agents needs {seats} agents, one per seat{three}, or `uniform`; got {n}"
         )));
     }
-    if players.iter().any(|p| matches!(p, SeatArg::Search(_))) {
-        return Err(CliError::input(
-            "the look-ahead agent plays in `rinshan arena` (e.g. --agents search,defensive,defensive,defensive); \
-             selfplay's batched games take the built-in agents and MJAI bots",
-        ));
-    }
     let kernel: Vec<Agent> = players
         .iter()
         .map(|a| match a {
@@ -202,6 +199,12 @@ pub fn run(args: Args) -> Result<(), CliError> {
     let with_bots = entrants.iter().any(Option::is_some);
     if with_bots {
         MjaiArgs::check_rules(config.variant, config.mode, Some(config.backend))?;
+    }
+    let with_search = players.iter().flatten().any(|p| matches!(p, SeatArg::Search(_)));
+    if with_search && config.backend == Backend::Gpu {
+        return Err(CliError::input(
+            "the look-ahead needs --backend cpu: it follows every game's state after every step",
+        ));
     }
     let (variant, seed) = (config.variant, config.seed);
     if args.games == 0 {
@@ -266,6 +269,10 @@ pub fn run(args: Args) -> Result<(), CliError> {
         }
         false => None,
     };
+    let mut searches = match (&players, with_search) {
+        (Some(players), true) => look_aheads(players, env.game_states().map_err(CliError::failure)?, variant),
+        _ => Vec::new(),
+    };
     while games < args.games {
         match &seatings {
             Some(seats) => actions = env.agent_actions(seats).map_err(CliError::failure)?,
@@ -280,10 +287,19 @@ pub fn run(args: Args) -> Result<(), CliError> {
             Some(bots) => bots.act(&mut actions),
             None => Vec::new(),
         };
+        for search in &mut searches {
+            search.act(&mut actions);
+        }
         env.step(&actions).map_err(CliError::failure)?;
         if let Some(bots) = &mut bots {
             let after = env.game_states().map_err(CliError::failure)?;
             bot_faults.extend(bots.stepped(&actions, after, &env.last().terminated));
+        }
+        if !searches.is_empty() {
+            let after = env.game_states().map_err(CliError::failure)?;
+            for search in &mut searches {
+                search.stepped(after.clone(), &env.last().terminated);
+            }
         }
         for fault in bot_faults {
             eprintln!("rinshan selfplay: {fault}");
@@ -376,6 +392,26 @@ pub fn run(args: Args) -> Result<(), CliError> {
         faults,
     );
     Ok(())
+}
+
+/// Per entry of `players` that is the look-ahead, the look-ahead at that entry's seats of every
+/// game (env i seats entry (p + i) mod n at seat p, as the kernel's agents are).
+fn look_aheads(players: &[SeatArg], states: Vec<GameState>, variant: Variant) -> Vec<BatchSearch> {
+    let (n, at_table) = (players.len(), variant.seats() as usize);
+    players
+        .iter()
+        .enumerate()
+        .filter_map(|(k, p)| match p {
+            SeatArg::Search(options) => Some((k, *options)),
+            _ => None,
+        })
+        .map(|(k, options)| {
+            let seats = (0..states.len())
+                .map(|i| std::array::from_fn(|p| p < at_table && (p + i) % n == k))
+                .collect();
+            BatchSearch::new(variant, options, seats, states.clone())
+        })
+        .collect()
 }
 
 /// Why games cannot be exported as asked; creates the folder.

@@ -1,6 +1,6 @@
 //! The look-ahead agent where the command line seats it: the arena (with its totals in the
-//! report), `mjai-bot --agent search`, the reviewer (`review`), and clear errors for a bad setting
-//! or a command that does not seat it.
+//! report), self-play, `mjai-bot --agent search`, the reviewer (`review`), and clear errors for a
+//! bad setting or a backend that cannot seat it.
 
 use std::io::Write;
 use std::process::{Command, Output, Stdio};
@@ -48,13 +48,44 @@ fn a_bad_search_setting_is_refused_with_what_is_wrong() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("unknown search option `depth`"));
     let out = rinshan(&[
         "selfplay",
+        "--backend",
+        "gpu",
         "--agents",
         "search,defensive,defensive,defensive",
         "--games",
         "1",
     ]);
     assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("rinshan arena"));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--backend cpu"));
+}
+
+/// Self-play seats the look-ahead where --agents puts it: one that never overrides its base agent
+/// plays `defensive`'s games exactly, and one that follows every play-out's verdict plays others.
+#[test]
+fn selfplay_seats_the_look_ahead() {
+    let run = |first: &str| -> serde_json::Value {
+        let agents = format!("{first},defensive,defensive,defensive");
+        let out = rinshan(&[
+            "selfplay", "--agents", &agents, "--games", "8", "--batch", "4", "--mode", "single", "--seed", "3",
+            "--json",
+        ]);
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        serde_json::from_slice(&out.stdout).expect("JSON")
+    };
+    let base = run("defensive");
+    let never = run("search:rollouts=8:focus=all:margin=1000");
+    let eager = run("search:rollouts=8:focus=all:margin=0");
+    for key in ["steps", "rounds", "avg_final_score", "yaku"] {
+        assert_eq!(never[key], base[key], "{key}");
+    }
+    assert_ne!(
+        (&eager["steps"], &eager["avg_final_score"]),
+        (&base["steps"], &base["avg_final_score"])
+    );
+    let first = &eager["per_agent"][0];
+    assert_eq!(first["agent"], "search:rollouts=8:focus=all:margin=0");
+    // Env i seats the list rotated by i: over 4 envs the look-ahead plays every seat.
+    assert_eq!(first["games"], 8);
 }
 
 #[test]

@@ -5,10 +5,12 @@
 //!
 //! At own-turn positions of `defensive` self-play (red half games), each other seat's shanten in
 //! the real game and in worlds dealt by `world::deal`, by how many tiles that seat has discarded,
-//! and how many kinds of tile a tenpai hand among them waits on (what decides how often it is
-//! dealt into) and how many of those kinds are honors.
+//! how many kinds of tile a tenpai hand among them waits on (what decides how often it is dealt
+//! into) and how many of those kinds are honors, how often a seat in riichi is tenpai in the
+//! worlds (always in the real game), and how often a closed seat not in riichi is (never in the
+//! real game: `defensive` declares riichi whenever it can).
 
-use rinshan_engine::generated::kernel::{self, GameState, ShantenInput};
+use rinshan_engine::generated::kernel::{self, GameState, ShantenInput, SEAT_RIICHI};
 use rinshan_engine::random::Rng;
 use rinshan_engine::Variant;
 use rinshan_search::positions::defensive_game;
@@ -50,6 +52,11 @@ fn main() {
     let mut buckets = [[0f64; 5]; 3];
     // Over tenpai hands, real and in the worlds: (hands, wait kinds, honor wait kinds).
     let mut waits = [[0f64; 3]; 2];
+    // Seats in riichi, and the share of worlds in which they are tenpai.
+    let mut riichi = [0f64; 2];
+    // Closed seats not in riichi (which `defensive` would have declared if tenpai): (seats, real
+    // tenpai, world tenpai).
+    let mut dama = [0f64; 3];
     let mut rng = Rng::new(3);
     let (mut seed, mut found) = (0u64, 0usize);
     while found < positions {
@@ -77,6 +84,19 @@ fn main() {
                     }
                     b[4] += 1.0;
                     count_waits(&mut waits[0], s, q, 1.0);
+                    if s.seat_flags[q as usize] & SEAT_RIICHI == 0 && kernel::byte_of(s.meld_counts, q) == 0 {
+                        dama[0] += 1.0;
+                        dama[1] += f64::from(u8::from(real == 0));
+                        for w in &ws {
+                            dama[2] += f64::from(u8::from(shanten(w, q) == 0)) / worlds as f64;
+                        }
+                    }
+                    if s.seat_flags[q as usize] & SEAT_RIICHI != 0 {
+                        riichi[0] += 1.0;
+                        for w in &ws {
+                            riichi[1] += f64::from(u8::from(shanten(w, q) == 0)) / worlds as f64;
+                        }
+                    }
                     for w in &ws {
                         count_waits(&mut waits[1], w, q, 1.0 / worlds as f64);
                     }
@@ -112,4 +132,15 @@ fn main() {
             w[2] / n
         );
     }
+    println!(
+        "seats in riichi: {}, tenpai in {:.1}% of their worlds",
+        riichi[0],
+        100.0 * riichi[1] / riichi[0].max(1.0)
+    );
+    println!(
+        "closed seats not in riichi: {}, tenpai {:.1}% real, {:.1}% in the worlds",
+        dama[0],
+        100.0 * dama[1] / dama[0].max(1.0),
+        100.0 * dama[2] / dama[0].max(1.0)
+    );
 }

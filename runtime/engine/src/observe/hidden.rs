@@ -43,6 +43,20 @@ impl OwnDraws {
     }
 }
 
+/// The wall places whose tiles no seat has seen at `s`: the live wall still to be drawn, the dora
+/// and ura indicators not revealed, and the replacement tiles not drawn (live wall first, in
+/// place order).
+pub fn hidden_wall_places(variant: Variant, s: &GameState) -> Vec<u32> {
+    let wall = variant.wall();
+    let drawn_replacements = variant.drawn_replacements(s);
+    // The live wall's end is where three players' replacement tiles past the fourth come from.
+    let live = (s.next_draw..wall.live_end).filter(|i| !drawn_replacements.contains(i));
+    let dora = wall.dora + s.dora_revealed..wall.dora + 5;
+    let ura = wall.ura..wall.ura + 5;
+    let rinshan = (wall.rinshan..wall.rinshan + 4).filter(|i| !drawn_replacements.contains(i));
+    live.chain(dora).chain(ura).chain(rinshan).collect()
+}
+
 /// A copy of `s` in which everything `observer` cannot see is reshuffled or scrambled: the tiles
 /// of the other hands, the live wall and the hidden dead wall permuted among themselves, the wall
 /// places of tiles that left it unseen scrambled, the other seats' waits, furiten, claim options
@@ -52,22 +66,8 @@ pub fn resample_hidden(variant: Variant, s: &GameState, observer: u32, own_draws
     let mut r = *s;
     let wall = variant.wall();
     let seats = variant.seats();
-    let drawn_replacements = variant.drawn_replacements(s);
     let mut pool: Vec<u32> = Vec::new();
-    let mut hidden_positions: Vec<u32> = Vec::new();
-    // The live wall's end is where three players' replacement tiles past the fourth come from.
-    for i in (s.next_draw..wall.live_end).filter(|i| !drawn_replacements.contains(i)) {
-        hidden_positions.push(i);
-    }
-    for i in wall.dora + s.dora_revealed..wall.dora + 5 {
-        hidden_positions.push(i);
-    }
-    for i in wall.ura..wall.ura + 5 {
-        hidden_positions.push(i);
-    }
-    for i in (wall.rinshan..wall.rinshan + 4).filter(|i| !drawn_replacements.contains(i)) {
-        hidden_positions.push(i);
-    }
+    let hidden_positions = hidden_wall_places(variant, s);
     for &i in &hidden_positions {
         pool.push(kernel::wall_tile(&mut r, i));
     }
@@ -136,7 +136,7 @@ pub fn resample_hidden(variant: Variant, s: &GameState, observer: u32, own_draws
             wall_set(&mut r, i, rng.below(37));
         }
     }
-    for &i in &drawn_replacements {
+    for i in variant.drawn_replacements(s) {
         if !own_draws.contains(&i) {
             wall_set(&mut r, i, rng.below(37));
         }

@@ -20,7 +20,7 @@ pub use fields::{
 };
 pub(crate) use form::observe_cpu;
 pub use form::{record, Form};
-pub use hidden::{resample_hidden, OwnDraws};
+pub use hidden::{hidden_wall_places, resample_hidden, OwnDraws};
 pub use packed::{packed_row, unpack_planes, PackedRow};
 pub(crate) use table_view::TableView;
 pub use text::{describe, field_values, fields_markdown};
