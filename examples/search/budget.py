@@ -53,9 +53,10 @@ def arena(args: argparse.Namespace, rollouts: int, games: int) -> dict:
 
 def point(rollouts: int, report: dict) -> dict:
     """One budget's figures: the look-ahead's standing and its decision times."""
-    agent = f"search:rollouts={rollouts}"
-    standing = next(s for s in report["standings"] if s["agent"] == agent)
-    search = next(s for s in report["search"] if s["agent"] == agent)
+    # The one look-ahead seat, named by its settings as the arena prints them (the defaults
+    # left out: `search:rollouts=256` is `search`).
+    standing = next(s for s in report["standings"] if s["agent"].split(":")[0] == "search")
+    search = report["search"][0]
     return {
         "rollouts": rollouts,
         "games": standing["games"],
@@ -122,7 +123,7 @@ def main(argv: list[str] | None = None) -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     default_cli = os.environ.get("RINSHAN_CLI", str(REPO / "target" / "release" / "rinshan"))
     ap.add_argument("--rinshan", default=default_cli, help="the rinshan binary")
-    ap.add_argument("--rollouts", default="64,256,512,1024,2048,4096")
+    ap.add_argument("--rollouts", default="64,256,1024,4096")
     ap.add_argument("--games", type=int, default=200, help="games per budget")
     ap.add_argument(
         "--games-at",
