@@ -409,7 +409,7 @@ async fn spectate_and_replay(c: &Client, base: &str) {
         until(
             &c,
             "return window.__opened && !document.getElementById('open').disabled",
-            120,
+            240,
         )
         .await;
         let refused = js(
@@ -425,10 +425,12 @@ async fn spectate_and_replay(c: &Client, base: &str) {
     }
     let frame = c.find(Locator::Id("viewer")).await.expect("the viewer");
     frame.enter_frame().await.expect("into the viewer");
+    // The review plays out every decision of the seat (256 play-outs each): on CI's two cores,
+    // shared with the GPU tests' software Vulkan, that takes minutes, not seconds.
     until(
         &c,
         "return document.body.dataset.ready === '1' && document.getElementById('candidates') !== null",
-        60,
+        240,
     )
     .await;
     // Laid out, not only loaded: the title and the board take room.

@@ -26,8 +26,9 @@ use rinshan_engine::Variant;
 /// Deals of a world before one whose riichi seats could not all be built to tenpai is kept.
 pub const RIICHI_TRIES: u32 = 16;
 
-/// Draws a riichi seat's hand may be built on by (a bound that is never reached in practice: a
-/// hand one step from tenpai takes a few).
+/// Draws a riichi seat's hand may be built on by: a hand one step from tenpai takes a few, and
+/// the bound ends the search where no unseen tile would help (late in a round), which then deals
+/// the world again.
 const TENPAI_DRAWS: u32 = 200;
 
 /// A world for `observer` at `s` (its decision): the hidden tiles dealt afresh from `rng`, each
