@@ -291,14 +291,15 @@ pub fn run(args: Args) -> Result<(), CliError> {
             search.act(&mut actions);
         }
         env.step(&actions).map_err(CliError::failure)?;
-        if let Some(bots) = &mut bots {
+        // The games' states, read once for all the host's players that follow them.
+        if bots.is_some() || !searches.is_empty() {
             let after = env.game_states().map_err(CliError::failure)?;
-            bot_faults.extend(bots.stepped(&actions, after, &env.last().terminated));
-        }
-        if !searches.is_empty() {
-            let after = env.game_states().map_err(CliError::failure)?;
+            let ended = &env.last().terminated;
             for search in &mut searches {
-                search.stepped(after.clone(), &env.last().terminated);
+                search.stepped(after.clone(), ended);
+            }
+            if let Some(bots) = &mut bots {
+                bot_faults.extend(bots.stepped(&actions, after, ended));
             }
         }
         for fault in bot_faults {
