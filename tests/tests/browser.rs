@@ -48,8 +48,11 @@ async fn start(chromium: &Path, driver: &Path) -> (Client, Driver, String) {
     let addr = listener.local_addr().expect("an address");
     // The person's game repeats run to run: the server deals every game from one seed (a
     // person cannot choose one).
+    // The review budget is the server's smallest useful one: a review must be drawn within the
+    // request's timeout (30 s) while the GPU tests' software Vulkan shares CI's two cores.
     let limits = Limits {
         fixed_seed: Some(7),
+        review_rollouts: 32,
         ..Limits::default()
     };
     tokio::spawn(async move { axum::serve(listener, app(limits)).await });
@@ -409,7 +412,7 @@ async fn spectate_and_replay(c: &Client, base: &str) {
         until(
             &c,
             "return window.__opened && !document.getElementById('open').disabled",
-            240,
+            60,
         )
         .await;
         let refused = js(
@@ -425,12 +428,10 @@ async fn spectate_and_replay(c: &Client, base: &str) {
     }
     let frame = c.find(Locator::Id("viewer")).await.expect("the viewer");
     frame.enter_frame().await.expect("into the viewer");
-    // The review plays out every decision of the seat (256 play-outs each): on CI's two cores,
-    // shared with the GPU tests' software Vulkan, that takes minutes, not seconds.
     until(
         &c,
         "return document.body.dataset.ready === '1' && document.getElementById('candidates') !== null",
-        240,
+        60,
     )
     .await;
     // Laid out, not only loaded: the title and the board take room.
@@ -448,7 +449,12 @@ async fn spectate_and_replay(c: &Client, base: &str) {
     )
     .await;
     assert!(
-        shown[0].as_u64() >= Some(2) && shown[1] == json!(1) && shown[2].as_u64() >= Some(5),
+        shown[0].as_u64() >= Some(2)
+            && shown[1] == json!(1)
+            && shown[2].as_u64() >= Some(5)
+            && shown[4]
+                .as_str()
+                .is_some_and(|s| s.ends_with("32 play-outs per decision.")),
         "{shown}"
     );
     if shown[3].as_u64() > Some(0) {

@@ -87,6 +87,8 @@ async fn a_whole_game_through_the_api_replays_from_its_log() {
     let limits = Limits {
         data_dir: Some(data.clone()),
         fixed_seed: Some(11),
+        // The review below must be drawn within the request's timeout on a loaded machine too.
+        review_rollouts: 32,
         ..Limits::default()
     };
     let app = app(limits.clone());
@@ -200,6 +202,11 @@ async fn a_whole_game_through_the_api_replays_from_its_log() {
     .await;
     assert_eq!(status, StatusCode::OK, "{review}");
     assert!(review.starts_with("<!doctype html>") && review.contains("rinshan review: You in"));
+    assert_eq!(
+        inlined(&review)["rollouts_per_decision"],
+        json!(32),
+        "the server's review budget"
+    );
     for (query, says) in [("seat=4", "seats 0..3"), ("", "seat"), ("seat=x", "seat")] {
         let (status, error) = send_from(
             &app,
@@ -990,4 +997,21 @@ async fn slow_connections_are_closed_and_counted() {
         .expect("read");
     let text = String::from_utf8_lossy(&answer);
     assert!(text.starts_with("HTTP/1.1 200"), "{text}");
+}
+
+/// The data a generated page inlines (gzip, then base64, in `const DATA`).
+fn inlined(page: &str) -> Value {
+    use base64::Engine as _;
+    use std::io::Read as _;
+    let data = page
+        .split("const DATA = \"")
+        .nth(1)
+        .and_then(|rest| rest.split('"').next())
+        .expect("the inlined data");
+    let packed = base64::engine::general_purpose::STANDARD.decode(data).expect("base64");
+    let mut json = String::new();
+    flate2::read::GzDecoder::new(&packed[..])
+        .read_to_string(&mut json)
+        .expect("gzip");
+    serde_json::from_str(&json).expect("JSON")
 }

@@ -70,6 +70,10 @@ pub struct Args {
     /// Keep no finished games
     #[arg(long)]
     no_data_dir: bool,
+    /// The look-ahead's play-outs per decision when the replay page reviews a log: a review must
+    /// be drawn within --request-timeout-seconds (256 take about 3 s of 2 cores per half game)
+    #[arg(long, default_value_t = 256)]
+    review_rollouts: u32,
     /// An MJAI bot the page offers as an opponent, `NAME=COMMAND` (repeatable): each seat it
     /// takes runs `sh -c "COMMAND SEAT"`; visitors choose it by NAME, never give a command
     #[arg(long = "mjai-bot", value_name = "NAME=COMMAND")]
@@ -118,6 +122,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
         ("--saved-games", args.saved_games as u64),
         ("--saved-megabytes", args.saved_megabytes),
         ("--saves-per-network-hour", args.saves_per_network_hour as u64),
+        ("--review-rollouts", u64::from(args.review_rollouts)),
     ];
     if let Some((name, _)) = counts.iter().find(|(_, n)| *n == 0) {
         return Err(CliError::input(format!("{name} must be at least 1")));
@@ -148,6 +153,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
         saves_per_network_hour: args.saves_per_network_hour,
         fixed_seed: None,
         bots,
+        review_rollouts: args.review_rollouts,
     };
     for b in &limits.bots {
         println!("MJAI bot `{}` offered as mjai:{}: {}", b.name, b.name, b.spec.command);

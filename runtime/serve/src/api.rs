@@ -554,10 +554,6 @@ async fn replay_page(store: &Store, client: std::net::IpAddr, name: &str, body: 
     at_turn(store, client, move || rinshan_render::html::replay_html(&game, 0)).await
 }
 
-/// The look-ahead's budget per decision for a review on the page: a half game takes about 3 s
-/// of 2 cores (the command line's default, 1,024, four times as long).
-pub const REVIEW_ROLLOUTS: u32 = 256;
-
 /// `?seat=S`: the seat a review judges.
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -583,7 +579,7 @@ async fn review(
         ));
     }
     let options = rinshan_search::Options {
-        rollouts: REVIEW_ROLLOUTS,
+        rollouts: store.limits().review_rollouts,
         ..rinshan_search::Options::default()
     };
     at_turn(&store, client, move || {

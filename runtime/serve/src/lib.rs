@@ -28,7 +28,7 @@ mod store;
 
 use std::net::SocketAddr;
 
-pub use api::{app, OUTLOOK_TRIALS, REVIEW_ROLLOUTS};
+pub use api::{app, OUTLOOK_TRIALS};
 pub use archive::{Archive, Saved};
 pub use bots::NamedBot;
 pub use listener::{connection_cap, serve_on};
