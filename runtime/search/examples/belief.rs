@@ -24,13 +24,17 @@ fn shanten(s: &GameState, q: u32) -> i32 {
     .shanten
 }
 
-/// Adds seat `q`'s waits at `s`, if it is tenpai, to `into` with weight `w`.
-fn count_waits(into: &mut [f64; 3], s: &GameState, q: u32, w: f64) {
-    let mask = u64::from(s.waits[(q * 2) as usize]) | u64::from(s.waits[(q * 2 + 1) as usize]) << 32;
+/// Adds seat `q`'s waits at `s`, if it is tenpai, to `into` with weight `w`: the hand, its kinds
+/// of winning tile, those that are honors, and whether one of them is in its own river (furiten:
+/// it cannot win on another seat's discard).
+fn count_waits(into: &mut [f64; 4], s: &GameState, q: u32, w: f64) {
+    let pair = |x: &[u32]| u64::from(x[(q * 2) as usize]) | u64::from(x[(q * 2 + 1) as usize]) << 32;
+    let mask = pair(&s.waits);
     if mask != 0 {
         into[0] += w;
         into[1] += w * f64::from(mask.count_ones());
         into[2] += w * f64::from((mask >> 27).count_ones());
+        into[3] += w * f64::from(u8::from(mask & pair(&s.discarded) != 0));
     }
 }
 
@@ -50,8 +54,9 @@ fn main() {
     // Per bucket of discards made (0-5, 6-11, 12+): (real shanten sum, real tenpai, world shanten
     // sum, world tenpai, count).
     let mut buckets = [[0f64; 5]; 3];
-    // Over tenpai hands, real and in the worlds: (hands, wait kinds, honor wait kinds).
-    let mut waits = [[0f64; 3]; 2];
+    // Over tenpai hands, real and in the worlds: (hands, wait kinds, honor wait kinds, furiten),
+    // then the same over seats in riichi.
+    let mut waits = [[0f64; 4]; 4];
     // Seats in riichi, and the share of worlds in which they are tenpai.
     let mut riichi = [0f64; 2];
     // Closed seats not in riichi (which `defensive` would have declared if tenpai): (seats, real
@@ -84,6 +89,10 @@ fn main() {
                     }
                     b[4] += 1.0;
                     count_waits(&mut waits[0], s, q, 1.0);
+                    let in_riichi = s.seat_flags[q as usize] & SEAT_RIICHI != 0;
+                    if in_riichi {
+                        count_waits(&mut waits[2], s, q, 1.0);
+                    }
                     if s.seat_flags[q as usize] & SEAT_RIICHI == 0 && kernel::byte_of(s.meld_counts, q) == 0 {
                         dama[0] += 1.0;
                         dama[1] += f64::from(u8::from(real == 0));
@@ -99,6 +108,9 @@ fn main() {
                     }
                     for w in &ws {
                         count_waits(&mut waits[1], w, q, 1.0 / worlds as f64);
+                        if in_riichi {
+                            count_waits(&mut waits[3], w, q, 1.0 / worlds as f64);
+                        }
                     }
                 }
             }
@@ -125,11 +137,12 @@ fn main() {
     for (i, w) in waits.iter().enumerate() {
         let n = w[0].max(1e-9);
         println!(
-            "{} tenpai hands: {:.1}, wait kinds {:.2}, of them honors {:.2}",
-            ["real ", "world"][i],
+            "{} tenpai hands: {:.1}, wait kinds {:.2}, of them honors {:.2}, furiten {:.1}%",
+            ["real ", "world", "real riichi ", "world riichi"][i],
             w[0],
             w[1] / n,
-            w[2] / n
+            w[2] / n,
+            100.0 * w[3] / n
         );
     }
     println!(
