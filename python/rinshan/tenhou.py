@@ -10,7 +10,11 @@ from . import _core
 from .env import split_record
 
 
-def read(path: str, observation: Union[str, Sequence[str]] = ("planes",)) -> dict:
+def read(
+    path: str,
+    observation: Union[str, Sequence[str]] = ("planes",),
+    search: Optional[str] = None,
+) -> dict:
     """Every decision of every round of the log at `path`, replayed under its rule set (`red` for
     Tenhou's logs; a log rinshan wrote for another rule set names it).
 
@@ -19,9 +23,15 @@ def read(path: str, observation: Union[str, Sequence[str]] = ("planes",)) -> dic
     the player chose, in the variant's action layout), `what` (the log's move), `legal_action_mask`
     and `observation` (the deciding seat's view, one dict of arrays per decision axis). A round
     that cannot be replayed has `error` instead of the decisions.
+
+    With `search` (`"search"`, or with its settings: `"search:rollouts=1024:seed=2"`), each round
+    also has `search_action`: at every decision, the action the look-ahead agent plays there from
+    the deciding seat's view (what it saw and drew, never the log's hidden tiles), its base agent's
+    where it does not look ahead. The same log and settings give the same actions. Raises
+    ValueError for settings it cannot read.
     """
     forms = [observation] if isinstance(observation, str) else list(observation)
-    game = _core.tenhou_read(str(path), forms)
+    game = _core.tenhou_read(str(path), forms, search)
     for r in game["rounds"]:
         if "observation" in r:
             merged = {}

@@ -5,11 +5,13 @@ use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
+use rayon::prelude::*;
 use rinshan_engine::env::Backend;
 use rinshan_engine::observe::Form;
 use rinshan_engine::win_input::{score_json, WinInput};
 use rinshan_engine::Variant;
 use rinshan_logs::tenhou;
+use rinshan_search::{Options, Search};
 
 use crate::env::{env_error, expand_bits, form_of, parse};
 
@@ -81,12 +83,45 @@ fn read_game(path: &str) -> PyResult<tenhou::log::Game> {
     rinshan_logs::read_log(std::path::Path::new(path)).map_err(|e| PyValueError::new_err(e.to_string()))
 }
 
+/// The look-ahead's action at each of a logged round's `positions`, each from the deciding seat's
+/// view (the table and the wall places it drew), in parallel. The worlds of round `round`'s
+/// decision `step` are seeded by the options' seed and both, so a read is reproducible.
+fn search_actions(
+    search: &Search,
+    variant: Variant,
+    positions: &[tenhou::position::Position],
+    round: usize,
+) -> Vec<i64> {
+    let own: Vec<Vec<Vec<u32>>> = (0..variant.seats())
+        .map(|q| tenhou::position::own_draws(variant, positions, q))
+        .collect();
+    positions
+        .par_iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let nonce = (round as u64) << 32 | p.step as u64;
+            i64::from(search.decide(&p.state, p.seat, &own[p.seat as usize][i], nonce).action)
+        })
+        .collect()
+}
+
 /// A log's rounds as decision records: per round the deciding seat, the action id, what the log
-/// says, the legal mask and each asked observation form's raw record of the deciding seat.
+/// says, the legal mask and each asked observation form's raw record of the deciding seat; with
+/// `search` (`"search:rollouts=N:..."`), the look-ahead's action at each decision too.
 #[pyfunction]
-fn tenhou_read<'py>(py: Python<'py>, path: &str, forms: Vec<String>) -> PyResult<Bound<'py, PyDict>> {
+#[pyo3(signature = (path, forms, search=None))]
+fn tenhou_read<'py>(
+    py: Python<'py>,
+    path: &str,
+    forms: Vec<String>,
+    search: Option<&str>,
+) -> PyResult<Bound<'py, PyDict>> {
     let game = read_game(path)?;
     let forms = forms.iter().map(|f| form_of(f)).collect::<PyResult<Vec<Form>>>()?;
+    let search = search
+        .map(|spec| spec.parse::<Options>().map(|o| Search::new(game.variant, o)))
+        .transpose()
+        .map_err(PyValueError::new_err)?;
     if forms.contains(&Form::Oracle) {
         return Err(PyValueError::new_err(
             "a log record holds what the deciding seat sees: the oracle is not one of its forms",
@@ -116,6 +151,10 @@ fn tenhou_read<'py>(py: Python<'py>, path: &str, forms: Vec<String>) -> PyResult
                 d.set_item("action", PyArray1::from_vec(py, action))?;
                 d.set_item("what", what)?;
                 d.set_item("legal_action_mask", PyArray1::from_vec(py, mask).reshape([n, na])?)?;
+                if let Some(search) = &search {
+                    let chosen = py.detach(|| search_actions(search, variant, &positions, r));
+                    d.set_item("search_action", PyArray1::from_vec(py, chosen))?;
+                }
                 let obs = PyDict::new(py);
                 for &form in &forms {
                     let mut raw = Vec::with_capacity(n * form.bytes());
