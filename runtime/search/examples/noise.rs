@@ -63,8 +63,8 @@ fn main() {
                     let w = deal(variant, s, seat, &p.own_draws, &mut rng);
                     let (end_a, n) = play_round(variant, w, base, Agent::Defensive);
                     let (end_b, _) = play_round(variant, w, other, Agent::Defensive);
-                    a.push(placement_value(&end_a, seat, 4));
-                    b.push(placement_value(&end_b, seat, 4));
+                    a.push(placement_value(&end_a, seat, variant));
+                    b.push(placement_value(&end_b, seat, variant));
                     round_steps += u64::from(n);
                     plays += 1;
                 }

@@ -196,7 +196,6 @@ impl Search {
             .iter()
             .filter_map(|k| actions.iter().position(|a| a == k))
             .collect();
-        let seats = self.variant.seats();
         let seed = mix(self.options.seed, nonce);
         let mut worlds: Vec<GameState> = Vec::new();
         let mut values: Vec<Vec<f64>> = vec![Vec::new(); actions.len()];
@@ -211,7 +210,7 @@ impl Search {
             let (end, steps) = play_round(self.variant, *world, actions[c], self.options.base);
             appraisal.rollouts += 1;
             appraisal.steps += u64::from(steps);
-            placement_value(&end, observer, seats)
+            placement_value(&end, observer, self.variant)
         };
         let deal_more = |worlds: &mut Vec<GameState>, n: usize| {
             let from = worlds.len();

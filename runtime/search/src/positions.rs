@@ -21,8 +21,8 @@ pub struct Position {
 
 /// Plays a half game of `variant` from `seed` (its two words: low, high) with `defensive` in every
 /// seat, showing `visit` each decision before it is played, until the game ends or `visit` returns
-/// false.
-pub fn defensive_game(variant: Variant, seed: u64, visit: &mut dyn FnMut(&Position) -> bool) {
+/// false. Returns the state then: the game's end (its ranks), or the decision `visit` stopped at.
+pub fn defensive_game(variant: Variant, seed: u64, visit: &mut dyn FnMut(&Position) -> bool) -> GameState {
     with_variant!(variant, v => {
         let mut s: GameState = variant.new_game(seed, Mode::Half);
         let seats = variant.seats();
@@ -34,7 +34,7 @@ pub fn defensive_game(variant: Variant, seed: u64, visit: &mut dyn FnMut(&Positi
             let seat = s.current;
             let position = Position { state: s, seat, own_draws: own[seat as usize].positions.clone() };
             if !visit(&position) {
-                return;
+                return s;
             }
             let a = v::seat_act(&mut { s }, Agent::Defensive.kernel());
             let before = s;
@@ -43,5 +43,6 @@ pub fn defensive_game(variant: Variant, seed: u64, visit: &mut dyn FnMut(&Positi
                 own[q as usize].update(variant, &before, &mut s.clone(), q);
             }
         }
+        s
     })
 }

@@ -105,7 +105,7 @@ fn a_win_on_the_own_draw_is_valued_by_the_scores_it_pays() {
                 .expect("tsumo is a candidate");
             let mut after = p.state;
             rinshan_engine::generated::red::game_step(&mut after, tsumo);
-            let exact = placement_value(&after, p.seat, 4);
+            let exact = placement_value(&after, p.seat, Variant::Red);
             assert!(
                 (won.mean - exact).abs() < 1e-12 && won.stderr < 1e-12,
                 "seed {seed}: {won:?} vs {exact}"
