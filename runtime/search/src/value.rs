@@ -31,7 +31,7 @@ pub fn spread(variant: Variant) -> f64 {
 /// `variant`: exact once the game is over.
 pub fn placement_value(s: &GameState, seat: u32, variant: Variant) -> f64 {
     if s.terminated != 0 {
-        return -f64::from((s.ranks >> (seat * RANK_SHIFT)) & 255);
+        return -f64::from(final_rank(s, seat));
     }
     let seats = variant.seats();
     let (left, spread) = (rounds_left(s, seats), spread(variant));
@@ -41,6 +41,11 @@ pub fn placement_value(s: &GameState, seat: u32, variant: Variant) -> f64 {
         rank += finishes_ahead(f64::from(s.scores[q as usize]) - mine, left, spread);
     }
     -rank
+}
+
+/// `seat`'s place (0 = first) at the end of the game `end`.
+fn final_rank(end: &GameState, seat: u32) -> u32 {
+    (end.ranks >> (seat * RANK_SHIFT)) & 255
 }
 
 /// The rounds still to play in the game at `s` (of `seats` players), the one about to be played
@@ -87,15 +92,15 @@ pub fn leads(variant: Variant, games: u64, seed: u64) -> Vec<Lead> {
             }
             true
         });
-        let rank = |q: u32| (end.ranks >> (q * RANK_SHIFT)) & 255;
         for s in starts.iter().skip(1) {
+            let left = rounds_left(s, seats);
             for (i, j) in (0..seats).flat_map(|i| (0..seats).map(move |j| (i, j))) {
                 let points = s.scores[i as usize] - s.scores[j as usize];
                 if points > 0 {
                     leads.push(Lead {
                         points: f64::from(points),
-                        left: rounds_left(s, seats),
-                        held: rank(i) < rank(j),
+                        left,
+                        held: final_rank(&end, i) < final_rank(&end, j),
                     });
                 }
             }
@@ -123,9 +128,12 @@ pub fn log_likelihood(leads: &[Lead], spread: f64) -> f64 {
 /// 30,000 points.
 pub fn fit(leads: &[Lead]) -> f64 {
     (10..=300)
-        .map(|k| f64::from(k) * 100.0)
-        .max_by(|&a, &b| log_likelihood(leads, a).total_cmp(&log_likelihood(leads, b)))
-        .unwrap_or(30_000.0)
+        .map(|k| {
+            let spread = f64::from(k) * 100.0;
+            (spread, log_likelihood(leads, spread))
+        })
+        .max_by(|a, b| a.1.total_cmp(&b.1))
+        .map_or(30_000.0, |(spread, _)| spread)
 }
 
 /// The standard normal distribution function (Abramowitz and Stegun 7.1.26 for erf, error under
