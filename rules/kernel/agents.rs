@@ -66,19 +66,16 @@ fn unseen_of(o: &mut ObsPlanes) -> [u32; 34] {
 // kinds rather than copies.
 fn ukeire(h: [u32; 34], unseen: [u32; 34], kinds: bool) -> u32 {
     let base: i32 = shanten_of(h);
+    // A type held four times reads SHANTEN_NOT_APPLICABLE: never an improvement.
+    let after: [i32; 34] = shanten_after_draws(h);
     let mut n: u32 = 0u32;
-    let mut x: [u32; 34] = h;
     for t in 0u32..34u32 {
-        if h[t as usize] < 4u32 && (unseen[t as usize] > 0u32 || kinds) {
-            x[t as usize] += 1u32;
-            if shanten_of(x) < base {
-                if kinds {
-                    n += 1u32;
-                } else {
-                    n += unseen[t as usize];
-                }
+        if after[t as usize] < base && (unseen[t as usize] > 0u32 || kinds) {
+            if kinds {
+                n += 1u32;
+            } else {
+                n += unseen[t as usize];
             }
-            x[t as usize] -= 1u32;
         }
     }
     n
@@ -224,17 +221,11 @@ fn choose_discard(o: &mut ObsPlanes, mask: [u32; 3], agent: u32, fold: bool) -> 
     }
     let th: u32 = threats(o);
     // Shanten after each discardable type, and the best of them.
-    let mut after: [i32; 34] = [99i32; 34];
+    let after: [i32; 34] = shanten_after_discards(hand);
     let mut best: i32 = 99i32;
     for a in 0u32..NUM_ACTIONS {
         if is_discard(a) && mask_has(mask, a) {
-            let t: u32 = discard_tile(a, drawn) & 255u32;
-            if after[t as usize] == 99i32 {
-                let mut h: [u32; 34] = hand;
-                h[t as usize] -= 1u32;
-                after[t as usize] = shanten_of(h);
-                best = best.min(after[t as usize]);
-            }
+            best = best.min(after[(discard_tile(a, drawn) & 255u32) as usize]);
         }
     }
     let mut choice: u32 = first_legal(mask);
@@ -298,12 +289,11 @@ fn pon_keeps_shanten(hand: [u32; 34], t: u32) -> bool {
     }
     let mut h: [u32; 34] = hand;
     h[t as usize] -= 2u32;
+    let after: [i32; 34] = shanten_after_discards(h);
     let mut best: i32 = 99i32;
     for d in 0u32..34u32 {
-        if h[d as usize] > 0u32 && d != t {
-            h[d as usize] -= 1u32;
-            best = best.min(shanten_of(h));
-            h[d as usize] += 1u32;
+        if d != t {
+            best = best.min(after[d as usize]);
         }
     }
     best <= shanten_of(hand)

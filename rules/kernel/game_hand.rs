@@ -58,75 +58,10 @@ pub fn meld_count(s: &mut GameState, seat: u32) -> u32 {
     byte_of(s.meld_counts, seat)
 }
 
-// Four sets and a pair, seven pairs or thirteen orphans (counts of the concealed part).
-fn hand_complete(c: [u32; 34], n_melds: u32) -> bool {
-    // Cheap tests first: most hands fail on a suit of 3k+1 tiles or a lone honor, before any
-    // table lookup.
-    let mut ok: bool = true;
-    let mut pairs: u32 = 0u32;
-    for i in 0u32..7u32 {
-        let x: u32 = c[(27u32 + i) as usize];
-        if x == 1u32 || x == 4u32 {
-            ok = false;
-        }
-        if x == 2u32 {
-            pairs += 1u32;
-        }
-    }
-    let mut totals: [u32; 3] = [0u32; 3];
-    for suit in 0u32..3u32 {
-        let mut total: u32 = 0u32;
-        for i in 0u32..9u32 {
-            total += c[(suit * 9u32 + i) as usize];
-        }
-        totals[suit as usize] = total;
-        if total % 3u32 == 1u32 {
-            ok = false;
-        }
-        if total % 3u32 == 2u32 {
-            pairs += 1u32;
-        }
-    }
-    if ok && pairs == 1u32 {
-        let mut all_sets: bool = true;
-        for suit in 0u32..3u32 {
-            if totals[suit as usize] > 0u32 && (table(T_DECOMP_INDEX + suit_code(c, suit)) & 15u32) == 0u32 {
-                all_sets = false;
-            }
-        }
-        if all_sets {
-            return true;
-        }
-    }
-    if n_melds != 0u32 {
-        return false;
-    }
-    let mut sevens: bool = true;
-    let mut orphans: bool = true;
-    let mut orphan_pair: bool = false;
-    for t in 0u32..34u32 {
-        let x: u32 = c[t as usize];
-        if x != 0u32 && x != 2u32 {
-            sevens = false;
-        }
-        if is_terminal_or_honor(t) {
-            if x == 0u32 || x > 2u32 {
-                orphans = false;
-            }
-            if x == 2u32 {
-                orphan_pair = true;
-            }
-        } else if x != 0u32 {
-            orphans = false;
-        }
-    }
-    sevens || (orphans && orphan_pair)
-}
-
 // Tile types that complete the hand, as a 34-bit set. A wait on a tile whose four copies are all
 // in the concealed hand does not count (that tile can never arrive); copies in the seat's own
 // melds do not void a wait (Tenhou: a tanki on the fourth tile of one's pon is tenpai).
-fn waits_of(c: [u32; 34], n_melds: u32) -> [u32; 2] {
+fn waits_of(c: [u32; 34]) -> [u32; 2] {
     let mut w: [u32; 2] = [0u32; 2];
     // Exact shanten (whose targets respect the four copies of a concealed tile, as this rule
     // does) says at once whether any tile can complete the hand; most hands are not tenpai,
@@ -134,14 +69,13 @@ fn waits_of(c: [u32; 34], n_melds: u32) -> [u32; 2] {
     if shanten(ShantenInput { hand: c }).shanten > 0i32 {
         return w;
     }
-    let mut h: [u32; 34] = c;
+    // A type held four times reads SHANTEN_NOT_APPLICABLE; a hand one tile completes reads -1 (in
+    // any of the three forms: the seven pairs and thirteen orphans count only for a closed hand,
+    // the only one with 13 tiles).
+    let after: [i32; 34] = shanten_after_draws(c);
     for t in 0u32..34u32 {
-        if c[t as usize] < 4u32 {
-            h[t as usize] += 1u32;
-            if hand_complete(h, n_melds) {
-                w[(t / 32u32) as usize] |= 1u32 << (t % 32u32);
-            }
-            h[t as usize] -= 1u32;
+        if after[t as usize] < 0i32 {
+            w[(t / 32u32) as usize] |= 1u32 << (t % 32u32);
         }
     }
     w
@@ -166,7 +100,7 @@ fn seat_waits(s: &mut GameState, seat: u32) -> [u32; 2] {
     if surely_not_tenpai(s, seat, 0u32) {
         return [0u32; 2];
     }
-    waits_of(hand_counts(s, seat), meld_count(s, seat))
+    waits_of(hand_counts(s, seat))
 }
 
 pub fn update_waits(s: &mut GameState, seat: u32) {
@@ -190,6 +124,6 @@ fn tenpai_after_discard(s: &mut GameState, seat: u32, t: u32) -> bool {
         return false;
     }
     c[t as usize] -= 1u32;
-    let w: [u32; 2] = waits_of(c, meld_count(s, seat));
+    let w: [u32; 2] = waits_of(c);
     (w[0] | w[1]) != 0u32
 }

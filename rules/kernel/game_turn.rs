@@ -88,13 +88,12 @@ fn riichi_possible(s: &mut GameState, p: u32) -> bool {
 
 // In riichi a closed kan is allowed only of the drawn tile and only if the waits stay the same.
 fn riichi_kan_keeps_waits(s: &mut GameState, p: u32, t: u32) -> bool {
-    let n: u32 = meld_count(s, p);
     let mut before: [u32; 34] = hand_counts(s, p);
     before[value_type(s.drawn) as usize] -= 1u32;
-    let w0: [u32; 2] = waits_of(before, n);
+    let w0: [u32; 2] = waits_of(before);
     let mut after: [u32; 34] = hand_counts(s, p);
     after[t as usize] -= 4u32;
-    let w1: [u32; 2] = waits_of(after, n + 1u32);
+    let w1: [u32; 2] = waits_of(after);
     w0[0] == w1[0] && w0[1] == w1[1] && (w0[0] | w0[1]) != 0u32
 }
 

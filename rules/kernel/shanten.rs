@@ -186,17 +186,35 @@ pub fn hand_shanten(s: &mut GameState, seat: u32) -> i32 {
 }
 
 // The shanten of `hand` with one more tile of each type, as `shanten` would compute it for each
-// (SHANTEN_NOT_APPLICABLE for a type held four times). A drawn tile changes one group's table word
-// and the kind counts only: its group is paired again with the group it shares a pair table with,
-// and the other pair's row is the hand's, so each type costs three table reads (the new group's
-// cost word, its pair word, the `missing` word) instead of a whole `shanten`: the analysis tier
-// asks this for every discard.
+// (SHANTEN_NOT_APPLICABLE for a type held four times): the analysis tier's improving tiles and the
+// agents' ukeire.
 fn shanten_after_draws(hand: [u32; 34]) -> [i32; 34] {
+    shanten_after_each(hand, true)
+}
+
+// The shanten of `hand` with one tile of each type let go, as `shanten` would compute it for each
+// (SHANTEN_NOT_APPLICABLE for a type not held): the agents' discards.
+fn shanten_after_discards(hand: [u32; 34]) -> [i32; 34] {
+    shanten_after_each(hand, false)
+}
+
+// One tile more (`adding`) or less of each type: the tile changes one group's table word and the
+// kind counts only, so its group is paired again with the group it shares a pair table with, and
+// the other pair's row is the hand's; each type costs three table reads (the new group's cost
+// word, its pair word, the `missing` word) instead of a whole `shanten`. The agents ask this for
+// every discard of every play-out.
+fn shanten_after_each(hand: [u32; 34], adding: bool) -> [i32; 34] {
     let mut tiles: u32 = 0u32;
     for t in 0u32..N_TYPES {
         tiles += hand[t as usize];
     }
-    let sets: u32 = sets_of(tiles + 1u32);
+    // The hand's tiles after the change (a discard from an empty hand changes nothing: no type is
+    // held).
+    let mut after_tiles: u32 = tiles + 1u32;
+    if !adding {
+        after_tiles = tiles.max(1u32) - 1u32;
+    }
+    let sets: u32 = sets_of(after_tiles);
     let c0: u32 = suit_code(hand, 0u32);
     let c1: u32 = suit_code(hand, 1u32);
     let c2: u32 = suit_code(hand, 2u32);
@@ -230,8 +248,13 @@ fn shanten_after_draws(hand: [u32; 34]) -> [i32; 34] {
         for i in 0u32..n {
             let t: u32 = g * 9u32 + i;
             let c: u32 = hand[t as usize];
-            if c < 4u32 {
-                let w: u32 = table(code + place);
+            if (adding && c < 4u32) || (!adding && c > 0u32) {
+                // The group's code with the tile (held when let go: no underflow).
+                let mut changed: u32 = code + place;
+                if !adding {
+                    changed = code - place;
+                }
+                let w: u32 = table(changed);
                 let mut a: u32 = p01;
                 let mut b: u32 = p23;
                 if g == 0u32 {
@@ -244,13 +267,21 @@ fn shanten_after_draws(hand: [u32; 34]) -> [i32; 34] {
                     b = suit_honor_pair(w2, w);
                 }
                 let mut best: i32 = pairs_missing(a, b, sets) - 1i32;
-                if tiles + 1u32 >= 13u32 {
-                    // The drawn tile is a new kind if none was held, a new pair if one was.
-                    let new_kind: u32 = (c == 0u32) as u32;
-                    let new_pair: u32 = (c == 1u32) as u32;
-                    best = best.min(chiitoitsu_shanten(kp[0] + new_kind, kp[1] + new_pair));
+                if after_tiles >= 13u32 {
+                    // A drawn tile is a new kind if none was held, a new pair if one was; a tile
+                    // let go loses its kind if it was the only one, its pair if there were two.
                     let orphan: u32 = is_terminal_or_honor(t) as u32;
-                    best = best.min(orphans_shanten(op[0] + orphan * new_kind, op[1] + orphan * new_pair));
+                    if adding {
+                        let new_kind: u32 = (c == 0u32) as u32;
+                        let new_pair: u32 = (c == 1u32) as u32;
+                        best = best.min(chiitoitsu_shanten(kp[0] + new_kind, kp[1] + new_pair));
+                        best = best.min(orphans_shanten(op[0] + orphan * new_kind, op[1] + orphan * new_pair));
+                    } else {
+                        let lost_kind: u32 = (c == 1u32) as u32;
+                        let lost_pair: u32 = (c == 2u32) as u32;
+                        best = best.min(chiitoitsu_shanten(kp[0] - lost_kind, kp[1] - lost_pair));
+                        best = best.min(orphans_shanten(op[0] - orphan * lost_kind, op[1] - orphan * lost_pair));
+                    }
                 }
                 out[t as usize] = best;
             }
