@@ -12,6 +12,9 @@ pub const AGENT_KINDS: u32 = 5;
 pub const PLAY_LIMIT: u32 = 20001;
 // In the argument of hero mode's next decision: this is the call's first decision.
 pub const PLAY_FIRST: u32 = 0x80000000;
+// In hero mode's argument: a play-out (the look-ahead's), whose first decision plays the caller's
+// action whoever is to move, and which ends with the round.
+pub const PLAY_ROUND: u32 = 0x01000000;
 // In the argument of game_advance: add the step's outputs to those of the decisions before it.
 pub const PLAY_ADD: u32 = 0x40000000;
 // game_advance's argument once hero mode's call is over: nothing to play.

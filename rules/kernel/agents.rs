@@ -63,9 +63,8 @@ fn unseen_of(o: &mut ObsPlanes) -> [u32; 34] {
 }
 
 // Tiles that lower the shanten of `h` (3k+1 tiles), weighted by unseen copies; `waits` counts
-// kinds rather than copies.
-fn ukeire(h: [u32; 34], unseen: [u32; 34], kinds: bool) -> u32 {
-    let base: i32 = shanten_of(h);
+// kinds rather than copies. `base` is the shanten of `h`, which every caller already holds.
+fn ukeire(h: [u32; 34], base: i32, unseen: [u32; 34], kinds: bool) -> u32 {
     // A type held four times reads SHANTEN_NOT_APPLICABLE: never an improvement.
     let after: [i32; 34] = shanten_after_draws(h);
     let mut n: u32 = 0u32;
@@ -261,7 +260,7 @@ fn choose_discard(o: &mut ObsPlanes, mask: [u32; 3], agent: u32, fold: bool) -> 
                 if after[t as usize] == 0i32 {
                     let mut h: [u32; 34] = hand;
                     h[t as usize] -= 1u32;
-                    waits = ukeire(h, unseen, true);
+                    waits = ukeire(h, 0i32, unseen, true);
                 }
                 key += (sh << 16u32) + ((63u32 - waits) << 8u32) + (rule_priority(o, t) << 2u32) + 3u32 * red;
             } else {
@@ -269,7 +268,7 @@ fn choose_discard(o: &mut ObsPlanes, mask: [u32; 3], agent: u32, fold: bool) -> 
                 if after[t as usize] == best {
                     let mut h: [u32; 34] = hand;
                     h[t as usize] -= 1u32;
-                    uk = ukeire(h, unseen, false).min(255u32);
+                    uk = ukeire(h, best, unseen, false).min(255u32);
                 }
                 key += (sh.min(15u32) << 20u32) + ((255u32 - uk) << 8u32) + keep_value(o, t, red) * 2u32 + red;
             }
@@ -387,7 +386,8 @@ pub fn agent_act(agent: u32, o: &mut ObsPlanes, mask: [u32; 3], seed: [u32; 2], 
 
 // Hero mode: the caller's action (bits 0-7; ignored when the seat to move is not the caller's)
 // then the built-in agents of bits 8.. (4 bits per seat, AGENT_CALLER = the caller's seat) play
-// until one of the caller's seats must decide or the game ends. The step's outputs add up every
+// until one of the caller's seats must decide or the game ends. With PLAY_ROUND it is a play-out:
+// the caller's action is played whoever is to move, then the agents play to the round's end. The step's outputs add up every
 // decision played (rewards summed, events and winners merged). A host that drives the GPU makes
 // the same calls as this loop, a pass of game_play_action then the step's passes, so that no
 // shader holds both the step and the agents.
@@ -407,12 +407,15 @@ pub fn game_play(s: &mut GameState, arg: u32) {
 // caller, else the agent's action with PLAY_ADD.
 fn play_action(s: &mut GameState, arg: u32) -> u32 {
     let first: bool = (arg & PLAY_FIRST) != 0u32;
+    let play_out: bool = (arg & PLAY_ROUND) != 0u32;
     let agent: u32 = (arg >> (8u32 + s.current * 4u32)) & 15u32;
     let waits: bool = agent == AGENT_CALLER || s.phase == PHASE_OVER;
-    if first && waits {
+    if first && (waits || play_out) {
         return arg & 255u32;
     }
-    if !first && (waits || s.terminated != 0u32) {
+    // The call's first decision cleared the events: any round-ending one since is this round's.
+    let round_over: bool = play_out && (s.events & EVENT_ROUND_OVER) != 0u32;
+    if !first && (waits || round_over || s.terminated != 0u32) {
         return PLAY_DONE;
     }
     seat_act(s, agent) | (PLAY_ADD * ((!first) as u32))

@@ -48,6 +48,8 @@ pub const EVENT_EXHAUSTIVE_DRAW: u32 = 4;
 pub const EVENT_ABORTIVE_DRAW: u32 = 8;
 pub const EVENT_GAME_OVER: u32 = 16;
 pub const EVENT_NAGASHI: u32 = 32;
+// Any of the events of a step that ends a round.
+pub const EVENT_ROUND_OVER: u32 = EVENT_RON | EVENT_TSUMO | EVENT_EXHAUSTIVE_DRAW | EVENT_ABORTIVE_DRAW;
 // Bits per seat in StepView.ranks.
 pub const RANK_SHIFT: u32 = 8;
 

@@ -219,6 +219,72 @@ fn hero_mode_is_identical_on_cpu_and_gpu() {
     eprintln!("hero mode: {B} east games, {steps} batch steps, identical on CPU and GPU");
 }
 
+/// The look-ahead's play-outs on both backends (`search:backend=gpu`): the worlds of positions of
+/// `defensive` self-play, every legal action played out to the round's end, give the same end
+/// states, and the look-ahead the same decisions, candidate values included.
+#[test]
+fn play_outs_and_look_ahead_decisions_are_identical_on_cpu_and_gpu() {
+    use rinshan_search::rollout::{gpu_status, play_rounds};
+    use rinshan_search::{Focus, Options, Search};
+    let Some(gpu) = rinshan_tests::gpu_or_skip("play_out_parity") else {
+        return;
+    };
+    if !rinshan_tests::agent_gpu_tests_run(&gpu, "play_out_parity") {
+        return;
+    }
+    // The look-ahead opens its own device, shared by every look-ahead of the process.
+    drop(gpu);
+    let variant = Variant::Red;
+    let mut rng = Rng::new(0x5eac);
+    let (mut positions, mut k) = (Vec::new(), 0);
+    rinshan_search::positions::defensive_game(variant, 41, &mut |p| {
+        k += 1;
+        if k % 9 == 0 && p.state.mask.iter().map(|w| w.count_ones()).sum::<u32>() >= 2 {
+            positions.push(p.clone());
+        }
+        true
+    });
+    assert!(positions.len() >= 20, "{} positions", positions.len());
+    let mut plays = Vec::new();
+    for p in &positions {
+        let world = rinshan_search::world::deal(variant, &p.state, p.seat, &p.own_draws, &mut rng);
+        let legal = (0..96u32).filter(|&a| world.mask[a as usize / 32] >> (a % 32) & 1 == 1);
+        plays.extend(legal.map(|a| (world, a)));
+    }
+    let cpu = play_rounds(variant, &plays, Agent::Defensive, Backend::Cpu);
+    let gpu = play_rounds(variant, &plays, Agent::Defensive, Backend::Gpu);
+    assert_eq!(gpu_status(), Some(Ok(())), "the play-outs ran on the GPU");
+    for (i, (c, g)) in cpu.iter().zip(&gpu).enumerate() {
+        assert!(
+            bytemuck::bytes_of(&c.0) == bytemuck::bytes_of(&g.0) && c.1 == g.1,
+            "play-out {i} (action {}) ends otherwise on the GPU",
+            plays[i].1
+        );
+    }
+    let options = Options {
+        rollouts: 48,
+        focus: Focus::All,
+        ..Options::default()
+    };
+    let on_cpu = Search::new(variant, options);
+    let on_gpu = Search::new(
+        variant,
+        Options {
+            backend: Backend::Gpu,
+            ..options
+        },
+    );
+    for (i, p) in positions.iter().enumerate().step_by(4) {
+        let c = on_cpu.decide(&p.state, p.seat, &p.own_draws, i as u64);
+        assert_eq!(
+            c,
+            on_gpu.decide(&p.state, p.seat, &p.own_draws, i as u64),
+            "decision {i}"
+        );
+    }
+    eprintln!("play-outs: {} on both backends, identical", plays.len());
+}
+
 /// Any id outside the layout is an illegal action on both backends, whatever its high bits: the
 /// GPU's step entry reads hero mode's flags (`PLAY_ADD`, `PLAY_DONE`) from them.
 #[test]

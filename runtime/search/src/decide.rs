@@ -12,12 +12,13 @@
 use std::time::Instant;
 
 use rinshan_engine::agents::Agent;
+use rinshan_engine::env::Backend;
 use rinshan_engine::generated::kernel::{GameState, SEAT_RIICHI};
 use rinshan_engine::random::Rng;
 use rinshan_engine::{with_variant, Variant};
 
 use crate::options::{Focus, Options};
-use crate::rollout::play_round;
+use crate::rollout::play_rounds;
 use crate::value::placement_value;
 use crate::world::deal;
 
@@ -206,11 +207,18 @@ impl Search {
         // curse): only worlds that played no part in choosing it judge it fairly.
         let selection = self.options.rollouts as usize / 2;
         let per_halving = selection / halvings as usize;
-        let play = |c: usize, world: &GameState, appraisal: &mut Appraisal| {
-            let (end, steps) = play_round(self.variant, *world, actions[c], self.options.base);
-            appraisal.rollouts += 1;
-            appraisal.steps += u64::from(steps);
-            placement_value(&end, observer, self.variant)
+        // On the CPU, a candidate's worlds (a duel's world) at a time, so that a time cap stops
+        // between them; on the GPU, all of a halving's (the duel's) at once.
+        let gpu = self.options.backend == Backend::Gpu;
+        let play = |plays: &[(GameState, u32)], appraisal: &mut Appraisal| -> Vec<f64> {
+            let ends = play_rounds(self.variant, plays, self.options.base, self.options.backend);
+            appraisal.rollouts += ends.len() as u32;
+            ends.iter()
+                .map(|(end, steps)| {
+                    appraisal.steps += u64::from(*steps);
+                    placement_value(end, observer, self.variant)
+                })
+                .collect()
         };
         let deal_more = |worlds: &mut Vec<GameState>, n: usize| {
             let from = worlds.len();
@@ -223,10 +231,20 @@ impl Search {
         let mut timed_out = false;
         for halving in 1..=halvings {
             let from = deal_more(&mut worlds, (per_halving / alive.len()).max(1));
-            for &c in &alive {
-                for world in &worlds[from..] {
-                    let v = play(c, world, &mut appraisal);
-                    values[c].push(v);
+            let fresh = &worlds[from..];
+            let groups: Vec<&[usize]> = match gpu {
+                true => vec![&alive[..]],
+                false => alive.chunks(1).collect(),
+            };
+            for group in groups {
+                let plays: Vec<(GameState, u32)> = group
+                    .iter()
+                    .flat_map(|&c| fresh.iter().map(move |w| (*w, c)))
+                    .map(|(w, c)| (w, actions[c]))
+                    .collect();
+                let v = play(&plays, &mut appraisal);
+                for (&c, vs) in group.iter().zip(v.chunks(fresh.len())) {
+                    values[c].extend_from_slice(vs);
                 }
                 if out_of_time() {
                     timed_out = true;
@@ -262,12 +280,16 @@ impl Search {
             if !timed_out && alive.contains(&b) {
                 let duel = (self.options.rollouts as usize - selection) / 2;
                 let from = deal_more(&mut worlds, duel.max(2));
+                let fresh = &worlds[from..];
                 let mut gains = Vec::new();
-                for world in &worlds[from..] {
-                    let (vc, vb) = (play(c, world, &mut appraisal), play(b, world, &mut appraisal));
-                    values[c].push(vc);
-                    values[b].push(vb);
-                    gains.push(vc - vb);
+                for ws in fresh.chunks(if gpu { fresh.len() } else { 1 }) {
+                    let plays: Vec<(GameState, u32)> =
+                        ws.iter().flat_map(|w| [(*w, actions[c]), (*w, actions[b])]).collect();
+                    for pair in play(&plays, &mut appraisal).chunks(2) {
+                        values[c].push(pair[0]);
+                        values[b].push(pair[1]);
+                        gains.push(pair[0] - pair[1]);
+                    }
                     if out_of_time() {
                         break;
                     }

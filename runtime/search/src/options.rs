@@ -2,6 +2,7 @@
 //! (colons, as commas separate the seats of `--agents`).
 
 use rinshan_engine::agents::Agent;
+use rinshan_engine::env::Backend;
 
 /// How the look-ahead spends its budget.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -22,6 +23,10 @@ pub struct Options {
     pub seed: u64,
     /// Which own-turn decisions are looked ahead at.
     pub focus: Focus,
+    /// Where the play-outs run: each round of the budget's halving, and the duel, is one batch,
+    /// played one world after another on the CPU or all at once on the GPU (the same decisions:
+    /// the same kernel plays them). Without a GPU they run on the CPU, with a warning.
+    pub backend: Backend,
 }
 
 /// Which decisions the look-ahead plays out.
@@ -44,6 +49,7 @@ impl Default for Options {
             margin: 2.0,
             seed: 0,
             focus: Focus::Threats,
+            backend: Backend::Cpu,
         }
     }
 }
@@ -71,6 +77,9 @@ impl Options {
         if self.focus != d.focus {
             parts.push(format!("focus={}", ["all", "threats"][self.focus as usize]));
         }
+        if self.backend != d.backend {
+            parts.push(format!("backend={}", self.backend.name()));
+        }
         match parts.is_empty() {
             true => "search".into(),
             false => format!("search:{}", parts.join(":")),
@@ -82,7 +91,7 @@ impl std::str::FromStr for Options {
     type Err = String;
 
     /// `search` or `search:KEY=VALUE:...` with keys `rollouts`, `ms`, `base`, `margin`, `seed`,
-    /// `focus`.
+    /// `focus`, `backend`.
     fn from_str(s: &str) -> Result<Options, String> {
         let rest = match s.strip_prefix("search") {
             Some("") => return Ok(Options::default()),
@@ -119,9 +128,10 @@ impl std::str::FromStr for Options {
                         _ => return Err(bad(&"all or threats")),
                     }
                 }
+                "backend" => o.backend = value.parse().map_err(|e| bad(&e))?,
                 _ => {
                     return Err(format!(
-                        "unknown search option `{key}` (rollouts, ms, base, margin, seed, focus)"
+                        "unknown search option `{key}` (rollouts, ms, base, margin, seed, focus, backend)"
                     ))
                 }
             }
@@ -142,7 +152,7 @@ mod tests {
         for text in [
             "search",
             "search:rollouts=64",
-            "search:rollouts=8:ms=50:base=rule:margin=0.5:seed=3:focus=all",
+            "search:rollouts=8:ms=50:base=rule:margin=0.5:seed=3:focus=all:backend=gpu",
         ] {
             let o: Options = text.parse().unwrap();
             assert_eq!(o.name(), text);
@@ -158,6 +168,7 @@ mod tests {
             ("search:base=alpha", "base=alpha"),
             ("search:rollouts=0", "needs a budget"),
             ("search:margin=NaN", "finite"),
+            ("search:backend=tpu", "backend=tpu"),
             ("searching", "write search"),
             ("rule", "not the look-ahead"),
         ] {

@@ -4,8 +4,8 @@
 
 use rinshan_engine::agents::Agent;
 use rinshan_engine::arena::{self, Arena, Player};
-use rinshan_engine::env::Mode;
-use rinshan_engine::generated::kernel::SEAT_RIICHI;
+use rinshan_engine::env::{Backend, Mode};
+use rinshan_engine::generated::kernel::{GameState, SEAT_RIICHI};
 use rinshan_engine::observe::resample_hidden;
 use rinshan_engine::random::Rng;
 use rinshan_engine::Variant;
@@ -22,6 +22,7 @@ const ALL: Options = Options {
     margin: 2.0,
     seed: 0,
     focus: Focus::All,
+    backend: Backend::Cpu,
 };
 
 /// Every `every`-th position of a half game of `defensive` agents from `seed` where the look-ahead
@@ -284,4 +285,51 @@ fn a_seat_in_riichi_is_tenpai_and_not_furiten_in_its_worlds() {
         f64::from(furiten) <= 0.03 * f64::from(worlds),
         "furiten in {furiten} of {worlds}"
     );
+}
+
+/// A play-out is one kernel call of hero mode (`PLAY_ROUND`), the same on the CPU and the GPU. The
+/// oracle: the first action, then the agent's action for whoever is to move, one step at a time,
+/// until the count of rounds played moves or the game ends; the same end state, bit for bit,
+/// after every legal action of many positions of both four and three players.
+#[test]
+fn a_play_out_ends_where_stepping_to_the_rounds_end_does() {
+    for (variant, seed) in [(Variant::Red, 31), (Variant::Sanma, 32)] {
+        let found = positions(variant, seed, 6);
+        assert!(found.len() >= 20, "{variant}: {} positions", found.len());
+        let mut rng = Rng::new(seed);
+        let (mut plays, mut rounds_ended) = (0, 0);
+        for p in &found {
+            let world = deal(variant, &p.state, p.seat, &p.own_draws, &mut rng);
+            for a in (0..96).filter(|&a| world.mask[a / 32] >> (a % 32) & 1 == 1) {
+                let (end, steps) = rinshan_search::rollout::play_round(variant, world, a as u32, Agent::Defensive);
+                let mut s = world;
+                let mut stepped = 0;
+                rinshan_engine::with_variant!(variant, v => {
+                    v::game_step(&mut s, a as u32);
+                    stepped += 1;
+                    while s.rounds == world.rounds && s.terminated == 0 {
+                        let b = v::seat_act(&mut { s }, Agent::Defensive.kernel());
+                        v::game_step(&mut s, b);
+                        stepped += 1;
+                    }
+                });
+                // A play-out's step outputs add up over its decisions; a step's are its own.
+                let outputs_cleared = |mut x: GameState| {
+                    (x.rewards, x.events, x.winners, x.deal_in, x.yaku) = ([0; 4], 0, 0, 0, [0; 2]);
+                    x
+                };
+                assert!(
+                    bytemuck::bytes_of(&outputs_cleared(s)) == bytemuck::bytes_of(&outputs_cleared(end)),
+                    "{variant}: the state after action {a}"
+                );
+                assert_eq!(steps, stepped, "{variant}: steps counted after action {a}");
+                plays += 1;
+                rounds_ended += u32::from(end.rounds > world.rounds);
+            }
+        }
+        assert!(
+            rounds_ended * 10 > plays * 9,
+            "{variant}: {rounds_ended} of {plays} rounds ended"
+        );
+    }
 }

@@ -66,6 +66,27 @@ pub(crate) fn check_wall(variant: Variant, wall: &[Tile; 136]) -> Result<(), Str
     Ok(())
 }
 
+/// One step of every env (`play`: hero mode, `actions` are its arguments), its view in `step`.
+fn advance(
+    backing: &mut Backing,
+    step: &mut Step,
+    variant: Variant,
+    actions: &[u32],
+    play: bool,
+) -> Result<(), EnvError> {
+    match backing {
+        Backing::Cpu(cpu) => {
+            cpu.step(variant, actions, play);
+            step.fill(&cpu.views);
+        }
+        Backing::Gpu(gpu) => {
+            let views = gpu.step(actions, play)?;
+            step.fill(views);
+        }
+    }
+    Ok(())
+}
+
 pub(super) enum Backing {
     Cpu(CpuEnv),
     Gpu(Box<GpuEnv>),
@@ -308,16 +329,35 @@ impl Env {
             }
         }
         let actions = if play { &self.play_args[..] } else { actions };
-        match &mut self.backing {
-            Backing::Cpu(cpu) => {
-                cpu.step(variant, actions, play);
-                self.step.fill(&cpu.views);
-            }
-            Backing::Gpu(gpu) => {
-                let views = gpu.step(actions, play)?;
-                self.step.fill(views);
-            }
+        advance(&mut self.backing, &mut self.step, variant, actions, play)?;
+        self.write_observations()?;
+        Ok(&self.step)
+    }
+
+    /// Play-outs (the look-ahead's): in every env, `firsts[i]` is played whoever is to move, then
+    /// the built-in agents of `seatings` (one per env, or one for all) play every seat until the
+    /// round ends or the game does. One call of hero mode, on either backend; `rewards` and
+    /// `events` add up every decision played. An illegal first action ends that game with the
+    /// penalty, as in [`Env::step`].
+    pub fn play_rounds(&mut self, firsts: &[u32], seatings: &[[crate::agents::Agent; 4]]) -> Result<&Step, EnvError> {
+        self.check_len("first actions", firsts.len())?;
+        if seatings.len() != 1 && seatings.len() != self.batch() {
+            return Err(EnvError::WrongLength {
+                what: "agent seatings",
+                expected: self.batch(),
+                got: seatings.len(),
+            });
         }
+        let args: Vec<u32> = firsts
+            .iter()
+            .enumerate()
+            .map(|(i, &a)| {
+                let seats = seatings[if seatings.len() == 1 { 0 } else { i }].map(Some);
+                a.min(255) | crate::agents::seats_word(&seats) << 8 | kernel::PLAY_ROUND
+            })
+            .collect();
+        let variant = self.variant();
+        advance(&mut self.backing, &mut self.step, variant, &args, true)?;
         self.write_observations()?;
         Ok(&self.step)
     }

@@ -89,9 +89,24 @@ impl Env {
             }
             states.extend_from_slice(s);
         }
+        self.install(&states)
+    }
+
+    /// Replaces every env's game by `states` (one per env), as [`Env::load_states`] does without
+    /// the check pair: for Rust callers holding states made by this build's kernels (the
+    /// look-ahead's worlds), whose layout the type already guarantees. Only the variant is the
+    /// caller's to get right.
+    pub fn load_game_states(&mut self, states: &[kernel::GameState]) -> Result<&Step, EnvError> {
+        self.check_len("game states", states.len())?;
+        let words: Vec<u32> = bytemuck::cast_slice(states).to_vec();
+        self.install(&words)
+    }
+
+    fn install(&mut self, states: &[u32]) -> Result<&Step, EnvError> {
+        let variant = self.variant();
         match &mut self.backing {
             Backing::Cpu(cpu) => {
-                cpu.states.copy_from_slice(&states);
+                cpu.states.copy_from_slice(states);
                 with_variant!(variant, v => {
                     let sts: &[kernel::GameState] = bytemuck::cast_slice(&cpu.states);
                     let vws: &mut [kernel::StepView] = bytemuck::cast_slice_mut(&mut cpu.views);
@@ -102,7 +117,7 @@ impl Env {
                 self.step.fill(&cpu.views);
             }
             Backing::Gpu(gpu) => {
-                let views = gpu.load(&states)?;
+                let views = gpu.load(states)?;
                 self.step.fill(views);
             }
         }

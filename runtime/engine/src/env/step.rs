@@ -55,7 +55,7 @@ pub mod events {
     /// Nagashi mangan was paid at an exhaustive draw.
     pub const NAGASHI: u32 = k::EVENT_NAGASHI;
     /// Any of the bits of a step that ends a round.
-    pub const ROUND_OVER: u32 = RON | TSUMO | EXHAUSTIVE_DRAW | ABORTIVE_DRAW;
+    pub const ROUND_OVER: u32 = k::EVENT_ROUND_OVER;
 }
 
 impl Step {
