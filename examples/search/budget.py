@@ -21,6 +21,7 @@ import subprocess
 import sys
 
 import matplotlib
+import matplotlib.ticker
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -99,6 +100,8 @@ def plot(points: list[dict], args: argparse.Namespace) -> None:
     even = 2.0 if "sanma" in args.variant else 2.5
     strength.axhline(even, color="grey", linestyle="--", linewidth=1, label=f"even ({even})")
     strength.set_xscale("log")
+    # Over a decade or two, matplotlib labels the minor ticks too, and they run together.
+    strength.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
     strength.set_xlabel("ms per decision, mean over all decisions (one core each)")
     strength.set_ylabel("average rank (95% CI over wall sets)")
     strength.set_title(f"strength against budget ({args.variant}, {args.mode}; labels: play-outs)")
