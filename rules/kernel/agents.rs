@@ -387,10 +387,10 @@ pub fn agent_act(agent: u32, o: &mut ObsPlanes, mask: [u32; 3], seed: [u32; 2], 
 // Hero mode: the caller's action (bits 0-7; ignored when the seat to move is not the caller's)
 // then the built-in agents of bits 8.. (4 bits per seat, AGENT_CALLER = the caller's seat) play
 // until one of the caller's seats must decide or the game ends. With PLAY_ROUND it is a play-out:
-// the caller's action is played whoever is to move, then the agents play to the round's end. The step's outputs add up every
-// decision played (rewards summed, events and winners merged). A host that drives the GPU makes
-// the same calls as this loop, a pass of game_play_action then the step's passes, so that no
-// shader holds both the step and the agents.
+// the caller's action is played whoever is to move, then the agents play to the round's end. The
+// step's outputs add up every decision played (rewards summed, events and winners merged). A host
+// that drives the GPU makes the same calls as this loop, a pass of game_play_action then the
+// step's passes, so that no shader holds both the step and the agents.
 pub fn game_play(s: &mut GameState, arg: u32) {
     for i in 0u32..PLAY_LIMIT {
         let a: u32 = play_action(s, arg | (PLAY_FIRST * ((i == 0u32) as u32)));
@@ -402,9 +402,10 @@ pub fn game_play(s: &mut GameState, arg: u32) {
 }
 
 // Hero mode's next decision, as game_advance's argument: on the call's first decision (PLAY_FIRST)
-// the caller's action if its seat is to move (or the game is over, which stays over), else the
-// built-in agent's; on later decisions PLAY_DONE once the game ended, is over or waits for the
-// caller, else the agent's action with PLAY_ADD.
+// the caller's action if its seat is to move (or the game is over, which stays over, or the call
+// is a play-out), else the built-in agent's; on later decisions PLAY_DONE once the game ended, is
+// over or waits for the caller (or, in a play-out, the round ended), else the agent's action with
+// PLAY_ADD.
 fn play_action(s: &mut GameState, arg: u32) -> u32 {
     let first: bool = (arg & PLAY_FIRST) != 0u32;
     let play_out: bool = (arg & PLAY_ROUND) != 0u32;
