@@ -209,6 +209,33 @@ fn bad_input_is_a_typed_error() {
         env.reset_with_seeds(&[1, 2]),
         Err(EnvError::WrongLength { what: "seeds", .. })
     ));
+    // The look-ahead's play-outs: one first action per env, one seating per env or one for all,
+    // one state per env; a wrong count changes nothing.
+    let before = env.states_words().expect("states");
+    let defensive = [rinshan_engine::agents::Agent::Defensive; 4];
+    assert!(matches!(
+        env.play_rounds(&[0; 3], &[defensive]),
+        Err(EnvError::WrongLength {
+            what: "first actions",
+            ..
+        })
+    ));
+    assert!(matches!(
+        env.play_rounds(&[0; 4], &[defensive; 2]),
+        Err(EnvError::WrongLength {
+            what: "agent seatings",
+            ..
+        })
+    ));
+    let states = env.game_states().expect("states");
+    assert!(matches!(
+        env.load_game_states(&states[..3]),
+        Err(EnvError::WrongLength {
+            what: "game states",
+            ..
+        })
+    ));
+    assert_eq!(env.states_words().expect("states"), before);
 
     let good = sorted_wall(true);
     let mut five_copies = good;
