@@ -52,6 +52,12 @@ pub fn agent_gpu_tests_run(gpu: &rinshan_engine::gpu::Gpu, test: &str) -> bool {
     false
 }
 
+/// The GPU backend for a test of the agents' pipelines: `None` (with a note) where
+/// [`gpu_or_skip`] finds no adapter or [`agent_gpu_tests_run`] says they do not run here.
+pub fn agent_gpu_or_skip(test: &str) -> Option<rinshan_engine::gpu::Gpu> {
+    gpu_or_skip(test).filter(|gpu| agent_gpu_tests_run(gpu, test))
+}
+
 /// The major version in a driver line such as `Mesa 25.0.7-2~bpo12+1 (LLVM 15.0.6)`.
 fn mesa_major(driver: &str) -> Option<u32> {
     let rest = &driver[driver.find("Mesa ")? + "Mesa ".len()..];

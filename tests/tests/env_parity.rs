@@ -172,12 +172,9 @@ fn mjsoul_sanma_half_games_are_identical_on_cpu_and_gpu() {
 /// Hero mode on both backends: the caller plays one seat at random, the three agents the others.
 #[test]
 fn hero_mode_is_identical_on_cpu_and_gpu() {
-    let Some(gpu) = rinshan_tests::gpu_or_skip("hero_mode_parity") else {
+    let Some(gpu) = rinshan_tests::agent_gpu_or_skip("hero_mode_parity") else {
         return;
     };
-    if !rinshan_tests::agent_gpu_tests_run(&gpu, "hero_mode_parity") {
-        return;
-    }
     const B: usize = 64;
     let seatings: Vec<[Option<Agent>; 4]> = (0..B)
         .map(|i| {
@@ -226,12 +223,9 @@ fn hero_mode_is_identical_on_cpu_and_gpu() {
 fn play_outs_and_look_ahead_decisions_are_identical_on_cpu_and_gpu() {
     use rinshan_search::rollout::{gpu_status, play_rounds};
     use rinshan_search::{Focus, Options, Search};
-    let Some(gpu) = rinshan_tests::gpu_or_skip("play_out_parity") else {
+    let Some(gpu) = rinshan_tests::agent_gpu_or_skip("play_out_parity") else {
         return;
     };
-    if !rinshan_tests::agent_gpu_tests_run(&gpu, "play_out_parity") {
-        return;
-    }
     // The look-ahead opens its own device, shared by every look-ahead of the process.
     drop(gpu);
     let variant = Variant::Red;

@@ -76,3 +76,9 @@ pub fn seats_word(seats: &[Option<Agent>; 4]) -> u32 {
         .map(|(p, a)| a.map_or(k::AGENT_CALLER, Agent::kernel) << (4 * p))
         .fold(0, |w, x| w | x)
 }
+
+/// Hero mode's argument (the kernel's `game_play`): the caller's action in the low byte (an id
+/// that high is illegal, and stays so), `seats` ([`seats_word`]) above it.
+pub fn hero_arg(action: u32, seats: u32) -> u32 {
+    action.min(255) | seats << 8
+}

@@ -5,7 +5,7 @@
 
 use std::sync::{Mutex, OnceLock};
 
-use rinshan_engine::agents::{seats_word, Agent};
+use rinshan_engine::agents::{hero_arg, seats_word, Agent};
 use rinshan_engine::env::{Backend, Config, Env, EnvError};
 use rinshan_engine::generated::kernel::{GameState, PLAY_ROUND};
 use rinshan_engine::{with_variant, Variant};
@@ -13,7 +13,7 @@ use rinshan_engine::{with_variant, Variant};
 /// Plays `first` in `world`, then `agent` for every seat, until the round ends (the next one is
 /// dealt, or the game is over). Returns the state then and the steps played.
 pub fn play_round(variant: Variant, mut world: GameState, first: u32, agent: Agent) -> (GameState, u32) {
-    let arg = first.min(255) | seats_word(&[Some(agent); 4]) << 8 | PLAY_ROUND;
+    let arg = hero_arg(first, seats_word(&[Some(agent); 4])) | PLAY_ROUND;
     let before = world.steps;
     with_variant!(variant, v => v::game_play(&mut world, arg));
     (world, world.steps.wrapping_sub(before))

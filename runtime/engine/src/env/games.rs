@@ -322,10 +322,9 @@ impl Env {
         let variant = self.variant();
         let play = !self.config.agents.is_empty();
         if play {
-            // The kernel's hero-mode argument: the action in the low byte, the seating above.
             for (i, (arg, &a)) in self.play_args.iter_mut().zip(actions).enumerate() {
                 let seats = &self.config.agents[if self.config.agents.len() == 1 { 0 } else { i }];
-                *arg = a.min(255) | (crate::agents::seats_word(seats) << 8);
+                *arg = crate::agents::hero_arg(a, crate::agents::seats_word(seats));
             }
         }
         let actions = if play { &self.play_args[..] } else { actions };
@@ -341,20 +340,10 @@ impl Env {
     /// penalty, as in [`Env::step`].
     pub fn play_rounds(&mut self, firsts: &[u32], seatings: &[[crate::agents::Agent; 4]]) -> Result<&Step, EnvError> {
         self.check_len("first actions", firsts.len())?;
-        if seatings.len() != 1 && seatings.len() != self.batch() {
-            return Err(EnvError::WrongLength {
-                what: "agent seatings",
-                expected: self.batch(),
-                got: seatings.len(),
-            });
-        }
         let args: Vec<u32> = firsts
             .iter()
-            .enumerate()
-            .map(|(i, &a)| {
-                let seats = seatings[if seatings.len() == 1 { 0 } else { i }].map(Some);
-                a.min(255) | crate::agents::seats_word(&seats) << 8 | kernel::PLAY_ROUND
-            })
+            .zip(self.seats_words(seatings)?)
+            .map(|(&a, seats)| crate::agents::hero_arg(a, seats) | kernel::PLAY_ROUND)
             .collect();
         let variant = self.variant();
         advance(&mut self.backing, &mut self.step, variant, &args, true)?;
@@ -378,6 +367,22 @@ impl Env {
         Ok(words
             .chunks_exact(self.state_words())
             .map(|w| bytemuck::pod_read_unaligned(bytemuck::cast_slice(w)))
+            .collect())
+    }
+
+    /// The kernel's [`crate::agents::seats_word`] of every env from `seatings`: one per env, or
+    /// one for all.
+    pub(super) fn seats_words(&self, seatings: &[[crate::agents::Agent; 4]]) -> Result<Vec<u32>, EnvError> {
+        let b = self.batch();
+        if seatings.len() != 1 && seatings.len() != b {
+            return Err(EnvError::WrongLength {
+                what: "agent seatings",
+                expected: b,
+                got: seatings.len(),
+            });
+        }
+        Ok((0..b)
+            .map(|i| crate::agents::seats_word(&seatings[if seatings.len() == 1 { 0 } else { i }].map(Some)))
             .collect())
     }
 

@@ -136,16 +136,7 @@ impl Env {
     /// keep per-step statistics (self-play with agents). Computed in the kernel on either backend.
     pub fn agent_actions(&mut self, seatings: &[[crate::agents::Agent; 4]]) -> Result<Vec<u32>, EnvError> {
         let b = self.batch();
-        if seatings.len() != 1 && seatings.len() != b {
-            return Err(EnvError::WrongLength {
-                what: "agent seatings",
-                expected: b,
-                got: seatings.len(),
-            });
-        }
-        let args: Vec<u32> = (0..b)
-            .map(|i| crate::agents::seats_word(&seatings[if seatings.len() == 1 { 0 } else { i }].map(Some)))
-            .collect();
+        let args = self.seats_words(seatings)?;
         let variant = self.variant();
         match &mut self.backing {
             Backing::Cpu(cpu) => {
