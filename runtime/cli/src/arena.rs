@@ -21,7 +21,8 @@ pub struct Args {
     /// The seats' agents, comma-separated, one per seat: random, rule, greedy, defensive, the
     /// look-ahead `search` (or `search:rollouts=N:ms=M:base=AGENT:margin=Z:seed=S:backend=gpu`:
     /// play-outs per decision, a time cap, the agent of the play-outs, how sure it must be to
-    /// differ from it, where the play-outs run), or `mjai:COMMAND`, an MJAI bot run as `sh -c "COMMAND SEAT"` over its stdin and stdout
+    /// differ from it, where the play-outs run), or `mjai:COMMAND`, an MJAI bot run as
+    /// `sh -c "COMMAND SEAT"` over its stdin and stdout
     /// [default: defensive,greedy,rule,random; three players: defensive,greedy,rule]
     #[arg(long, value_delimiter = ',')]
     agents: Option<Vec<SeatArg>>,
