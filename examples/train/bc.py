@@ -15,7 +15,7 @@ import time
 import numpy as np
 import torch
 from collect import Rows
-from common import CANONICAL, Log, Net, Space, load_config, save, seed_everything, set_threads
+from common import Log, load_config, new_net, save, seed_everything, set_threads
 
 # Validation rows at most (a tenth of the rows up to this), and rows the scalars' mean and spread
 # are taken from: enough for both, and a dataset of millions of rows is not read whole for them.
@@ -39,13 +39,7 @@ def train_bc(cfg: dict, seed: int, data: pathlib.Path, out: pathlib.Path) -> dic
     order = np.random.default_rng(seed).permutation(n)
     n_val = max(1, min(n // 10, VALIDATION_ROWS))
     val, train = np.sort(order[:n_val]), order[n_val:]
-    net = Net(
-        Space(CANONICAL).size,
-        int(c["hidden"]),
-        int(c["layers"]),
-        analysis,
-        tile_head=bool(c.get("tile_head", False)),
-    )
+    net = new_net(cfg)
     want = (net.row_scale.shape[0], net.config["num_actions"])
     if d.shape != want:
         raise SystemExit(

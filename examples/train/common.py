@@ -5,6 +5,7 @@ A config is one TOML file (configs/*.toml); every stage reads its own table and 
 
 from __future__ import annotations
 
+import contextlib
 import json
 import pathlib
 import random
@@ -15,6 +16,7 @@ import numpy as np
 import tomllib
 import torch
 from torch import nn
+from torch.nn import functional as F
 
 import rinshan
 
@@ -110,6 +112,7 @@ class Net(nn.Module):
         analysis=False,
         extra: int = 0,
         tile_head: bool = False,
+        tile_hidden: int = 64,
     ):
         super().__init__()
         blocks: list[nn.Module] = []
@@ -129,7 +132,7 @@ class Net(nn.Module):
         if tile_head:
             self.tile_context = nn.Linear(hidden, 32)
             self.tile_head = nn.Sequential(
-                nn.Linear(len(scale) + 32, 64), nn.ReLU(), nn.Linear(64, 1)
+                nn.Linear(len(scale) + 32, tile_hidden), nn.ReLU(), nn.Linear(tile_hidden, 1)
             )
             cols = torch.from_numpy(Space(CANONICAL).discard_columns())
             self.register_buffer("discard_column", cols.clamp(min=0))
@@ -141,24 +144,49 @@ class Net(nn.Module):
             "analysis": analysis,
             "extra": extra,
             "tile_head": tile_head,
+            "tile_hidden": tile_hidden,
         }
 
-    def features(self, planes, scalars, extra=None) -> torch.Tensor:
-        p = (planes.float() * self.row_scale).reshape(planes.shape[0], -1)
+    def features(self, planes, scalars, extra=None, scaled=None) -> torch.Tensor:
+        """The torso's output; `scaled` is `planes` already scaled by row (the forward pass
+        needs them twice)."""
+        if scaled is None:
+            scaled = planes.float() * self.row_scale
         s = (scalars.float() - self.scalar_mean) / self.scalar_std
-        return self.torso(torch.cat([p, s] + ([] if extra is None else [extra]), dim=1))
+        flat = scaled.reshape(planes.shape[0], -1)
+        return self.torso(torch.cat([flat, s] + ([] if extra is None else [extra]), dim=1))
 
     def forward(self, planes, scalars, mask) -> torch.Tensor:
-        g = self.features(planes, scalars)
+        x = planes.float() * self.row_scale
+        g = self.features(planes, scalars, scaled=x)
         logits = self.head(g)
         if self.tile_head is not None:
-            columns = (planes.float() * self.row_scale).transpose(1, 2)
-            context = self.tile_context(g)[:, None, :].expand(-1, PLANES[1], -1)
-            per_tile = self.tile_head(torch.cat([columns, context], dim=2)).squeeze(2)
+            # The tile head's first layer reads a tile's column and the position's context
+            # side by side: its context half is the same for all 34 tiles, so it is computed once
+            # per position and added to each column's half (the same function as the layer over
+            # their concatenation, a third fewer multiplications, no 34 copies of the context).
+            first, second = self.tile_head[0], self.tile_head[2]
+            r = x.shape[1]
+            context = F.linear(self.tile_context(g), first.weight[:, r:], first.bias)
+            hidden = torch.relu(torch.matmul(first.weight[:, :r], x) + context[:, :, None])
+            per_tile = torch.matmul(second.weight, hidden).squeeze(1) + second.bias
             drawn = planes[:, DRAWN_ROW].argmax(dim=1, keepdim=True)
             per_tile = torch.cat([per_tile, per_tile.gather(1, drawn)], dim=1)
             logits = logits + per_tile[:, self.discard_column] * self.is_discard
         return logits.masked_fill(~mask, MASKED)
+
+
+def new_net(cfg: dict) -> Net:
+    """An untrained policy net of the config's `[bc]` shape."""
+    c = cfg["bc"]
+    return Net(
+        Space(CANONICAL).size,
+        int(c["hidden"]),
+        int(c["layers"]),
+        bool(cfg["run"].get("analysis", False)),
+        tile_head=bool(c.get("tile_head", False)),
+        tile_hidden=int(c.get("tile_hidden", 64)),
+    )
 
 
 # What an oracle critic reads of the hidden state, from the learner's seat: the others' hands and
@@ -255,6 +283,28 @@ def entropy_and_kl(logp: torch.Tensor, ref_logp: torch.Tensor, mask: torch.Tenso
     ent = -torch.where(mask, p * logp, zero).sum(1)
     kl = torch.where(mask, p * (logp - ref_logp), zero).sum(1)
     return ent, kl
+
+
+class Split:
+    """Wall seconds per part of the training loop, to show where a step's time goes: the env's
+    step (observations included), turning them into tensors, the critic's oracle, the nets'
+    forward passes while playing, the rollout's bookkeeping, and learning."""
+
+    PARTS = ("env", "observation", "oracle", "inference", "bookkeeping", "learning")
+
+    def __init__(self):
+        self.seconds = dict.fromkeys(self.PARTS, 0.0)
+
+    @contextlib.contextmanager
+    def __call__(self, part: str):
+        t = time.perf_counter()
+        try:
+            yield
+        finally:
+            self.seconds[part] += time.perf_counter() - t
+
+    def rounded(self) -> dict:
+        return {k: round(v, 3) for k, v in self.seconds.items()}
 
 
 class Log:

@@ -30,6 +30,7 @@ from common import (
     Critic,
     Log,
     Space,
+    Split,
     entropy_and_kl,
     greedy_policy,
     load_config,
@@ -195,64 +196,64 @@ def train_ppo(
         print(f"{table} update {update}: average rank {r.average_rank:.3f} ± {r.ci95:.3f}")
 
     evaluate(0)
+    total = Split()
     for update in range(1, int(c["updates"]) + 1):
+        split = Split()
         buf.clear()
         last[:] = -1
         policy.eval()
         t0 = time.time()
-        with torch.no_grad():
+        with torch.inference_mode():
             for _ in range(t_len):
-                cp = ts.current_player.astype(np.int64)
-                mine = learner[np.arange(n), cp]
-                if hero_mode:
-                    mine &= ts.info["hero"]
-                planes, scalars, mask = tensors(ts, space, analysis)
-                rows = np.nonzero(mine)[0]
-                actions = np.zeros(n, np.int64)
-                if opponents == "bc":
-                    bc_logits = bc(planes, scalars, mask)
-                    actions[:] = bc_logits.argmax(1).numpy()
-                    ref = torch.log_softmax(bc_logits[rows], 1)
-                else:
+                with split("observation"):
+                    cp = ts.current_player.astype(np.int64)
+                    mine = learner[np.arange(n), cp]
+                    if hero_mode:
+                        mine &= ts.info["hero"]
+                    planes, scalars, mask = tensors(ts, space, analysis)
+                    rows = np.nonzero(mine)[0]
+                    actions = np.zeros(n, np.int64)
                     p, s, m = planes[rows], scalars[rows], mask[rows]
-                    ref = torch.log_softmax(bc(p, s, m), 1)
+                with split("inference"):
+                    if opponents == "bc":
+                        bc_logits = bc(planes, scalars, mask)
+                        actions[:] = bc_logits.argmax(1).numpy()
+                        ref = torch.log_softmax(bc_logits[rows], 1)
+                    else:
+                        ref = torch.log_softmax(bc(p, s, m), 1)
                 if len(rows):
-                    p, s, m = planes[rows], scalars[rows], mask[rows]
                     h = None
                     if oracle:
-                        h = torch.from_numpy(oracle_features(env.oracle(cp))[rows])
-                    logp_all = torch.log_softmax(policy(p, s, m), 1)
-                    a = torch.multinomial(logp_all.exp(), 1).squeeze(1)
-                    pos = buf.add(
-                        p,
-                        s,
-                        m,
-                        a,
-                        logp_all.gather(1, a[:, None]).squeeze(1),
-                        critic(p, s, h),
-                        ref,
-                        rows,
-                        cp[rows],
-                        h,
-                    )
-                    actions[rows] = a.numpy()
-                    last[rows, cp[rows]] = pos
-                ts = env.step(space.to_env(actions))
+                        with split("oracle"):
+                            h = torch.from_numpy(oracle_features(env.oracle(cp))[rows])
+                    with split("inference"):
+                        logp_all = torch.log_softmax(policy(p, s, m), 1)
+                        a = torch.multinomial(logp_all.exp(), 1).squeeze(1)
+                        logp = logp_all.gather(1, a[:, None]).squeeze(1)
+                        value = critic(p, s, h)
+                    with split("bookkeeping"):
+                        pos = buf.add(p, s, m, a, logp, value, ref, rows, cp[rows], h)
+                        actions[rows] = a.numpy()
+                        last[rows, cp[rows]] = pos
+                with split("env"):
+                    ts = env.step(space.to_env(actions))
                 env_steps += n
                 decisions += len(rows)
-                # Rewards of this step go to each learner seat's latest decision.
-                has = last >= 0
-                if points_scale:
-                    np.add.at(buf.reward, last[has], ts.rewards[has] * points_scale)
-                for e in np.nonzero(ts.terminated)[0]:
-                    for s_ in np.nonzero(learner[e])[0]:
-                        rank = int(ts.info["final_rank"][e, s_])
-                        if last[e, s_] >= 0:
-                            buf.reward[last[e, s_]] += rank_reward[rank]
-                            buf.done[last[e, s_]] = True
-                        finished_ranks.append(rank + 1)
-                    last[e] = -1
+                with split("bookkeeping"):
+                    # Rewards of this step go to each learner seat's latest decision.
+                    has = last >= 0
+                    if points_scale:
+                        np.add.at(buf.reward, last[has], ts.rewards[has] * points_scale)
+                    for e in np.nonzero(ts.terminated)[0]:
+                        for s_ in np.nonzero(learner[e])[0]:
+                            rank = int(ts.info["final_rank"][e, s_])
+                            if last[e, s_] >= 0:
+                                buf.reward[last[e, s_]] += rank_reward[rank]
+                                buf.done[last[e, s_]] = True
+                            finished_ranks.append(rank + 1)
+                        last[e] = -1
         rollout_s = time.time() - t0
+        t1 = time.time()
         adv_all, ok = buf.advantages(lam, gamma)
         size = buf.size
         # A decision with one legal action teaches nothing.
@@ -266,7 +267,6 @@ def train_ppo(
         explained = float(1 - (r_ok - v_ok).var() / r_ok.var().clamp(min=1e-8))
         policy.train()
         stats: dict[str, list] = {k: [] for k in ("pg", "value", "entropy", "kl", "clipfrac")}
-        t1 = time.time()
         by_epoch: dict[str, list] = {"pg": [], "value": []}
         for epoch in range(epochs):
             seen = len(stats["value"])
@@ -283,9 +283,11 @@ def train_ppo(
                 adv = (adv - adv.mean()) / (adv.std() + 1e-8)
                 pg = -torch.min(ratio * adv, ratio.clamp(1 - clip, 1 + clip) * adv).mean()
                 h = buf.hidden[mb] if oracle else None
-                value_loss = 0.5 * (critic(p, s, h) - returns[mb]).pow(2).mean()
                 # More passes over one rollout make the critic memorise its games' outcomes.
                 critic_on = epoch < critic_epochs
+                # Past its epochs the critic's loss is only reported: no graph to build for it.
+                with torch.set_grad_enabled(critic_on):
+                    value_loss = 0.5 * (critic(p, s, h) - returns[mb]).pow(2).mean()
                 ent, kl = entropy_and_kl(logp_all, buf.ref_logp[mb], m)
                 terms = [vf_coef * value_loss] if critic_on else []
                 if update > warmup:
@@ -304,6 +306,9 @@ def train_ppo(
             # Each epoch's mean losses over the same rollout: the optimiser must bring them down.
             for k in by_epoch:
                 by_epoch[k].append(float(np.mean(stats[k][seen:])) if stats[k][seen:] else None)
+        split.seconds["learning"] += time.time() - t1
+        for k, v in split.seconds.items():
+            total.seconds[k] += v
         means = {k: float(np.mean(v)) if v else None for k, v in stats.items()}
         if first_value_loss is None:
             first_value_loss = means["value"]
@@ -317,7 +322,8 @@ def train_ppo(
             explained_variance=explained,
             return_var=float(r_ok.var()),
             rollout_s=round(rollout_s, 2),
-            train_s=round(time.time() - t1, 2),
+            train_s=round(split.seconds["learning"], 2),
+            split=split.rounded(),
             games=len(finished_ranks),
             rollout_rank=float(np.mean(recent)) if recent else None,
             pg_by_epoch=by_epoch["pg"],
@@ -330,7 +336,7 @@ def train_ppo(
                 f"explained {explained:.2f} "
                 f"kl {means['kl']:.4f} entropy {means['entropy']:.3f} "
                 f"rank {np.mean(recent) if recent else float('nan'):.3f} "
-                f"({env_steps / (time.time() - start):.0f} steps/s)"
+                f"({env_steps / sum(total.seconds.values()):.0f} steps/s)"
             )
         if update % int(c.get("evaluate_every", 10**9)) == 0:
             evaluate(update)
@@ -346,6 +352,9 @@ def train_ppo(
         "value_loss": means["value"],
         "evaluations": evaluations,
         "seconds": round(time.time() - start, 1),
+        # The training loop alone (evaluations left out): where its time went, and its speed.
+        "split": total.rounded(),
+        "steps_per_s": round(env_steps / sum(total.seconds.values()), 1),
     }
 
 

@@ -57,6 +57,18 @@ def test_smoke_pipeline_runs_and_learns(tmp_path):
     assert updates[-1]["kl"] > updates[0]["kl"] >= 0
     assert all(r["entropy"] > 0 for r in updates)
     assert updates[-1]["env_steps"] == 8 * 32 * 128
+    # Each update says where its time went, and every part of the loop took some.
+    for r in updates:
+        assert set(r["split"]) == {
+            "env",
+            "observation",
+            "oracle",
+            "inference",
+            "bookkeeping",
+            "learning",
+        }
+        assert all(v > 0 for v in r["split"].values()), r["split"]
+        assert abs(r["split"]["learning"] - r["train_s"]) < 0.01
     # Before any update the learner is the BC net, and identical deterministic players split
     # every duplicate set's four places exactly.
     first = [r for r in lines(seed / "ppo.jsonl") if r["kind"] == "evaluate"][0]
@@ -65,3 +77,54 @@ def test_smoke_pipeline_runs_and_learns(tmp_path):
         assert r["illegal"] == 0 and 1 <= r["rank"] <= 4 and sum(r["places"]) == r["games"]
     # The no-red net plays the red variant through the canonical action space.
     assert result["evaluate"][2]["variant"] == "red"
+
+
+@needs_torch
+def test_tile_head_is_one_layer_over_each_tile_and_the_context():
+    """The net computes the tile head's first layer in two halves (the context's once per
+    position); it must be the layer over each tile's column and the context side by side."""
+    import torch
+
+    sys.path.insert(0, str(TRAIN))
+    from common import DRAWN_ROW, PLANES, SCALARS, Net
+
+    torch.manual_seed(0)
+    net = Net(87, hidden=32, analysis=True, tile_head=True, tile_hidden=16)
+    b = 64
+    planes = torch.randint(0, 5, (b, net.row_scale.shape[0], PLANES[1]), dtype=torch.uint8)
+    scalars = torch.randint(0, 30, (b, SCALARS), dtype=torch.int16)
+    mask = torch.rand(b, 87) < 0.5
+    with torch.no_grad():
+        got = net(planes, scalars, mask)
+        x = planes.float() * net.row_scale
+        g = net.features(planes, scalars)
+        columns = x.transpose(1, 2)
+        context = net.tile_context(g)[:, None, :].expand(-1, PLANES[1], -1)
+        per_tile = net.tile_head(torch.cat([columns, context], dim=2)).squeeze(2)
+        drawn = planes[:, DRAWN_ROW].argmax(dim=1, keepdim=True)
+        per_tile = torch.cat([per_tile, per_tile.gather(1, drawn)], dim=1)
+        want = net.head(g) + per_tile[:, net.discard_column] * net.is_discard
+        want = want.masked_fill(~mask, -1e9)
+    assert torch.allclose(got, want, atol=1e-5), (got - want).abs().max()
+
+
+@needs_torch
+def test_throughput_reports_the_split_of_a_few_updates():
+    done = subprocess.run(
+        [
+            sys.executable,
+            str(TRAIN / "throughput.py"),
+            "--config",
+            str(TRAIN / "configs" / "smoke.toml"),
+            "--updates",
+            "2",
+        ],
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+    assert done.returncode == 0, done.stdout + done.stderr
+    report = json.loads(done.stdout.strip().splitlines()[-1])
+    assert report["steps_per_s"] > 0
+    assert set(report["split"]) >= {"env", "inference", "learning"}
+    assert report["env_steps"] == 2 * 32 * 128
