@@ -15,7 +15,7 @@ import time
 import numpy as np
 import torch
 from collect import Rows
-from common import Log, load_config, new_net, save, seed_everything, set_threads
+from common import Log, config_arguments, load_config, new_net, save, seed_everything, set_threads
 
 # Validation rows at most (a tenth of the rows up to this), and rows the scalars' mean and spread
 # are taken from: enough for both, and a dataset of millions of rows is not read whole for them.
@@ -120,7 +120,7 @@ def train_bc(cfg: dict, seed: int, data: pathlib.Path, out: pathlib.Path) -> dic
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--config", required=True)
+    config_arguments(ap)
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument(
         "--data", required=True, help="collect.py's shards, or a `rinshan dataset` folder"
@@ -128,7 +128,9 @@ def main() -> None:
     ap.add_argument("--out", required=True)
     a = ap.parse_args()
     print(
-        train_bc(load_config(a.config, TABLES), a.seed, pathlib.Path(a.data), pathlib.Path(a.out))
+        train_bc(
+            load_config(a.config, TABLES, a.set), a.seed, pathlib.Path(a.data), pathlib.Path(a.out)
+        )
     )
 
 

@@ -13,7 +13,7 @@ import pathlib
 import time
 
 import numpy as np
-from common import CANONICAL, Log, Space, load_config, rows
+from common import CANONICAL, Log, Space, config_arguments, load_config, rows
 
 import rinshan
 
@@ -147,11 +147,11 @@ def open_dataset(folder: pathlib.Path, analysis: bool) -> rinshan.dataset.Datase
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--config", required=True)
+    config_arguments(ap)
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument("--out", required=True, help="folder for the shards")
     a = ap.parse_args()
-    print(collect(load_config(a.config), a.seed, pathlib.Path(a.out)))
+    print(collect(load_config(a.config, sets=a.set), a.seed, pathlib.Path(a.out)))
 
 
 if __name__ == "__main__":

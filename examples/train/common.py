@@ -70,12 +70,39 @@ class Space:
         return self.back[actions]
 
 
+def config_arguments(ap, required: bool = True) -> None:
+    """`--config FILE` and any number of `--set TABLE.KEY=VALUE` on an argument parser."""
+    ap.add_argument("--config", required=required, help="a TOML config (configs/*.toml)")
+    ap.add_argument(
+        "--set",
+        action="append",
+        default=[],
+        metavar="TABLE.KEY=VALUE",
+        help="one setting instead of the config's, the value written as in TOML "
+        "(--set bc.hidden=128); repeatable",
+    )
+
+
 def load_config(
-    path: str | pathlib.Path, tables: tuple[str, ...] = ("run", "collect", "bc", "ppo", "evaluate")
+    path: str | pathlib.Path,
+    tables: tuple[str, ...] = ("run", "collect", "bc", "ppo", "evaluate"),
+    sets: list[str] | tuple[str, ...] = (),
 ) -> dict:
-    """A training config; each of `tables` (default: the whole pipeline's) must be in it."""
+    """A training config, with `sets` (`TABLE.KEY=VALUE`) applied; each of `tables` (default:
+    the whole pipeline's) must be in it."""
     with open(path, "rb") as f:
         cfg = tomllib.load(f)
+    for item in sets:
+        name, eq, value = item.partition("=")
+        table, dot, key = name.partition(".")
+        if not (eq and dot and table and key):
+            sys.exit(f"--set {item}: write TABLE.KEY=VALUE")
+        if table not in cfg:
+            sys.exit(f"--set {item}: {path} has no [{table}] table")
+        try:
+            cfg[table][key] = tomllib.loads(f"v = {value}")["v"]
+        except tomllib.TOMLDecodeError as e:
+            sys.exit(f"--set {item}: {value} is not a TOML value ({e})")
     for table in tables:
         if table not in cfg:
             sys.exit(f"{path}: the config has no [{table}] table")
@@ -168,8 +195,8 @@ class Net(nn.Module):
             first, second = self.tile_head[0], self.tile_head[2]
             r = x.shape[1]
             context = F.linear(self.tile_context(g), first.weight[:, r:], first.bias)
-            hidden = torch.relu(torch.matmul(first.weight[:, :r], x) + context[:, :, None])
-            per_tile = torch.matmul(second.weight, hidden).squeeze(1) + second.bias
+            columns = F.linear(x.transpose(1, 2), first.weight[:, :r])
+            per_tile = second(torch.relu(columns + context[:, None, :])).squeeze(2)
             drawn = planes[:, DRAWN_ROW].argmax(dim=1, keepdim=True)
             per_tile = torch.cat([per_tile, per_tile.gather(1, drawn)], dim=1)
             logits = logits + per_tile[:, self.discard_column] * self.is_discard

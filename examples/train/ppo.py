@@ -31,6 +31,7 @@ from common import (
     Log,
     Space,
     Split,
+    config_arguments,
     entropy_and_kl,
     greedy_policy,
     load_config,
@@ -161,6 +162,8 @@ def train_ppo(
     vf_coef, kl_coef = float(c["value"]), float(c["kl"])
     epochs, minibatch = int(c["epochs"]), int(c["minibatch"])
     warmup = int(c.get("critic_warmup", 0))
+    # Learning's matrix products in bfloat16 (the losses and the optimiser stay in float32).
+    half = torch.autocast("cpu", dtype=torch.bfloat16, enabled=bool(c.get("bf16", False)))
     critic_epochs = int(c.get("critic_epochs", epochs))
     buf = Rollout(n * t_len, bc.row_scale.shape[0], bc.config["num_actions"], oracle)
     rng = np.random.default_rng(seed)
@@ -276,7 +279,9 @@ def train_ppo(
                 if len(mb) < 2:
                     continue
                 p, s, m = buf.planes[mb], buf.scalars[mb], buf.mask[mb]
-                logp_all = torch.log_softmax(policy(p, s, m), 1)
+                with half:
+                    logits = policy(p, s, m)
+                logp_all = torch.log_softmax(logits.float(), 1)
                 logp = logp_all.gather(1, buf.action[mb][:, None]).squeeze(1)
                 ratio = (logp - buf.logp[mb]).exp()
                 adv = adv_t[mb]
@@ -287,7 +292,9 @@ def train_ppo(
                 critic_on = epoch < critic_epochs
                 # Past its epochs the critic's loss is only reported: no graph to build for it.
                 with torch.set_grad_enabled(critic_on):
-                    value_loss = 0.5 * (critic(p, s, h) - returns[mb]).pow(2).mean()
+                    with half:
+                        value = critic(p, s, h)
+                    value_loss = 0.5 * (value.float() - returns[mb]).pow(2).mean()
                 ent, kl = entropy_and_kl(logp_all, buf.ref_logp[mb], m)
                 terms = [vf_coef * value_loss] if critic_on else []
                 if update > warmup:
@@ -360,12 +367,16 @@ def train_ppo(
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--config", required=True)
+    config_arguments(ap)
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument("--bc", required=True, help="the BC checkpoint (bc.pt)")
     ap.add_argument("--out", required=True)
     a = ap.parse_args()
-    print(train_ppo(load_config(a.config), a.seed, pathlib.Path(a.bc), pathlib.Path(a.out)))
+    print(
+        train_ppo(
+            load_config(a.config, sets=a.set), a.seed, pathlib.Path(a.bc), pathlib.Path(a.out)
+        )
+    )
 
 
 if __name__ == "__main__":

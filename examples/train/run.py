@@ -18,7 +18,7 @@ from typing import Optional
 import numpy as np
 from bc import train_bc
 from collect import collect
-from common import load_config
+from common import config_arguments, load_config
 from evaluate import arena
 from ppo import train_ppo
 
@@ -121,7 +121,7 @@ def markdown(s: dict) -> str:
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--config", help="a TOML config (configs/*.toml)")
+    config_arguments(ap, required=False)
     ap.add_argument("--smoke", action="store_true", help="configs/smoke.toml: a short check")
     ap.add_argument("--out", help="run folder (default runs/<name>)")
     ap.add_argument("--seeds", help="comma-separated seeds instead of the config's")
@@ -133,7 +133,7 @@ def main() -> None:
     a = ap.parse_args()
     if a.smoke == bool(a.config):
         sys.exit("give --config FILE or --smoke")
-    cfg = load_config(HERE / "configs" / "smoke.toml" if a.smoke else a.config)
+    cfg = load_config(HERE / "configs" / "smoke.toml" if a.smoke else a.config, sets=a.set)
     out = pathlib.Path(a.out or pathlib.Path("runs") / cfg["run"]["name"])
     seeds = [int(x) for x in a.seeds.split(",")] if a.seeds else cfg["run"]["seeds"]
     start = time.time()

@@ -4,8 +4,10 @@ and the split of their wall time (env, observation, oracle, inference, bookkeepi
 python examples/train/throughput.py --config examples/train/configs/seed.toml --updates 4
 python examples/train/throughput.py --config ... --bc runs/seed/seed0/bc.pt --table finetune
 
-Without `--bc` the nets are untrained ones of the config's `[bc]` shape: a step costs the same
-whatever the weights, and the games differ only in who wins them.
+Every timed update trains both nets (the config's critic-only warmup is left out). Without `--bc`
+the nets are untrained ones of the config's `[bc]` shape: a row costs the same whatever the
+weights, but untrained players play other games (how many of the steps are the learner's, how
+many have a choice), so figures worth quoting take a trained net.
 """
 
 from __future__ import annotations
@@ -16,7 +18,7 @@ import json
 import pathlib
 import tempfile
 
-from common import load_config, new_net, save
+from common import config_arguments, load_config, new_net, save
 from ppo import train_ppo
 
 
@@ -27,15 +29,18 @@ def untrained(cfg: dict, path: pathlib.Path) -> pathlib.Path:
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--config", required=True)
+    config_arguments(ap)
     ap.add_argument("--table", default="ppo", help="the stage to time: ppo or finetune")
     ap.add_argument("--updates", type=int, default=4)
     ap.add_argument("--bc", help="a BC checkpoint (default: an untrained net of its shape)")
     ap.add_argument("--seed", type=int, default=0)
     a = ap.parse_args()
-    cfg = copy.deepcopy(load_config(a.config, ("run", "bc", a.table)))
+    cfg = copy.deepcopy(load_config(a.config, ("run", "bc", a.table), a.set))
     c = cfg[a.table]
     c["updates"], c["evaluate_games"], c["print_every"] = a.updates, 0, 10**9
+    # Every timed update a full one: the first updates' critic-only warmup skips the policy's
+    # backward pass and would flatter the speed.
+    c["critic_warmup"] = 0
     c.pop("evaluate_every", None)
     with tempfile.TemporaryDirectory() as tmp:
         out = pathlib.Path(tmp)
