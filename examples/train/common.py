@@ -190,8 +190,9 @@ class Net(nn.Module):
         if self.tile_head is not None:
             # The tile head's first layer reads a tile's column and the position's context
             # side by side: its context half is the same for all 34 tiles, so it is computed once
-            # per position and added to each column's half (the same function as the layer over
-            # their concatenation, a third fewer multiplications, no 34 copies of the context).
+            # per position and added to each column's half: the same function as the layer over
+            # their concatenation, with a third fewer of its multiplications and no 34 copies of
+            # the context.
             first, second = self.tile_head[0], self.tile_head[2]
             r = x.shape[1]
             context = F.linear(self.tile_context(g), first.weight[:, r:], first.bias)

@@ -13,18 +13,12 @@ many have a choice), so figures worth quoting take a trained net.
 from __future__ import annotations
 
 import argparse
-import copy
 import json
 import pathlib
 import tempfile
 
 from common import config_arguments, load_config, new_net, save
 from ppo import train_ppo
-
-
-def untrained(cfg: dict, path: pathlib.Path) -> pathlib.Path:
-    save(new_net(cfg), path)
-    return path
 
 
 def main() -> None:
@@ -35,7 +29,7 @@ def main() -> None:
     ap.add_argument("--bc", help="a BC checkpoint (default: an untrained net of its shape)")
     ap.add_argument("--seed", type=int, default=0)
     a = ap.parse_args()
-    cfg = copy.deepcopy(load_config(a.config, ("run", "bc", a.table), a.set))
+    cfg = load_config(a.config, ("run", "bc", a.table), a.set)
     c = cfg[a.table]
     c["updates"], c["evaluate_games"], c["print_every"] = a.updates, 0, 10**9
     # Every timed update a full one: the first updates' critic-only warmup skips the policy's
@@ -44,7 +38,9 @@ def main() -> None:
     c.pop("evaluate_every", None)
     with tempfile.TemporaryDirectory() as tmp:
         out = pathlib.Path(tmp)
-        bc = pathlib.Path(a.bc) if a.bc else untrained(cfg, out / "bc.pt")
+        bc = pathlib.Path(a.bc) if a.bc else out / "bc.pt"
+        if not a.bc:
+            save(new_net(cfg), bc)
         start = None if a.table == "ppo" else bc
         r = train_ppo(cfg, a.seed, bc, out, table=a.table, start_from=start)
     total = sum(r["split"].values())
