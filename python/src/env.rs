@@ -470,62 +470,63 @@ impl PyEnv {
             ));
         }
         let (mut bots, mut hero_bits) = (None, Vec::new());
-        let agents = match (opponents, hero_seats) {
-            (None, None) => Vec::new(),
-            (None, Some(_)) => {
-                return Err(PyValueError::new_err(
-                    "hero_seats needs opponents (random, rule, greedy, defensive, search or mjai:COMMAND)",
-                ))
-            }
-            (Some(name), seats) => {
-                let seats = seats.unwrap_or_else(|| vec![0]);
-                if seats.len() != 1 && seats.len() != num_envs {
-                    return Err(PyValueError::new_err(format!(
-                        "hero_seats has {} entries: give one seat, or one per env ({num_envs})",
-                        seats.len()
-                    )));
-                }
-                let table = variant.seats();
-                if let Some(s) = seats.iter().find(|&&s| s >= table) {
-                    return Err(PyValueError::new_err(format!(
-                        "hero seat {s}: seats are 0..{}",
-                        table - 1
-                    )));
-                }
-                if name.starts_with("search") {
-                    bots = Some(Opponents::search(name, &seats, num_envs, (variant, backend))?);
-                    // The kernel plays no seat: the caller's and the look-ahead's actions go in by step.
-                    hero_bits = (0..num_envs)
-                        .map(|i| 1u8 << seats[if seats.len() == 1 { 0 } else { i }])
-                        .collect();
-                    Vec::new()
-                } else if let Some(command) = name.strip_prefix("mjai:") {
-                    let options = BotOptions {
-                        dialect: mjai_dialect,
-                        timeout: mjai_timeout,
-                        startup: mjai_startup,
+        let agents =
+            match (opponents, hero_seats) {
+                (None, None) => Vec::new(),
+                (None, Some(_)) => return Err(PyValueError::new_err(
+                    "hero_seats needs opponents (random, rule, greedy, defensive, search, net:PATH or mjai:COMMAND)",
+                )),
+                (Some(name), seats) => {
+                    let seats = seats.unwrap_or_else(|| vec![0]);
+                    if seats.len() != 1 && seats.len() != num_envs {
+                        return Err(PyValueError::new_err(format!(
+                            "hero_seats has {} entries: give one seat, or one per env ({num_envs})",
+                            seats.len()
+                        )));
+                    }
+                    let table = variant.seats();
+                    if let Some(s) = seats.iter().find(|&&s| s >= table) {
+                        return Err(PyValueError::new_err(format!(
+                            "hero seat {s}: seats are 0..{}",
+                            table - 1
+                        )));
+                    }
+                    // Opponents the host plays (a net, the look-ahead, MJAI bots): the kernel plays
+                    // no seat, and the caller's and the opponents' actions go in by step.
+                    bots = if let Some(path) = name.strip_prefix("net:") {
+                        Some(Opponents::net(path, &seats, num_envs, (variant, backend))?)
+                    } else if name.starts_with("search") {
+                        Some(Opponents::search(name, &seats, num_envs, (variant, backend))?)
+                    } else if let Some(command) = name.strip_prefix("mjai:") {
+                        let options = BotOptions {
+                            dialect: mjai_dialect,
+                            timeout: mjai_timeout,
+                            startup: mjai_startup,
+                        };
+                        Some(Opponents::new(
+                            command,
+                            &seats,
+                            num_envs,
+                            (variant, mode, backend),
+                            &options,
+                        )?)
+                    } else {
+                        None
                     };
-                    bots = Some(Opponents::new(
-                        command,
-                        &seats,
-                        num_envs,
-                        (variant, mode, backend),
-                        &options,
-                    )?);
-                    // The kernel plays no seat: the caller's and the bots' actions go in by step.
-                    hero_bits = (0..num_envs)
-                        .map(|i| 1u8 << seats[if seats.len() == 1 { 0 } else { i }])
-                        .collect();
-                    Vec::new()
-                } else {
-                    let agent: Agent = parse("opponents", name)?;
-                    seats
-                        .iter()
-                        .map(|&h| std::array::from_fn(|p| (p as u32 != h).then_some(agent)))
-                        .collect()
+                    if bots.is_some() {
+                        hero_bits = (0..num_envs)
+                            .map(|i| 1u8 << seats[if seats.len() == 1 { 0 } else { i }])
+                            .collect();
+                        Vec::new()
+                    } else {
+                        let agent: Agent = parse("opponents", name)?;
+                        seats
+                            .iter()
+                            .map(|&h| std::array::from_fn(|p| (p as u32 != h).then_some(agent)))
+                            .collect()
+                    }
                 }
-            }
-        };
+            };
         let caller_seats: Vec<u8> = match agents.is_empty() {
             true => hero_bits,
             false => (0..num_envs)

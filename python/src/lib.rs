@@ -6,6 +6,7 @@ mod analysis;
 mod dataset;
 mod env;
 mod mjai;
+mod net;
 mod opponents;
 mod tools;
 
@@ -17,5 +18,6 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<mjai::PyMjaiPlayer>()?;
     tools::register(m)?;
     analysis::register(m)?;
+    net::register(m)?;
     dataset::register(m)
 }

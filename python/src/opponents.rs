@@ -1,19 +1,21 @@
 //! Opponents the Python env asks in `step`, outside the kernel: MJAI bots
 //! (`opponents="mjai:COMMAND"`: each game's other seats played by the bot, one process per seat
 //! and game) and the look-ahead (`opponents="search"` or `"search:rollouts=N:..."`: it follows
-//! every game and decides, in parallel, where its seats act). The caller's action for an env
+//! every game and decides, in parallel, where its seats act) and trained nets (`opponents="net:PATH"`:
+//! one forward pass per step for all the games where its seats act). The caller's action for an env
 //! where an opponent acts is ignored (`info["hero"]` is False there).
 
-use std::sync::Mutex;
+use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
-use pyo3::exceptions::{PyRuntimeWarning, PyValueError};
+use pyo3::exceptions::{PyRuntimeError, PyRuntimeWarning, PyValueError};
 use pyo3::prelude::*;
 use rinshan_engine::env::{Backend, Env, EnvError, Mode};
 use rinshan_engine::Variant;
 use rinshan_logs::mjai::batch::BatchBots;
 use rinshan_logs::mjai::bot::{check_games, wait, BotSpec, Dialect, Unplayable};
 use rinshan_logs::mjai::seat::MjaiEntrant;
+use rinshan_net::{BatchNet, Net, NetAgent};
 
 use crate::env::{env_error, parse};
 
@@ -46,6 +48,12 @@ enum Players {
         seats: Vec<[bool; 4]>,
         /// Made at the first reset.
         batch: Option<rinshan_search::BatchSearch>,
+    },
+    Net {
+        agent: NetAgent,
+        seats: Vec<[bool; 4]>,
+        /// Made at the first reset.
+        batch: Option<BatchNet>,
     },
 }
 
@@ -139,6 +147,30 @@ impl Opponents {
         })
     }
 
+    /// The trained net exported at `path` (`net:PATH`) at every seat but each env's hero seat.
+    pub(crate) fn net(
+        path: &str,
+        seats: &[u32],
+        num_envs: usize,
+        (variant, backend): (Variant, Backend),
+    ) -> PyResult<Opponents> {
+        if backend != Backend::Cpu {
+            return Err(PyValueError::new_err(
+                "net opponents need backend=\"cpu\": they read every game's state after every step",
+            ));
+        }
+        let net = Net::load(path.trim()).map_err(|e| PyValueError::new_err(e.to_string()))?;
+        let agent = NetAgent::new(Arc::new(net), variant).map_err(|e| PyValueError::new_err(e.to_string()))?;
+        Ok(Opponents {
+            players: Players::Net {
+                agent,
+                seats: others(seats, num_envs, variant),
+                batch: None,
+            },
+            variant,
+        })
+    }
+
     /// New games in every env (after a reset): the bots of the old ones are stopped.
     pub(crate) fn restart(&mut self, py: Python<'_>, env: &Env) -> PyResult<()> {
         let states = env.game_states().map_err(env_error)?;
@@ -157,6 +189,7 @@ impl Opponents {
                     states,
                 ))
             }
+            Players::Net { agent, seats, batch } => *batch = Some(BatchNet::new(agent.clone(), seats.clone(), states)),
         });
         Ok(())
     }
@@ -171,6 +204,11 @@ impl Opponents {
             }
             Players::Search { batch: Some(batch), .. } => {
                 py.detach(|| batch.act(actions));
+                Ok(Vec::new())
+            }
+            Players::Net { batch: Some(batch), .. } => {
+                py.detach(|| batch.act(actions))
+                    .map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
                 Ok(Vec::new())
             }
             _ => Err(PyValueError::new_err("reset the env before the first step")),
@@ -188,6 +226,10 @@ impl Opponents {
                 }
                 Players::Search { batch: Some(batch), .. } => {
                     batch.stepped(env.game_states()?, &env.last().terminated);
+                    Ok(Vec::new())
+                }
+                Players::Net { batch: Some(batch), .. } => {
+                    batch.stepped(env.game_states()?);
                     Ok(Vec::new())
                 }
                 _ => Ok(Vec::new()),

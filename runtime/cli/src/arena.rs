@@ -10,10 +10,11 @@ use rinshan_engine::agents::Agent;
 use rinshan_engine::arena::{self, Arena, Player};
 use rinshan_engine::env::Mode;
 use rinshan_logs::mjai::seat::MjaiEntrant;
+use rinshan_net::NetAgent;
 use rinshan_search::SearchEntrant;
 use serde_json::json;
 
-use crate::args::{on_threads, MjaiArgs, SeatArg, VariantArg};
+use crate::args::{net_agent, on_threads, MjaiArgs, SeatArg, VariantArg};
 use crate::error::CliError;
 
 #[derive(clap::Args)]
@@ -21,7 +22,8 @@ pub struct Args {
     /// The seats' agents, comma-separated, one per seat: random, rule, greedy, defensive, the
     /// look-ahead `search` (or `search:rollouts=N:ms=M:base=AGENT:margin=Z:seed=S:backend=gpu`:
     /// play-outs per decision, a time cap, the agent of the play-outs, how sure it must be to
-    /// differ from it, where the play-outs run), or `mjai:COMMAND`, an MJAI bot run as
+    /// differ from it, where the play-outs run), `net:PATH`, a trained net's file
+    /// (examples/train/export.py) played on the CPU, or `mjai:COMMAND`, an MJAI bot run as
     /// `sh -c "COMMAND SEAT"` over its stdin and stdout
     /// [default: defensive,greedy,rule,random; three players: defensive,greedy,rule]
     #[arg(long, value_delimiter = ',')]
@@ -73,7 +75,14 @@ pub fn run(args: Args) -> Result<(), CliError> {
         .iter()
         .filter_map(|a| match a {
             SeatArg::Mjai(cmd) => Some(args.mjai.entrant(cmd).map(|e| (a.to_string(), e))),
-            SeatArg::Builtin(_) | SeatArg::Search(_) => None,
+            _ => None,
+        })
+        .collect::<Result<_, _>>()?;
+    let nets: Vec<(String, NetAgent)> = agents
+        .iter()
+        .filter_map(|a| match a {
+            SeatArg::Net(path) => Some(net_agent(path, args.variant.variant).map(|n| (a.to_string(), n))),
+            _ => None,
         })
         .collect::<Result<_, _>>()?;
     let searches: Vec<(String, SearchEntrant)> = agents
@@ -88,6 +97,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
     }
     let mut next_bot = bots.iter();
     let mut next_search = searches.iter();
+    let mut next_net = nets.iter();
     // A three-player game seats the first three; the fourth place is never played.
     let players: [Player; 4] = std::array::from_fn(|p| match agents.get(p) {
         Some(SeatArg::Builtin(a)) => Player::Builtin(*a),
@@ -96,6 +106,10 @@ pub fn run(args: Args) -> Result<(), CliError> {
             None => Player::Builtin(Agent::Random),
         },
         Some(SeatArg::Search(_)) => match next_search.next() {
+            Some((name, entrant)) => Player::Entrant { name, entrant },
+            None => Player::Builtin(Agent::Random),
+        },
+        Some(SeatArg::Net(_)) => match next_net.next() {
             Some((name, entrant)) => Player::Entrant { name, entrant },
             None => Player::Builtin(Agent::Random),
         },

@@ -8,6 +8,7 @@ use rinshan_engine::env::{Backend, Config, Mode};
 use rinshan_engine::Variant;
 use rinshan_logs::mjai::bot::{check_games, wait, BotSpec, Dialect, Unplayable};
 use rinshan_logs::mjai::seat::MjaiEntrant;
+use rinshan_net::{Net, NetAgent};
 
 use crate::error::CliError;
 
@@ -96,6 +97,8 @@ pub enum SeatArg {
     Mjai(String),
     /// The look-ahead agent with its settings.
     Search(rinshan_search::Options),
+    /// A trained net's file (examples/train/export.py), played on the CPU.
+    Net(std::path::PathBuf),
 }
 
 impl std::str::FromStr for SeatArg {
@@ -104,13 +107,25 @@ impl std::str::FromStr for SeatArg {
         match s.strip_prefix("mjai:") {
             Some(cmd) if cmd.trim().is_empty() => Err("`mjai:` needs the bot's command line after it".into()),
             Some(cmd) => Ok(SeatArg::Mjai(cmd.trim().to_string())),
+            None if s.starts_with("net:") => match s["net:".len()..].trim() {
+                "" => {
+                    Err("`net:` needs the path of a net's file after it (examples/train/export.py writes one)".into())
+                }
+                path => Ok(SeatArg::Net(path.into())),
+            },
             None if s == "search" || s.starts_with("search:") => s.parse().map(SeatArg::Search),
             None => s
                 .parse::<Agent>()
                 .map(SeatArg::Builtin)
-                .map_err(|e| format!("{e} (or search, search:rollouts=N, mjai:COMMAND)")),
+                .map_err(|e| format!("{e} (or search, search:rollouts=N, net:PATH, mjai:COMMAND)")),
         }
     }
+}
+
+/// The net exported at `path`, playing `variant`.
+pub fn net_agent(path: &std::path::Path, variant: Variant) -> Result<NetAgent, CliError> {
+    let net = Net::load(path).map_err(CliError::input)?;
+    NetAgent::new(std::sync::Arc::new(net), variant).map_err(CliError::input)
 }
 
 fn seconds(flag: &str, s: f64) -> Result<Duration, CliError> {
@@ -123,6 +138,7 @@ impl std::fmt::Display for SeatArg {
             SeatArg::Builtin(a) => write!(f, "{a}"),
             SeatArg::Mjai(cmd) => write!(f, "mjai:{cmd}"),
             SeatArg::Search(o) => f.write_str(&o.name()),
+            SeatArg::Net(path) => write!(f, "net:{}", path.display()),
         }
     }
 }

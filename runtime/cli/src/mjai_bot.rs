@@ -10,13 +10,14 @@ use rinshan_logs::mjai::bot::Dialect;
 use rinshan_logs::mjai::player::Player;
 use rinshan_search::Search;
 
-use crate::args::SeatArg;
+use crate::args::{net_agent, SeatArg};
 use crate::error::CliError;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// The agent that decides: random, rule, greedy, defensive, or the look-ahead `search` (or
-    /// `search:rollouts=N:ms=M:...` as in `arena --agents`; keep ms within the host's time limit)
+    /// The agent that decides: random, rule, greedy, defensive, the look-ahead `search` (or
+    /// `search:rollouts=N:ms=M:...` as in `arena --agents`; keep ms within the host's time limit),
+    /// or a trained net's file, `net:PATH`
     #[arg(long, default_value = "defensive")]
     agent: SeatArg,
     /// app (mjai.app: a JSON array of events per line, one reaction each) or stdio (Mortal:
@@ -33,8 +34,12 @@ pub fn run(args: Args) -> Result<(), CliError> {
         return Err(CliError::input("the seat is 0, 1, 2 or 3"));
     }
     let mut player = Player::new(args.seat);
+    let net = match &args.agent {
+        SeatArg::Net(path) => Some(net_agent(path, Variant::Red)?),
+        _ => None,
+    };
     let search = match &args.agent {
-        SeatArg::Builtin(_) => None,
+        SeatArg::Builtin(_) | SeatArg::Net(_) => None,
         SeatArg::Search(o) => Some(Search::new(Variant::Red, *o)),
         SeatArg::Mjai(_) => {
             return Err(CliError::input(
@@ -45,6 +50,9 @@ pub fn run(args: Args) -> Result<(), CliError> {
     let mut nonce = 0u64;
     let mut decide = |s: &rinshan_engine::generated::kernel::GameState| {
         nonce += 1;
+        if let Some(net) = &net {
+            return net.act(s).map_err(|e| e.to_string());
+        }
         match (&args.agent, &search) {
             // The state is rebuilt from the seat's events; the look-ahead deals the rest afresh
             // (the wall places of its past draws play no part in what follows).

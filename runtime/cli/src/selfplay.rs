@@ -17,10 +17,11 @@ use rinshan_logs::file::write_log;
 use rinshan_logs::mjai::batch::BatchBots;
 use rinshan_logs::mjai::seat::MjaiEntrant;
 use rinshan_logs::tenhou::write::{Finished, Recorder};
+use rinshan_net::BatchNet;
 use rinshan_search::BatchSearch;
 use serde_json::json;
 
-use crate::args::{FormatArg, GameArgs, MjaiArgs, SeatArg};
+use crate::args::{net_agent, FormatArg, GameArgs, MjaiArgs, SeatArg};
 use crate::error::CliError;
 
 #[derive(clap::Args)]
@@ -169,7 +170,7 @@ fn seatings(
         .iter()
         .map(|a| match a {
             SeatArg::Builtin(a) => *a,
-            SeatArg::Mjai(_) | SeatArg::Search(_) => Agent::Random,
+            SeatArg::Mjai(_) | SeatArg::Search(_) | SeatArg::Net(_) => Agent::Random,
         })
         .collect();
     // A place past the list (three players' fourth) is never played.
@@ -191,7 +192,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
             .iter()
             .map(|p| match p {
                 SeatArg::Mjai(cmd) => args.mjai.entrant(cmd).map(Some),
-                SeatArg::Builtin(_) | SeatArg::Search(_) => Ok(None),
+                SeatArg::Builtin(_) | SeatArg::Search(_) | SeatArg::Net(_) => Ok(None),
             })
             .collect::<Result<_, _>>()?,
         None => Vec::new(),
@@ -204,6 +205,12 @@ pub fn run(args: Args) -> Result<(), CliError> {
     if with_search && config.backend == Backend::Gpu {
         return Err(CliError::input(
             "the look-ahead needs --backend cpu: it follows every game's state after every step",
+        ));
+    }
+    let with_nets = players.iter().flatten().any(|p| matches!(p, SeatArg::Net(_)));
+    if with_nets && config.backend == Backend::Gpu {
+        return Err(CliError::input(
+            "net agents need --backend cpu: they read every game's state after every step",
         ));
     }
     let (variant, seed) = (config.variant, config.seed);
@@ -273,6 +280,10 @@ pub fn run(args: Args) -> Result<(), CliError> {
         (Some(players), true) => look_aheads(players, env.game_states().map_err(CliError::failure)?, variant),
         _ => Vec::new(),
     };
+    let mut nets = match (&players, with_nets) {
+        (Some(players), true) => nets(players, env.game_states().map_err(CliError::failure)?, variant)?,
+        _ => Vec::new(),
+    };
     while games < args.games {
         match &seatings {
             Some(seats) => actions = env.agent_actions(seats).map_err(CliError::failure)?,
@@ -290,10 +301,16 @@ pub fn run(args: Args) -> Result<(), CliError> {
         for search in &mut searches {
             search.act(&mut actions);
         }
+        for net in &mut nets {
+            net.act(&mut actions).map_err(CliError::failure)?;
+        }
         env.step(&actions).map_err(CliError::failure)?;
         // The games' states, read once for all the host's players that follow them.
-        if bots.is_some() || !searches.is_empty() {
+        if bots.is_some() || !searches.is_empty() || !nets.is_empty() {
             let after = env.game_states().map_err(CliError::failure)?;
+            for net in &mut nets {
+                net.stepped(after.clone());
+            }
             let ended = &env.last().terminated;
             for search in &mut searches {
                 search.stepped(after.clone(), ended);
@@ -398,7 +415,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
 /// Per entry of `players` that is the look-ahead, the look-ahead at that entry's seats of every
 /// game (env i seats entry (p + i) mod n at seat p, as the kernel's agents are).
 fn look_aheads(players: &[SeatArg], states: Vec<GameState>, variant: Variant) -> Vec<BatchSearch> {
-    let (n, at_table) = (players.len(), variant.seats() as usize);
+    let n = players.len();
     players
         .iter()
         .enumerate()
@@ -406,13 +423,31 @@ fn look_aheads(players: &[SeatArg], states: Vec<GameState>, variant: Variant) ->
             SeatArg::Search(options) => Some((k, *options)),
             _ => None,
         })
-        .map(|(k, options)| {
-            let seats = (0..states.len())
-                .map(|i| std::array::from_fn(|p| p < at_table && (p + i) % n == k))
-                .collect();
-            BatchSearch::new(variant, options, seats, states.clone())
-        })
+        .map(|(k, options)| BatchSearch::new(variant, options, entry_seats(k, n, &states, variant), states.clone()))
         .collect()
+}
+
+/// Per game, the seats where entry `k` of `n` entries of --agents sits: env i seats entry
+/// (p + i) mod n at seat p, as the kernel's agents are.
+fn entry_seats(k: usize, n: usize, states: &[GameState], variant: Variant) -> Vec<[bool; 4]> {
+    let at_table = variant.seats() as usize;
+    (0..states.len())
+        .map(|i| std::array::from_fn(|p| p < at_table && (p + i) % n == k))
+        .collect()
+}
+
+/// Per entry of `players` that is a net, the net at that entry's seats of every game (seated as
+/// [`look_aheads`] seats the look-ahead).
+fn nets(players: &[SeatArg], states: Vec<GameState>, variant: Variant) -> Result<Vec<BatchNet>, CliError> {
+    let n = players.len();
+    let mut out = Vec::new();
+    for (k, p) in players.iter().enumerate() {
+        if let SeatArg::Net(path) = p {
+            let seats = entry_seats(k, n, &states, variant);
+            out.push(BatchNet::new(net_agent(path, variant)?, seats, states.clone()));
+        }
+    }
+    Ok(out)
 }
 
 /// Why games cannot be exported as asked; creates the folder.

@@ -2,8 +2,10 @@
 
 use std::net::SocketAddr;
 use std::path::PathBuf;
+use std::sync::Arc;
 use std::time::Duration;
 
+use rinshan_net::Net;
 use rinshan_serve::{Limits, NamedBot};
 
 use crate::args::MjaiArgs;
@@ -78,24 +80,49 @@ pub struct Args {
     /// takes runs `sh -c "COMMAND SEAT"`; visitors choose it by NAME, never give a command
     #[arg(long = "mjai-bot", value_name = "NAME=COMMAND")]
     mjai_bots: Vec<String>,
+    /// A trained net the page offers as an opponent, `NAME=PATH` (repeatable): a file of
+    /// examples/train/export.py, played on the CPU; visitors choose it by NAME, never give a path
+    #[arg(long = "net", value_name = "NAME=PATH")]
+    nets: Vec<String>,
     #[command(flatten)]
     mjai: MjaiArgs,
+}
+
+/// `NAME=VALUE` of a repeatable `flag`, the name letters, digits, `-`, `_` and `.`.
+fn named<'a>(flag: &str, given: &'a str, what: &str) -> Result<(&'a str, &'a str), CliError> {
+    let (name, value) = given
+        .split_once('=')
+        .map(|(n, c)| (n.trim(), c.trim()))
+        .filter(|(n, c)| !n.is_empty() && !c.is_empty())
+        .ok_or_else(|| CliError::input(format!("{flag} {given:?}: give NAME={what}")))?;
+    if !name.chars().all(|c| c.is_ascii_alphanumeric() || "-_.".contains(c)) {
+        return Err(CliError::input(format!(
+            "{flag} {given:?}: a name is letters, digits, `-`, `_` and `.`"
+        )));
+    }
+    Ok((name, value))
+}
+
+/// The nets of `--net`, each `NAME=PATH`, read at start: a file that cannot be played fails the
+/// command, not a visitor's game.
+fn nets(args: &Args) -> Result<Vec<(String, Arc<Net>)>, CliError> {
+    let mut out: Vec<(String, Arc<Net>)> = Vec::new();
+    for given in &args.nets {
+        let (name, path) = named("--net", given, "PATH")?;
+        if out.iter().any(|(n, _)| n == name) {
+            return Err(CliError::input(format!("--net: two nets are named `{name}`")));
+        }
+        let net = Net::load(path).map_err(|e| CliError::input(format!("--net {name}: {e}")))?;
+        out.push((name.to_string(), Arc::new(net)));
+    }
+    Ok(out)
 }
 
 /// The bots of `--mjai-bot`, each `NAME=COMMAND`.
 fn bots(args: &Args) -> Result<Vec<NamedBot>, CliError> {
     let mut out: Vec<NamedBot> = Vec::new();
     for given in &args.mjai_bots {
-        let (name, command) = given
-            .split_once('=')
-            .map(|(n, c)| (n.trim(), c.trim()))
-            .filter(|(n, c)| !n.is_empty() && !c.is_empty())
-            .ok_or_else(|| CliError::input(format!("--mjai-bot {given:?}: give NAME=COMMAND")))?;
-        if !name.chars().all(|c| c.is_ascii_alphanumeric() || "-_.".contains(c)) {
-            return Err(CliError::input(format!(
-                "--mjai-bot {given:?}: a bot's name is letters, digits, `-`, `_` and `.`"
-            )));
-        }
+        let (name, command) = named("--mjai-bot", given, "COMMAND")?;
         if out.iter().any(|b| b.name == name) {
             return Err(CliError::input(format!("--mjai-bot: two bots are named `{name}`")));
         }
@@ -128,6 +155,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
         return Err(CliError::input(format!("{name} must be at least 1")));
     }
     let bots = bots(&args)?;
+    let nets = nets(&args)?;
     let data_dir = match (args.no_data_dir, args.data_dir) {
         (true, _) => None,
         (false, Some(dir)) => Some(dir),
@@ -153,10 +181,14 @@ pub fn run(args: Args) -> Result<(), CliError> {
         saves_per_network_hour: args.saves_per_network_hour,
         fixed_seed: None,
         bots,
+        nets,
         review_rollouts: args.review_rollouts,
     };
     for b in &limits.bots {
         println!("MJAI bot `{}` offered as mjai:{}: {}", b.name, b.name, b.spec.command);
+    }
+    for (name, net) in &limits.nets {
+        println!("net `{name}` offered as net:{name} ({} actions)", net.actions.len());
     }
     match &limits.data_dir {
         Some(dir) => println!("finished games are kept in {}", dir.join("games").display()),

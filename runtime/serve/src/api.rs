@@ -96,9 +96,11 @@ pub(super) fn app_with_store(limits: Limits) -> (Router, Store) {
 }
 
 /// `GET /api/agents`: what a new game may choose; the server's MJAI bots are agents named
-/// `mjai:NAME`.
+/// `mjai:NAME`, its nets `net:NAME`.
 async fn agents(State(store): State<Store>) -> axum::Json<Value> {
-    let bots = store.limits().bots.iter().map(|b| format!("{MJAI}{}", b.name));
+    let limits = store.limits();
+    let nets = limits.nets.iter().map(|(name, _)| format!("{NET}{name}"));
+    let bots = limits.bots.iter().map(|b| format!("{MJAI}{}", b.name)).chain(nets);
     axum::Json(json!({
         "agents": Agent::ALL.iter().map(|a| a.name().to_string()).chain(["search".to_string()]).chain(bots).collect::<Vec<_>>(),
         "variants": Variant::ALL.iter().map(|v| v.to_string()).collect::<Vec<_>>(),
@@ -178,13 +180,28 @@ const WINDS: [&str; 4] = ["East", "South", "West", "North"];
 /// How a new game names one of the server's MJAI bots among its agents.
 const MJAI: &str = "mjai:";
 
+/// How a new game names one of the server's nets among its agents.
+const NET: &str = "net:";
+
 /// The most play-outs a look-ahead opponent may spend per decision (about 60 ms on one core at
 /// 2,048, its budget in docs/strength.md's strongest runs).
 pub const MAX_SEARCH_ROLLOUTS: u32 = 2048;
 
 /// A new game's agent: a built-in one by name, the look-ahead (`search` or `search:rollouts=N`),
-/// or a bot the server offers as `mjai:NAME`.
-fn opponent(name: &str, limits: &Limits) -> Result<Opponent, ApiError> {
+/// a bot the server offers as `mjai:NAME`, or a net it offers as `net:NAME`.
+fn opponent(name: &str, variant: Variant, limits: &Limits) -> Result<Opponent, ApiError> {
+    if let Some(wanted) = name.strip_prefix(NET) {
+        let Some((_, net)) = limits.nets.iter().find(|(n, _)| n == wanted) else {
+            let offered: Vec<&str> = limits.nets.iter().map(|(n, _)| n.as_str()).collect();
+            return Err(unprocessable(match offered.is_empty() {
+                true => format!("no net `{wanted}`: this server offers none (rinshan serve --net NAME=PATH)"),
+                false => format!("no net `{wanted}`: this server offers {}", offered.join(", ")),
+            }));
+        };
+        return rinshan_net::NetAgent::new(net.clone(), variant)
+            .map(Opponent::Net)
+            .map_err(unprocessable);
+    }
     if name.starts_with("search") {
         let o: rinshan_search::Options = name.parse().map_err(unprocessable)?;
         if o.rollouts > MAX_SEARCH_ROLLOUTS || o.ms > 1000 {
@@ -211,7 +228,11 @@ fn setup(g: NewGame, limits: &Limits) -> Result<Setup, ApiError> {
     let variant: Variant = parse("variant", &g.variant)?;
     let table = variant.seats() as usize;
     let mode: Mode = parse("mode", &g.mode)?;
-    let agents: Vec<Opponent> = g.agents.iter().map(|a| opponent(a, limits)).collect::<Result<_, _>>()?;
+    let agents: Vec<Opponent> = g
+        .agents
+        .iter()
+        .map(|a| opponent(a, variant, limits))
+        .collect::<Result<_, _>>()?;
     let person = g.seat.is_some() || g.wind.is_some();
     let want = table - usize::from(person);
     if agents.len() != want {

@@ -31,6 +31,9 @@ pub enum Opponent {
     /// The look-ahead: its own turns thought out on a blocking thread (see
     /// [`Session::search_work`]), its claims its base agent's.
     Search(rinshan_search::Options),
+    /// One of the server's trained nets, played at once (a forward pass is a fraction of a
+    /// millisecond).
+    Net(rinshan_net::NetAgent),
 }
 
 impl std::fmt::Display for Opponent {
@@ -39,6 +42,7 @@ impl std::fmt::Display for Opponent {
             Opponent::Agent(a) => write!(f, "{a}"),
             Opponent::Bot(b) => f.write_str(&b.name),
             Opponent::Search(o) => f.write_str(&o.name()),
+            Opponent::Net(n) => f.write_str(&n.name()),
         }
     }
 }
@@ -470,6 +474,7 @@ impl Session {
     fn agent_action(&mut self) -> Result<u32, String> {
         let current = self.current() as usize;
         let agent = match &self.setup.seats[current] {
+            Some(Opponent::Net(net)) => return net.act(&self.state()?).map_err(|e| e.to_string()),
             Some(Opponent::Agent(a)) => *a,
             // The look-ahead leaves claims to its base agent.
             Some(Opponent::Search(o)) => o.base,

@@ -65,6 +65,8 @@ pub struct Limits {
     pub fixed_seed: Option<u64>,
     /// The MJAI bots a game may seat, by name (each seat runs its own process of the command).
     pub bots: Vec<NamedBot>,
+    /// The trained nets a game may seat, by name (`net:NAME`).
+    pub nets: Vec<(String, Arc<rinshan_net::Net>)>,
     /// The look-ahead's play-outs per decision in a review on the page: a half game costs about
     /// 3 s of 2 cores at 256, and a review must be drawn within `request_timeout`.
     pub review_rollouts: u32,
@@ -91,6 +93,7 @@ impl Default for Limits {
             saves_per_network_hour: 120,
             fixed_seed: None,
             bots: Vec::new(),
+            nets: Vec::new(),
             review_rollouts: 256,
         }
     }
