@@ -12,6 +12,7 @@
 //! * [`agent`]  — the net playing a variant: its legal actions mapped to the net's, the greedy
 //!   choice, one forward pass for a batch of decisions; an arena entrant.
 //! * [`batch`]  — the net at seats of a batch of games stepped by someone else (selfplay, Python).
+//! * [`random`] — nets of random weights in the same layout, for tests and timings.
 //!
 //! The agent sees what its seat sees: its inputs are the observation of the player to move.
 
@@ -22,6 +23,7 @@ pub mod batch;
 pub mod file;
 pub mod inputs;
 pub mod model;
+pub mod random;
 
 pub use agent::NetAgent;
 pub use batch::BatchNet;
