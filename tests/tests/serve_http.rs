@@ -393,6 +393,46 @@ async fn the_look_ahead_plays_as_an_opponent() {
     }
 }
 
+/// A net the server offers (`--net NAME=PATH`) as an opponent: listed as `net:NAME`, it plays a
+/// whole game that replays from its log; a net the server lacks, or one that cannot play the rule
+/// set, is refused with the reason.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_net_plays_as_an_opponent() {
+    use rinshan_net::random::{net_file, Shape};
+    let net = rinshan_net::Net::from_bytes(&net_file(Shape::default(), 2), "small.safetensors", "small".into())
+        .expect("a random net");
+    let app = app(Limits {
+        fixed_seed: Some(9),
+        nets: vec![("small".into(), std::sync::Arc::new(net))],
+        ..Limits::default()
+    });
+    let (_, agents) = get(&app, "/api/agents").await;
+    assert!(
+        parsed(&agents)["agents"]
+            .as_array()
+            .is_some_and(|a| a.contains(&json!("net:small"))),
+        "{agents}"
+    );
+    let body = json!({"variant": "red", "mode": "east", "wind": 0, "agents": ["net:small", "defensive", "net:small"], "delay_ms": 0});
+    let v = new_game(&app, body).await;
+    let id = v["id"].as_str().expect("an id").to_string();
+    let last = play_to_the_end(&app, &id).await;
+    assert_eq!(last["phase"], "over", "{last}");
+    replayed_log(&app, &id).await;
+    for (variant, agent, says) in [
+        ("red", "net:large", "no net `large`: this server offers small"),
+        ("sanma", "net:small", "no logit for kita"),
+    ] {
+        let body = json!({"variant": variant, "wind": 0, "agents": [agent, "rule", "rule", "rule"]});
+        let (status, text) = post(&app, "/api/games", &body).await;
+        assert_eq!(status, StatusCode::UNPROCESSABLE_ENTITY, "{agent}: {text}");
+        assert!(
+            parsed(&text)["error"].as_str().is_some_and(|e| e.contains(says)),
+            "{agent}: {text}"
+        );
+    }
+}
+
 /// A game of another rule set is logged too: the log names it and replays under it.
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn a_wrc_game_is_logged_under_its_rules() {

@@ -88,8 +88,8 @@ pub struct Args {
     mjai: MjaiArgs,
 }
 
-/// `NAME=VALUE` of a repeatable `flag`, the name letters, digits, `-`, `_` and `.`.
-fn named<'a>(flag: &str, given: &'a str, what: &str) -> Result<(&'a str, &'a str), CliError> {
+/// `NAME=VALUE` of a repeatable `flag` naming a `noun`, the name letters, digits, `-`, `_` and `.`.
+fn named<'a>(flag: &str, given: &'a str, noun: &str, what: &str) -> Result<(&'a str, &'a str), CliError> {
     let (name, value) = given
         .split_once('=')
         .map(|(n, c)| (n.trim(), c.trim()))
@@ -97,7 +97,7 @@ fn named<'a>(flag: &str, given: &'a str, what: &str) -> Result<(&'a str, &'a str
         .ok_or_else(|| CliError::input(format!("{flag} {given:?}: give NAME={what}")))?;
     if !name.chars().all(|c| c.is_ascii_alphanumeric() || "-_.".contains(c)) {
         return Err(CliError::input(format!(
-            "{flag} {given:?}: a name is letters, digits, `-`, `_` and `.`"
+            "{flag} {given:?}: a {noun}'s name is letters, digits, `-`, `_` and `.`"
         )));
     }
     Ok((name, value))
@@ -108,7 +108,7 @@ fn named<'a>(flag: &str, given: &'a str, what: &str) -> Result<(&'a str, &'a str
 fn nets(args: &Args) -> Result<Vec<(String, Arc<Net>)>, CliError> {
     let mut out: Vec<(String, Arc<Net>)> = Vec::new();
     for given in &args.nets {
-        let (name, path) = named("--net", given, "PATH")?;
+        let (name, path) = named("--net", given, "net", "PATH")?;
         if out.iter().any(|(n, _)| n == name) {
             return Err(CliError::input(format!("--net: two nets are named `{name}`")));
         }
@@ -122,7 +122,7 @@ fn nets(args: &Args) -> Result<Vec<(String, Arc<Net>)>, CliError> {
 fn bots(args: &Args) -> Result<Vec<NamedBot>, CliError> {
     let mut out: Vec<NamedBot> = Vec::new();
     for given in &args.mjai_bots {
-        let (name, command) = named("--mjai-bot", given, "COMMAND")?;
+        let (name, command) = named("--mjai-bot", given, "bot", "COMMAND")?;
         if out.iter().any(|b| b.name == name) {
             return Err(CliError::input(format!("--mjai-bot: two bots are named `{name}`")));
         }
