@@ -8,7 +8,7 @@ See docs/env.md ("Python") for the whole API.
 """
 
 from . import dataset, mjai, tenhou
-from ._core import __version__
+from ._core import Net, __version__
 from .env import (
     AGENTS,
     FORMS,
@@ -33,6 +33,7 @@ __all__ = [
     "AGENTS",
     "FORMS",
     "MODES",
+    "Net",
     "VARIANTS",
     "Env",
     "Evaluation",

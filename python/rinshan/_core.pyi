@@ -80,6 +80,20 @@ class MjaiPlayer:
         self, line: str, dialect: str, decide: Callable[..., Any]
     ) -> tuple[str | None, list[str]]: ...
 
+@final
+class Net:
+    def __new__(cls, path: str) -> Net: ...
+    @property
+    def actions(self) -> list[str]: ...
+    @property
+    def analysis(self) -> list[str]: ...
+    def logits(
+        self,
+        rows: npt.NDArray[np.uint8],
+        scalars: npt.NDArray[np.int16],
+        mask: npt.NDArray[np.bool_],
+    ) -> npt.NDArray[np.float32]: ...
+
 def convert_log(path: str, to: str) -> str: ...
 def dataset_build(
     inputs: list[str],

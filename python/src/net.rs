@@ -8,6 +8,9 @@ use pyo3::prelude::*;
 use rinshan_net::inputs::Inputs;
 use rinshan_net::Net;
 
+/// A trained net's file (examples/train/export.py), run as `net:PATH` runs it: `Net(path)` reads
+/// and checks it (ValueError with the reason if it cannot be played); `logits(rows, scalars,
+/// mask)` gives its masked logits over `actions`.
 #[pyclass(name = "Net", module = "rinshan._core", frozen)]
 pub(crate) struct PyNet {
     net: Net,

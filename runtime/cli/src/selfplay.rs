@@ -38,8 +38,9 @@ pub struct Args {
     #[arg(long)]
     json: bool,
     /// Who plays the seats: built-in agents (random, rule, greedy, defensive), the look-ahead
-    /// (`search`, or with settings as in `arena`; CPU backend) or MJAI bots (`mjai:COMMAND`, see
-    /// `arena`), one per seat (three players: three, or four taking turns to
+    /// (`search`, or with settings as in `arena`; CPU backend), trained nets (`net:PATH`: a file of
+    /// examples/train/export.py, each step's decisions in one forward pass; CPU backend) or MJAI
+    /// bots (`mjai:COMMAND`, see `arena`), one per seat (three players: three, or four taking turns to
     /// sit out); env i seats agent (p + i) mod n of the n listed at seat p, so over a batch of a
     /// multiple of n envs each agent plays every seat equally; or `uniform` for a uniformly random
     /// legal policy drawn on the host (most such games end in draws)

@@ -49,7 +49,17 @@ fn the_arena_seats_a_net_and_its_games_do_not_depend_on_the_threads() {
     let agents = format!("net:{},defensive,rule,greedy", path.display());
     let run = |threads: &str| {
         json(&rinshan(&[
-            "arena", "--agents", &agents, "--games", "8", "--mode", "east", "--seed", "2", "--threads", threads,
+            "arena",
+            "--agents",
+            &agents,
+            "--games",
+            "8",
+            "--mode",
+            "east",
+            "--seed",
+            "2",
+            "--threads",
+            threads,
             "--json",
         ]))
     };
@@ -69,7 +79,10 @@ fn mjai_bot_plays_a_net_exactly_as_the_arena_seats_it() {
     let base = ["--games", "4", "--mode", "east", "--seed", "6", "--json"];
     let direct = format!("net:{},defensive,greedy,rule", path.display());
     let seated = json(&rinshan(&[&["arena", "--agents", &direct], &base[..]].concat()));
-    let bot = format!("mjai:{exe} mjai-bot --agent net:{},defensive,greedy,rule", path.display());
+    let bot = format!(
+        "mjai:{exe} mjai-bot --agent net:{},defensive,greedy,rule",
+        path.display()
+    );
     let v = json(&rinshan(&[&["arena", "--agents", &bot], &base[..]].concat()));
     assert_eq!(v["faults"], serde_json::json!([]));
     let rest = |v: &serde_json::Value| standings(v).into_iter().map(|(_, r)| r).collect::<Vec<_>>();
@@ -99,10 +112,22 @@ fn a_net_that_cannot_be_played_is_refused_with_the_reason() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("`net:` needs the path"));
     // The random nets, as the training example's, act in red's actions: sanma's kita is not one.
     let path = net("sanma", 6);
-    let out = rinshan(&["arena", "--variant", "sanma", "--agents", &format!("net:{},rule,rule", path.display())]);
+    let out = rinshan(&[
+        "arena",
+        "--variant",
+        "sanma",
+        "--agents",
+        &format!("net:{},rule,rule", path.display()),
+    ]);
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("no logit for kita"));
-    let out = rinshan(&["selfplay", "--backend", "gpu", "--agents", &format!("net:{},rule,rule,rule", path.display())]);
+    let out = rinshan(&[
+        "selfplay",
+        "--backend",
+        "gpu",
+        "--agents",
+        &format!("net:{},rule,rule,rule", path.display()),
+    ]);
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("--backend cpu"));
     let out = rinshan(&["serve", "--net", &format!("a={missing}")]);
