@@ -17,9 +17,8 @@ import json
 import pathlib
 
 import torch
+from common import ANALYSIS, CANONICAL, PLANES, SCALARS, Net, Space, load_net
 from safetensors.torch import save_file
-
-from common import ANALYSIS, PLANES, SCALARS, Net, Space, CANONICAL, load_net
 
 # What a reader checks first: a file of another layout is refused, not misread.
 FORMAT, VERSION = "rinshan-net", "1"

@@ -12,6 +12,7 @@ __all__ = [
     "__version__",
     "Env",
     "MjaiPlayer",
+    "Net",
     "shanten",
     "score",
     "tenhou_read",

@@ -28,7 +28,7 @@ def exported(tmp_path_factory):
     import torch
 
     sys.path.insert(0, str(TRAIN))
-    from common import SCALARS, Net, Space, CANONICAL
+    from common import CANONICAL, SCALARS, Net, Space
     from export import export
 
     torch.manual_seed(3)
