@@ -2,14 +2,10 @@
 //! start (its Python lacked numpy) lost 8 of 8 games by penalty and the arena still exited 0, so
 //! a script or CI job took the penalty's standing for the bot's play.
 
-use std::process::{Command, Output};
+mod common;
 
-fn rinshan(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_rinshan"))
-        .args(args)
-        .output()
-        .expect("run rinshan")
-}
+use common::rinshan;
+use std::process::Output;
 
 fn stderr(out: &Output) -> String {
     String::from_utf8_lossy(&out.stderr).into_owned()

@@ -1,18 +1,9 @@
 //! The `rinshan` binary as a user calls it: output shapes, exit codes and error messages.
 
-use std::process::{Command, Output};
+mod common;
 
-fn rinshan(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_rinshan"))
-        .args(args)
-        .output()
-        .expect("run rinshan")
-}
-
-fn json(out: &Output) -> serde_json::Value {
-    assert!(out.status.success(), "stderr: {}", String::from_utf8_lossy(&out.stderr));
-    serde_json::from_slice(&out.stdout).expect("JSON on stdout")
-}
+use common::{json, rinshan};
+use std::process::Command;
 
 #[test]
 fn shanten_json_reports_every_form() {

@@ -2,14 +2,9 @@
 //! each Tenhou game as mjlog XML and as tenhou.net/6 JSON, and a dataset of the folder holds each
 //! game's rows once.
 
-use std::process::{Command, Output};
+mod common;
 
-fn rinshan(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_rinshan"))
-        .args(args)
-        .output()
-        .expect("run rinshan")
-}
+use common::rinshan;
 
 #[test]
 fn the_summary_lists_each_game_left_out_as_a_duplicate() {

@@ -2,22 +2,12 @@
 //! (playing exactly as the net seated directly) and the web server's `--net`, with clear errors
 //! for a file that cannot be played. The nets here have random weights: the point is the seating.
 
+mod common;
+
 use std::path::PathBuf;
-use std::process::{Command, Output};
 
+use common::{json, rinshan};
 use rinshan_net::random::{net_file, Shape};
-
-fn rinshan(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_rinshan"))
-        .args(args)
-        .output()
-        .expect("run rinshan")
-}
-
-fn json(out: &Output) -> serde_json::Value {
-    assert!(out.status.success(), "stderr: {}", String::from_utf8_lossy(&out.stderr));
-    serde_json::from_slice(&out.stdout).expect("JSON on stdout")
-}
 
 /// A random net's file, written once per name.
 fn net(name: &str, seed: u64) -> PathBuf {

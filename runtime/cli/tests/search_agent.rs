@@ -2,15 +2,11 @@
 //! report), self-play, `mjai-bot --agent search`, the reviewer (`review`), and clear errors for a
 //! bad setting or a backend that cannot seat it.
 
-use std::io::Write;
-use std::process::{Command, Output, Stdio};
+mod common;
 
-fn rinshan(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_rinshan"))
-        .args(args)
-        .output()
-        .expect("run rinshan")
-}
+use common::rinshan;
+use std::io::Write;
+use std::process::{Command, Stdio};
 
 #[test]
 fn the_arena_seats_the_look_ahead_and_reports_its_totals() {
