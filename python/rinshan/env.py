@@ -205,8 +205,9 @@ class Env:
             False leaves a finished game until `reset`.
         opponents: None (the caller plays every seat), a built-in agent's name from `AGENTS`
             (`random`, `rule`, `greedy`, `defensive`), the look-ahead (`search`, or with its
-            settings: `search:rollouts=512:seed=2`; CPU backend), or `mjai:COMMAND` for an
-            outside MJAI bot; with `hero_seats` they play every other seat inside `step`.
+            settings: `search:rollouts=512:seed=2`; CPU backend), a trained net's file
+            (`net:PATH`, written by examples/train/export.py; CPU backend), or `mjai:COMMAND` for
+            an outside MJAI bot; with `hero_seats` they play every other seat inside `step`.
         hero_seats: The seat the caller plays (0..3), or one per env; needs `opponents`.
         penalty: Points an illegal action costs (None: the rule set's own).
         mjai_dialect: `app` (mjai.app's: a JSON array of events per line) or `stdio` (Mortal's
