@@ -281,14 +281,17 @@ def rows(obs: dict, analysis: bool) -> np.ndarray:
     return np.concatenate([obs["planes"], np.stack(extra, axis=1)], axis=1)
 
 
-def tensors(ts, space: Space, analysis: bool):
-    """(planes, scalars, canonical mask) tensors of a TimeStep (copies: the env rewrites them)."""
+def tensors(ts, space: Space, analysis: bool, take=None):
+    """(planes, scalars, canonical mask) tensors of a TimeStep, of the envs `take` (default:
+    all). Copies: the env rewrites its arrays."""
     obs = ts.observation
-    return (
-        torch.from_numpy(rows(obs, analysis).copy()),
-        torch.tensor(np.asarray(obs["scalars"])),
-        torch.from_numpy(space.mask(ts.legal_action_mask)),
-    )
+    planes, scalars = rows(obs, analysis), np.asarray(obs["scalars"])
+    mask = ts.legal_action_mask
+    if take is None:
+        planes, scalars = planes.copy(), scalars.copy()
+    else:
+        planes, scalars, mask = planes[take], scalars[take], mask[take]
+    return torch.from_numpy(planes), torch.from_numpy(scalars), torch.from_numpy(space.mask(mask))
 
 
 def greedy_policy(net: Net, variant: str):

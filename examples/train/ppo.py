@@ -2,7 +2,9 @@
 
 Opponents (`[ppo] opponents`):
 - "bc": the frozen BC net plays the three other seats (its most likely action); the learner sits in
-  seat `env % 4`, so every seat and wind is trained;
+  seat `env % 4`, so every seat and wind is trained; with `bc_in_rust = true` the env plays those
+  seats itself (the BC net exported, as `net:PATH` opponents), measured slower on 2 cores
+  (docs/rl-validation.md);
 - "self": the learner plays all four seats;
 - a built-in agent ("rule", "greedy", ...): hero mode, the agents play inside `step`.
 
@@ -44,6 +46,7 @@ from common import (
     setting,
     tensors,
 )
+from export import export
 
 import rinshan
 
@@ -144,13 +147,20 @@ def train_ppo(
 
     n, t_len = int(c["num_envs"]), int(c["rollout"])
     opponents = c["opponents"]
+    # With `bc_in_rust`, the frozen BC net plays its seats inside the env (`net:PATH`, the same
+    # greedy function in Rust): this loop then reads and infers only the learner's rows.
+    bc_in_rust = opponents == "bc" and bool(c.get("bc_in_rust", False))
+    env_opponents = opponents
+    if bc_in_rust:
+        env_opponents = f"net:{out / 'bc.safetensors'}"
+        export(bc, out / "bc.safetensors")
     learner = np.zeros((n, 4), bool)
-    hero_mode = opponents not in ("bc", "self")
+    hero_mode = bc_in_rust or opponents not in ("bc", "self")
     if opponents == "self":
         learner[:] = True
     else:
         learner[np.arange(n), np.arange(n) % 4] = True
-    kw = {"opponents": opponents, "hero_seats": np.arange(n) % 4} if hero_mode else {}
+    kw = {"opponents": env_opponents, "hero_seats": np.arange(n) % 4} if hero_mode else {}
     kw["oracle"] = oracle
     env = make_env(cfg, table, n, seed + 1000, **kw)
     variant, mode = setting(cfg, table)
@@ -213,12 +223,16 @@ def train_ppo(
                     mine = learner[np.arange(n), cp]
                     if hero_mode:
                         mine &= ts.info["hero"]
-                    planes, scalars, mask = tensors(ts, space, analysis)
                     rows = np.nonzero(mine)[0]
                     actions = np.zeros(n, np.int64)
-                    p, s, m = planes[rows], scalars[rows], mask[rows]
+                    # Every row only where this loop plays the BC seats too.
+                    take = rows if hero_mode else None
+                    planes, scalars, mask = tensors(ts, space, analysis, take)
+                    p, s, m = (planes, scalars, mask)
+                    if not hero_mode:
+                        p, s, m = planes[rows], scalars[rows], mask[rows]
                 with split("inference"):
-                    if opponents == "bc":
+                    if opponents == "bc" and not bc_in_rust:
                         bc_logits = bc(planes, scalars, mask)
                         actions[:] = bc_logits.argmax(1).numpy()
                         ref = torch.log_softmax(bc_logits[rows], 1)

@@ -109,7 +109,9 @@ def test_tile_head_is_one_layer_over_each_tile_and_the_context():
 
 
 @needs_torch
-def test_throughput_reports_the_split_of_a_few_updates():
+@pytest.mark.parametrize("bc_in_rust", ["false", "true"])
+def test_throughput_reports_the_split_of_a_few_updates(bc_in_rust):
+    """With `bc_in_rust` the BC seats are the env's `net:PATH` opponents: the same loop."""
     done = subprocess.run(
         [
             sys.executable,
@@ -118,6 +120,8 @@ def test_throughput_reports_the_split_of_a_few_updates():
             str(TRAIN / "configs" / "smoke.toml"),
             "--updates",
             "2",
+            "--set",
+            f"ppo.bc_in_rust={bc_in_rust}",
         ],
         capture_output=True,
         text=True,

@@ -10,7 +10,7 @@ use rinshan_engine::generated::kernel::GameState;
 use rinshan_engine::Variant;
 
 use crate::file::{Net, NetError};
-use crate::inputs::Inputs;
+use crate::inputs::{Decision, Inputs};
 
 /// A net that plays `variant`.
 #[derive(Debug, Clone)]
@@ -62,8 +62,17 @@ impl NetAgent {
 
     /// Adds the decision of the player to move in `state` to `inputs`.
     pub fn push(&self, inputs: &mut Inputs, state: &GameState) {
-        let legal = |a: usize| self.to_env[a].is_some_and(|e| state.mask[e as usize / 32] >> (e % 32) & 1 == 1);
-        inputs.push_state(self.variant, state, &self.net.analysis, legal);
+        inputs.push_decision(&self.decision(state), self.legal(state));
+    }
+
+    /// The observation of the player to move in `state`, as the net reads it.
+    pub fn decision(&self, state: &GameState) -> Decision {
+        Decision::of(self.variant, state, &self.net.analysis)
+    }
+
+    /// Whether net action `a` is legal in `state`.
+    pub fn legal<'a>(&'a self, state: &'a GameState) -> impl Fn(usize) -> bool + 'a {
+        |a: usize| self.to_env[a].is_some_and(|e| state.mask[e as usize / 32] >> (e % 32) & 1 == 1)
     }
 
     /// The variant's action ids the net plays at `inputs`' decisions.

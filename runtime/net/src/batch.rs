@@ -1,6 +1,7 @@
 //! The net at chosen seats of a batch of games stepped by someone else (selfplay, the Python
 //! env's opponents): all its decisions of a step in one forward pass.
 
+use rayon::prelude::*;
 use rinshan_engine::generated::kernel::GameState;
 
 use crate::agent::NetAgent;
@@ -37,16 +38,21 @@ impl BatchNet {
     /// Replaces the actions of the games whose seat to act is the net's by the net's.
     pub fn act(&mut self, actions: &mut [u32]) -> Result<(), NetError> {
         self.inputs.clear();
-        let mut at = Vec::new();
-        for (i, (s, seats)) in self.states.iter().zip(&self.seats).enumerate() {
-            // A finished game's state asks nothing.
-            if i < actions.len() && seats[s.current as usize % 4] && s.mask != [0; 3] {
-                self.agent.push(&mut self.inputs, s);
-                at.push(i);
-            }
-        }
+        let at: Vec<usize> = (0..self.states.len().min(actions.len()))
+            .filter(|&i| {
+                let s = &self.states[i];
+                // A finished game's state asks nothing.
+                self.seats[i][s.current as usize % 4] && s.mask != [0; 3]
+            })
+            .collect();
         if at.is_empty() {
             return Ok(());
+        }
+        // The observations (the analysis form's shanten and waits above all) are most of the
+        // work outside the forward pass: built in parallel, then batched in order.
+        let decisions: Vec<_> = at.par_iter().map(|&i| self.agent.decision(&self.states[i])).collect();
+        for (&i, d) in at.iter().zip(&decisions) {
+            self.inputs.push_decision(d, self.agent.legal(&self.states[i]));
         }
         for (i, a) in at.into_iter().zip(self.agent.choose(&self.inputs)?) {
             actions[i] = a;

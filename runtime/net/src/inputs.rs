@@ -8,39 +8,18 @@ use rinshan_engine::Variant;
 
 use crate::file::{drawn_row, planes_shape, NetError};
 
-/// Decisions for one forward pass.
-#[derive(Debug, Clone, Default)]
-pub struct Inputs {
-    rows: usize,
-    actions: usize,
-    planes: Vec<f32>,
+/// One decision's observation as the net reads it: the planes form's rows and then the analysis
+/// form's fields named, a signed field shifted up by one so that "none" (-1) is 0 (as the
+/// training example's `rows`), and the scalars.
+#[derive(Debug, Clone)]
+pub struct Decision {
+    rows: Vec<f32>,
     scalars: Vec<f32>,
-    drawn: Vec<u32>,
-    masks: Vec<bool>,
 }
 
-impl Inputs {
-    /// An empty batch of decisions with `analysis` rows under the planes, for a net of `actions`
-    /// logits.
-    pub fn new(analysis: usize, actions: usize) -> Inputs {
-        Inputs {
-            rows: planes_shape().0 + analysis,
-            actions,
-            ..Inputs::default()
-        }
-    }
-
-    /// Adds the decision of the player to move in `state`: its observation (the planes form, and
-    /// the analysis form's `analysis` fields as rows, a signed field shifted up by one so that
-    /// "none" (-1) is 0, as the training example's `rows`), and the legal actions in net order
-    /// (`legal(a)` for net action `a`).
-    pub fn push_state(
-        &mut self,
-        variant: Variant,
-        state: &GameState,
-        analysis: &[&str],
-        legal: impl Fn(usize) -> bool,
-    ) {
+impl Decision {
+    /// The decision of the player to move in `state`.
+    pub fn of(variant: Variant, state: &GameState, analysis: &[&str]) -> Decision {
         let planes = record(variant, Form::Planes, state, 4);
         let extra = if analysis.is_empty() {
             Vec::new()
@@ -62,12 +41,55 @@ impl Inputs {
                     .map(|v| (v + shift) as f32),
             );
         }
-        let scalars: Vec<f32> = field_values(Form::Planes, &planes, "scalars")
+        let scalars = field_values(Form::Planes, &planes, "scalars")
             .into_iter()
             .map(|v| v as f32)
             .collect();
+        Decision { rows, scalars }
+    }
+}
+
+/// Decisions for one forward pass.
+#[derive(Debug, Clone, Default)]
+pub struct Inputs {
+    rows: usize,
+    actions: usize,
+    planes: Vec<f32>,
+    /// The same values tile by tile (34 x rows per decision): the tile head reads each tile's
+    /// column, and a transpose on the host is cheaper than candle's strided copy.
+    columns: Vec<f32>,
+    scalars: Vec<f32>,
+    drawn: Vec<u32>,
+    masks: Vec<bool>,
+}
+
+impl Inputs {
+    /// An empty batch of decisions with `analysis` rows under the planes, for a net of `actions`
+    /// logits.
+    pub fn new(analysis: usize, actions: usize) -> Inputs {
+        Inputs {
+            rows: planes_shape().0 + analysis,
+            actions,
+            ..Inputs::default()
+        }
+    }
+
+    /// Adds the decision of the player to move in `state` ([`Decision::of`]), with the legal
+    /// actions in net order (`legal(a)` for net action `a`).
+    pub fn push_state(
+        &mut self,
+        variant: Variant,
+        state: &GameState,
+        analysis: &[&str],
+        legal: impl Fn(usize) -> bool,
+    ) {
+        self.push_decision(&Decision::of(variant, state, analysis), legal);
+    }
+
+    /// Adds a decision made by [`Decision::of`].
+    pub fn push_decision(&mut self, d: &Decision, legal: impl Fn(usize) -> bool) {
         // The engine's own records have the layout `Net::load` checked.
-        let _ = self.push(&rows, &scalars, legal);
+        let _ = self.push(&d.rows, &d.scalars, legal);
     }
 
     /// Adds a decision from its rows (rows x 34 counts, row-major) and scalars (raw values).
@@ -90,6 +112,9 @@ impl Inputs {
                 .fold(0, |best, (i, &v)| if v > row[best] { i } else { best })
         });
         self.planes.extend_from_slice(rows);
+        for t in 0..34 {
+            self.columns.extend(rows.iter().skip(t).step_by(34));
+        }
         self.scalars.extend_from_slice(scalars);
         self.drawn.push(drawn as u32);
         self.masks.extend((0..self.actions).map(legal));
@@ -109,6 +134,7 @@ impl Inputs {
     /// Empties it for the next batch, keeping its memory.
     pub fn clear(&mut self) {
         self.planes.clear();
+        self.columns.clear();
         self.scalars.clear();
         self.drawn.clear();
         self.masks.clear();
@@ -124,6 +150,10 @@ impl Inputs {
 
     pub(crate) fn planes(&self) -> &[f32] {
         &self.planes
+    }
+
+    pub(crate) fn columns(&self) -> &[f32] {
+        &self.columns
     }
 
     pub(crate) fn scalars(&self) -> &[f32] {

@@ -28,3 +28,4 @@ pub mod random;
 pub use agent::NetAgent;
 pub use batch::BatchNet;
 pub use file::{Net, NetError};
+pub use inputs::Decision;

@@ -71,18 +71,15 @@ impl TileHead {
     }
 
     /// Per position and action, the score added to the logit: (n, actions).
-    fn scores(&self, x: &Tensor, g: &Tensor, drawn: &Tensor) -> candle_core::Result<Tensor> {
-        let (n, rows, tiles) = x.dims3()?;
+    /// `columns`: each tile's column of the scaled rows, (n * 34, rows).
+    fn scores(&self, columns: &Tensor, g: &Tensor, drawn: &Tensor) -> candle_core::Result<Tensor> {
+        let (n, tiles) = (g.dims()[0], 34);
         let context = self
             .context
             .forward(g)?
             .matmul(&self.context_t)?
             .broadcast_add(&self.first_bias)?;
-        let columns = x
-            .transpose(1, 2)?
-            .contiguous()?
-            .reshape((n * tiles, rows))?
-            .matmul(&self.column_t)?;
+        let columns = columns.matmul(&self.column_t)?;
         let hidden = columns
             .reshape((n, tiles, ()))?
             .broadcast_add(&context.unsqueeze(1)?)?
@@ -128,7 +125,9 @@ impl Net {
         let mut logits = self.head.forward(&g)?;
         if let Some(tile) = &self.tile_head {
             let drawn = Tensor::from_slice(inputs.drawn(), (n, 1), cpu)?.to_dtype(DType::I64)?;
-            logits = (logits + tile.scores(&x, &g, &drawn)?)?;
+            let columns = Tensor::from_slice(inputs.columns(), (n * 34, rows), cpu)?
+                .broadcast_mul(&self.row_scale.reshape(rows)?)?;
+            logits = (logits + tile.scores(&columns, &g, &drawn)?)?;
         }
         let mut out = logits.flatten_all()?.to_vec1::<f32>()?;
         let actions = self.actions.len();
