@@ -7,7 +7,7 @@ use std::time::Instant;
 
 use indicatif::{ProgressBar, ProgressStyle};
 use rinshan_engine::agents::Agent;
-use rinshan_engine::arena::{self, Arena, Player};
+use rinshan_engine::arena::{self, Arena, Entrant, Player};
 use rinshan_engine::env::Mode;
 use rinshan_logs::mjai::seat::MjaiEntrant;
 use rinshan_net::NetAgent;
@@ -95,21 +95,20 @@ pub fn run(args: Args) -> Result<(), CliError> {
     if !bots.is_empty() {
         MjaiArgs::check_rules(args.variant.variant, args.mode, None)?;
     }
-    let mut next_bot = bots.iter();
-    let mut next_search = searches.iter();
-    let mut next_net = nets.iter();
+    let (mut next_bot, mut next_search, mut next_net) = (bots.iter(), searches.iter(), nets.iter());
+    // The player of each seat that is not built in, in the order of --agents.
+    let mut next_entrant = |a: &SeatArg| -> Option<(&str, &dyn Entrant)> {
+        match a {
+            SeatArg::Builtin(_) => None,
+            SeatArg::Mjai(_) => next_bot.next().map(|(n, e)| (n.as_str(), e as &dyn Entrant)),
+            SeatArg::Search(_) => next_search.next().map(|(n, e)| (n.as_str(), e as &dyn Entrant)),
+            SeatArg::Net(_) => next_net.next().map(|(n, e)| (n.as_str(), e as &dyn Entrant)),
+        }
+    };
     // A three-player game seats the first three; the fourth place is never played.
     let players: [Player; 4] = std::array::from_fn(|p| match agents.get(p) {
         Some(SeatArg::Builtin(a)) => Player::Builtin(*a),
-        Some(SeatArg::Mjai(_)) => match next_bot.next() {
-            Some((name, entrant)) => Player::Entrant { name, entrant },
-            None => Player::Builtin(Agent::Random),
-        },
-        Some(SeatArg::Search(_)) => match next_search.next() {
-            Some((name, entrant)) => Player::Entrant { name, entrant },
-            None => Player::Builtin(Agent::Random),
-        },
-        Some(SeatArg::Net(_)) => match next_net.next() {
+        Some(a) => match next_entrant(a) {
             Some((name, entrant)) => Player::Entrant { name, entrant },
             None => Player::Builtin(Agent::Random),
         },

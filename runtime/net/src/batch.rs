@@ -30,11 +30,6 @@ impl BatchNet {
         }
     }
 
-    /// The agent.
-    pub fn agent(&self) -> &NetAgent {
-        &self.agent
-    }
-
     /// Replaces the actions of the games whose seat to act is the net's by the net's.
     pub fn act(&mut self, actions: &mut [u32]) -> Result<(), NetError> {
         self.inputs.clear();

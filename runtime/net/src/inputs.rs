@@ -74,18 +74,6 @@ impl Inputs {
         }
     }
 
-    /// Adds the decision of the player to move in `state` ([`Decision::of`]), with the legal
-    /// actions in net order (`legal(a)` for net action `a`).
-    pub fn push_state(
-        &mut self,
-        variant: Variant,
-        state: &GameState,
-        analysis: &[&str],
-        legal: impl Fn(usize) -> bool,
-    ) {
-        self.push_decision(&Decision::of(variant, state, analysis), legal);
-    }
-
     /// Adds a decision made by [`Decision::of`].
     pub fn push_decision(&mut self, d: &Decision, legal: impl Fn(usize) -> bool) {
         // The engine's own records have the layout `Net::load` checked.

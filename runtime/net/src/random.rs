@@ -6,7 +6,7 @@ use std::collections::HashMap;
 
 use rinshan_engine::env::action_names;
 use rinshan_engine::random::Rng;
-use rinshan_engine::Variant;
+use rinshan_engine::{Tile, Variant};
 use safetensors::tensor::{Dtype, TensorView};
 use serde_json::json;
 
@@ -40,19 +40,16 @@ impl Default for Shape {
 const ANALYSIS: [&str; 3] = ["discard_shanten", "discard_ukeire", "improving"];
 
 /// Per action name, the column its tile head score comes from: a discard's tile type (a red five
-/// is its type's five), 34 for `tsumogiri` (the drawn tile), -1 for the rest.
+/// is its type's five), 34 for `tsumogiri` (the drawn tile), -1 for the rest. The discards are
+/// recognised by the names the engine gives them ([`action_names`]).
 pub fn discard_column(name: &str) -> i64 {
     if name == "tsumogiri" {
         return 34;
     }
-    let Some(tile) = name.strip_prefix("discard_") else {
-        return -1;
-    };
-    let (number, suit) = tile.split_at(1);
-    match (number.parse::<i64>(), "mpsz".find(suit)) {
-        (Ok(n), Some(s)) => s as i64 * 9 + if n == 0 { 5 } else { n } - 1,
-        _ => -1,
-    }
+    (0..=u8::MAX)
+        .filter_map(Tile::from_value)
+        .find(|t| name.strip_prefix("discard_") == Some(t.to_string().as_str()))
+        .map_or(-1, |t| t.kind().index() as i64)
 }
 
 /// The bytes of a safetensors file of a net of `shape` with random weights (seeded by `seed`),

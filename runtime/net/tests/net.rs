@@ -8,7 +8,7 @@ use std::sync::Arc;
 
 use rinshan_engine::env::{action_names, Mode};
 use rinshan_engine::generated::kernel::GameState;
-use rinshan_engine::observe::{field_values, record, resample_hidden, Form, OwnDraws};
+use rinshan_engine::observe::{field_values, record, resample_hidden, Form, OwnDraws, PLANE_ROWS};
 use rinshan_engine::random::Rng;
 use rinshan_engine::{with_variant, Variant};
 use rinshan_net::inputs::Inputs;
@@ -68,7 +68,8 @@ fn reference(w: &HashMap<String, (Vec<usize>, Vec<f64>)>, variant: Variant, s: &
         .into_iter()
         .map(|v| v as f64)
         .collect();
-    let drawn_row: Vec<f64> = rows[5 * 34..6 * 34].to_vec();
+    let drawn = PLANE_ROWS.iter().find(|r| r.name == "drawn").expect("a drawn row").row as usize;
+    let drawn_row: Vec<f64> = rows[drawn * 34..(drawn + 1) * 34].to_vec();
     if analysis {
         let a = record(variant, Form::Analysis, s, 4);
         rows.extend(
