@@ -20,21 +20,25 @@ fn options(
     seats: Option<Vec<u8>>,
     players: Option<Vec<String>>,
     forced: bool,
+    search: Option<String>,
 ) -> PyResult<Options> {
     let forms = forms.iter().map(|f| form_of(f)).collect::<PyResult<Vec<Form>>>()?;
     check_forms(&forms).map_err(PyValueError::new_err)?;
     let seats = Seats::chosen(seats.as_deref(), players.as_deref()).map_err(PyValueError::new_err)?;
-    Ok(Options {
+    let options = Options {
         variant: parse("variant", variant)?,
         forms,
         seats,
         forced,
-    })
+        search,
+    };
+    options.look_ahead().map_err(PyValueError::new_err)?;
+    Ok(options)
 }
 
 /// Builds (or resumes) a dataset folder; the summary as a dict.
 #[pyfunction]
-#[pyo3(signature = (inputs, out, forms, seats=None, players=None, forced=false, shard_size=None, threads=None, variant="red"))]
+#[pyo3(signature = (inputs, out, forms, seats=None, players=None, forced=false, shard_size=None, threads=None, variant="red", search=None))]
 #[allow(clippy::too_many_arguments)]
 fn dataset_build<'py>(
     py: Python<'py>,
@@ -47,11 +51,12 @@ fn dataset_build<'py>(
     shard_size: Option<usize>,
     threads: Option<usize>,
     variant: &str,
+    search: Option<String>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let b = Build {
         inputs,
         out: out.into(),
-        options: options(variant, forms, seats, players, forced)?,
+        options: options(variant, forms, seats, players, forced, search)?,
         inputs_per_shard: shard_size.unwrap_or(rinshan_dataset::DEFAULT_INPUTS_PER_SHARD),
         threads: threads.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get())),
     };
@@ -88,7 +93,7 @@ fn dataset_sources(py: Python<'_>, inputs: Vec<String>) -> PyResult<Vec<(String,
 /// Every log of `inputs` replayed into rows: one dict per log, in order (`name`, and `skipped`
 /// with the reason or the arrays).
 #[pyfunction]
-#[pyo3(signature = (inputs, forms, seats=None, players=None, forced=false, variant="red"))]
+#[pyo3(signature = (inputs, forms, seats=None, players=None, forced=false, variant="red", search=None))]
 fn dataset_records<'py>(
     py: Python<'py>,
     inputs: Vec<String>,
@@ -97,8 +102,9 @@ fn dataset_records<'py>(
     players: Option<Vec<String>>,
     forced: bool,
     variant: &str,
+    search: Option<String>,
 ) -> PyResult<Bound<'py, PyList>> {
-    let options = options(variant, forms, seats, players, forced)?;
+    let options = options(variant, forms, seats, players, forced, search)?;
     let work = || -> Result<(Vec<String>, Vec<Outcome>), String> {
         let mut units = Vec::new();
         for_each_unit(&sources(&inputs)?, &mut |unit| {
@@ -128,6 +134,11 @@ fn dataset_records<'py>(
                 d.set_item("action", PyArray1::from_vec(py, rows.action))?;
                 d.set_item("seat", PyArray1::from_vec(py, rows.seat))?;
                 d.set_item("round", PyArray1::from_vec(py, rows.round))?;
+                if options.search.is_some() {
+                    d.set_item("search_action", PyArray1::from_vec(py, rows.search_action))?;
+                    let value = PyArray1::from_vec(py, rows.search_value).reshape([n, na])?;
+                    d.set_item("search_value", value)?;
+                }
                 d.set_item("scores", rows.scores.to_vec())?;
                 // As a list of ints (a Vec<u8> would become Python bytes).
                 d.set_item("ranks", rows.ranks.map(u32::from).to_vec())?;

@@ -5,7 +5,6 @@ use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
-use rayon::prelude::*;
 use rinshan_engine::env::Backend;
 use rinshan_engine::observe::Form;
 use rinshan_engine::win_input::{score_json, WinInput};
@@ -83,28 +82,6 @@ fn read_game(path: &str) -> PyResult<tenhou::log::Game> {
     rinshan_logs::read_log(std::path::Path::new(path)).map_err(|e| PyValueError::new_err(e.to_string()))
 }
 
-/// The look-ahead's action at each of a logged round's `positions`, each from the deciding seat's
-/// view (the table and the wall places it drew), in parallel. The worlds of round `round`'s
-/// decision `step` are seeded by the options' seed and both, so a read is reproducible.
-fn search_actions(
-    search: &Search,
-    variant: Variant,
-    positions: &[tenhou::position::Position],
-    round: usize,
-) -> Vec<i64> {
-    let own: Vec<Vec<Vec<u32>>> = (0..variant.seats())
-        .map(|q| tenhou::position::own_draws(variant, positions, q))
-        .collect();
-    positions
-        .par_iter()
-        .enumerate()
-        .map(|(i, p)| {
-            let nonce = (round as u64) << 32 | p.step as u64;
-            i64::from(search.decide(&p.state, p.seat, &own[p.seat as usize][i], nonce).action)
-        })
-        .collect()
-}
-
 /// A log's rounds as decision records: per round the deciding seat, the action id, what the log
 /// says, the legal mask and each asked observation form's raw record of the deciding seat; with
 /// `search` (`"search:rollouts=N:..."`), the look-ahead's action at each decision too.
@@ -152,7 +129,12 @@ fn tenhou_read<'py>(
                 d.set_item("what", what)?;
                 d.set_item("legal_action_mask", PyArray1::from_vec(py, mask).reshape([n, na])?)?;
                 if let Some(search) = &search {
-                    let chosen = py.detach(|| search_actions(search, variant, &positions, r));
+                    let chosen: Vec<i64> = py.detach(|| {
+                        rinshan_dataset::label::look_ahead(search, variant, &positions, r)
+                            .iter()
+                            .map(|d| i64::from(d.action))
+                            .collect()
+                    });
                     d.set_item("search_action", PyArray1::from_vec(py, chosen))?;
                 }
                 let obs = PyDict::new(py);

@@ -38,6 +38,11 @@ pub struct Args {
     /// Keep decisions with a single legal action
     #[arg(long)]
     forced: bool,
+    /// Label every row with the look-ahead's action and its value of each action, from the
+    /// deciding seat's view (e.g. `search:rollouts=1024`, the agent's settings): the arrays
+    /// `search_action` and `search_value` (NaN for actions it did not play out)
+    #[arg(long)]
+    search: Option<String>,
     /// Logs per shard
     #[arg(long, default_value_t = DEFAULT_INPUTS_PER_SHARD)]
     shard_size: usize,
@@ -86,6 +91,7 @@ pub fn run(args: Args) -> Result<(), CliError> {
             forms: forms(&args.observe)?,
             seats: seats(&args)?,
             forced: args.forced,
+            search: args.search.clone(),
         },
         inputs_per_shard: args.shard_size,
         threads: args.threads.unwrap_or_else(rayon::current_num_threads),

@@ -117,7 +117,7 @@ fn make_shard(out: &Path, shard: Parsed<'_>, options: &Options) -> Result<ShardR
     }
     let name = shard_name(index);
     let num_actions = action_names(options.variant).len();
-    let rows = write_shard(out, &name, &kept, &options.forms, num_actions)?;
+    let rows = write_shard(out, &name, &kept, &options.forms, num_actions, options.search.is_some())?;
     Ok(ShardRecord {
         name,
         rows,
@@ -273,6 +273,7 @@ impl State<'_> {
 pub fn build(b: &Build, on_progress: &mut dyn FnMut(Progress)) -> Result<Summary, String> {
     let start = Instant::now();
     check_forms(&b.options.forms)?;
+    b.options.look_ahead()?;
     if b.inputs_per_shard == 0 {
         return Err("a shard needs at least one input".into());
     }

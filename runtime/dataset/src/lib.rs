@@ -6,18 +6,21 @@
 //!
 //! * [`inputs`] — which logs, in one fixed order (files, folders, globs, tar archives).
 //! * [`record`] — a batch of games replayed into rows.
+//! * [`label`] — each row's action and action values by the look-ahead (`rinshan-search`), when
+//!   asked for.
 //! * [`shard`] — one shard's arrays on disk.
 //! * [`manifest`] — the schema, options and finished shards.
 //! * [`same`] — one game in two files (two formats, two copies), recognised by its content.
 //! * [`build`](mod@build) — the parallel, resumable run over all of it.
 //!
-//! Depends on `rinshan-engine` and `rinshan-logs`; the `rinshan dataset` command and the Python
+//! Depends on `rinshan-engine`, `rinshan-logs` and `rinshan-search`; the `rinshan dataset` command and the Python
 //! package build on it.
 
 #![warn(missing_docs)]
 
 pub mod build;
 pub mod inputs;
+pub mod label;
 pub mod manifest;
 pub mod record;
 pub mod same;

@@ -10,7 +10,7 @@ use rinshan_engine::observe::Form;
 use serde::{Deserialize, Serialize};
 
 use crate::record::Options;
-use crate::shard::{GAME_ARRAYS, ROW_ARRAYS};
+use crate::shard::{GAME_ARRAYS, ROW_ARRAYS, SEARCH_ARRAYS};
 
 /// What the manifest says the folder is.
 pub const FORMAT: &str = "rinshan-dataset";
@@ -102,6 +102,9 @@ pub struct OptionsRecord {
     pub forced: bool,
     /// Inputs per shard.
     pub inputs_per_shard: usize,
+    /// The look-ahead that labelled the rows (absent when none did).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub search: Option<String>,
 }
 
 /// The whole manifest.
@@ -147,8 +150,10 @@ impl Manifest {
                     .collect(),
             })
             .collect();
+        let labels: &[(&str, &str)] = if options.search.is_some() { &SEARCH_ARRAYS } else { &[] };
         let arrays = ROW_ARRAYS
             .iter()
+            .chain(labels)
             .map(|(n, d)| (n, d, "row"))
             .chain(GAME_ARRAYS.iter().map(|(n, d)| (n, d, "game")))
             .map(|(n, d, per)| ArraySchema {
@@ -168,6 +173,7 @@ impl Manifest {
                 seats: options.seats.describe(),
                 forced: options.forced,
                 inputs_per_shard,
+                search: options.search.clone(),
             },
             shards: Vec::new(),
         }

@@ -11,8 +11,10 @@ use rinshan_engine::Variant;
 use rinshan_logs::file::parse_log;
 use rinshan_logs::tenhou::log::Game;
 use rinshan_logs::tenhou::replay::{mode_of, replay_visiting, Decision, Visitor};
+use rinshan_search::Search;
 
 use crate::inputs::Unit;
+use crate::label::label_rows;
 
 /// The rules datasets are made in unless asked otherwise: Tenhou's four-player rules (with red
 /// fives or not: the tiles say which are red).
@@ -85,10 +87,27 @@ pub struct Options {
     /// with the claim; a forced draw-and-discard has more than one discard). Off by default: such
     /// a row teaches nothing.
     pub forced: bool,
+    /// The look-ahead that labels each row (`search:rollouts=N:...` as the agent is written), or
+    /// none: each row then gets its action and its value per action ([`crate::label`]).
+    pub search: Option<String>,
+}
+
+impl Options {
+    /// The labelling look-ahead, or `Err` with the reason its settings do not parse.
+    pub fn look_ahead(&self) -> Result<Option<Search>, String> {
+        self.search
+            .as_deref()
+            .map(|spec| {
+                spec.parse::<rinshan_search::Options>()
+                    .map(|o| Search::new(self.variant, o))
+                    .map_err(|e| format!("--search {spec}: {e}"))
+            })
+            .transpose()
+    }
 }
 
 /// The rows of one game, column by column.
-#[derive(Debug, Clone, Default, PartialEq, Eq)]
+#[derive(Debug, Clone, Default, PartialEq)]
 pub struct GameRows {
     /// The log's name.
     pub name: String,
@@ -102,6 +121,14 @@ pub struct GameRows {
     pub seat: Vec<u8>,
     /// The round (index into the log's rounds).
     pub round: Vec<u8>,
+    /// The look-ahead's action (empty unless [`Options::search`]).
+    pub search_action: Vec<u8>,
+    /// The look-ahead's value of each action id (minus the expected final rank), NaN for one it
+    /// did not play out (empty unless [`Options::search`]).
+    pub search_value: Vec<f32>,
+    /// Each row's round and decision index in it (claim prompts counted), where the look-ahead
+    /// finds it.
+    pub at: Vec<(usize, usize)>,
     /// Each seat's points at the end of the game.
     pub scores: [i32; 4],
     /// Each seat's final place (0 = first), as uma pays it.
@@ -116,7 +143,7 @@ impl GameRows {
 }
 
 /// What became of one log.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum Outcome {
     /// Its rows.
     Rows(GameRows),
@@ -130,6 +157,8 @@ struct Recorder<'a> {
     num_actions: usize,
     rows: Vec<GameRows>,
     over: Vec<bool>,
+    /// Per game, the round being replayed and the decisions seen in it so far.
+    step: Vec<(usize, usize)>,
     bug: Option<String>,
 }
 
@@ -138,6 +167,15 @@ impl Visitor for Recorder<'_> {
         let (i, step) = (d.slot, d.step);
         let game = d.game;
         let seat = step.current_player[i] as usize;
+        let at = match &mut self.step[game] {
+            s if s.0 == d.round => s,
+            s => {
+                *s = (d.round, 0);
+                s
+            }
+        };
+        let here = *at;
+        at.1 += 1;
         let mask = step.legal_action_mask[i];
         let legal = |a: u32| mask[(a / 32) as usize] >> (a % 32) & 1 == 1;
         let count: u32 = mask.iter().map(|w| w.count_ones()).sum();
@@ -167,6 +205,7 @@ impl Visitor for Recorder<'_> {
         rows.action.push(d.action as u8);
         rows.seat.push(seat as u8);
         rows.round.push(d.round.min(255) as u8);
+        rows.at.push(here);
     }
 
     fn game_over(&mut self, game: usize, ranks: [u8; 4], table: &Table) {
@@ -194,6 +233,7 @@ fn record_group(games: &[&Game], options: &Options) -> Result<Vec<Outcome>, Stri
             })
             .collect(),
         over: vec![false; games.len()],
+        step: vec![(usize::MAX, 0); games.len()],
         bug: None,
     };
     let report = replay_visiting(&owned, &options.forms, &mut recorder).map_err(|e| e.to_string())?;
@@ -204,16 +244,35 @@ fn record_group(games: &[&Game], options: &Options) -> Result<Vec<Outcome>, Stri
     for m in &report.mismatches {
         first_mismatch.entry(m.file.as_str()).or_insert_with(|| m.to_string());
     }
-    Ok(recorder
+    let search = options.look_ahead()?;
+    recorder
         .rows
         .into_iter()
         .zip(recorder.over)
-        .map(|(rows, over)| match first_mismatch.get(rows.name.as_str()) {
-            Some(m) => Outcome::Skipped(format!("does not replay: {m}")),
-            None if !over => Outcome::Skipped(format!("{}: the log stops before the game ends", rows.name)),
-            None => Outcome::Rows(rows),
-        })
-        .collect())
+        .zip(games)
+        .map(
+            |((mut rows, over), game)| match first_mismatch.get(rows.name.as_str()) {
+                Some(m) => Ok(Outcome::Skipped(format!("does not replay: {m}"))),
+                None if !over => Ok(Outcome::Skipped(format!(
+                    "{}: the log stops before the game ends",
+                    rows.name
+                ))),
+                None => {
+                    if let Some(search) = &search {
+                        let keys: Vec<_> = rows
+                            .at
+                            .iter()
+                            .zip(&rows.seat)
+                            .zip(&rows.action)
+                            .map(|((&(round, step), &seat), &action)| (round, step, seat, action))
+                            .collect();
+                        (rows.search_action, rows.search_value) = label_rows(search, game, &keys, num_actions)?;
+                    }
+                    Ok(Outcome::Rows(rows))
+                }
+            },
+        )
+        .collect()
 }
 
 /// Replays `games` and returns each one's outcome, in order: East games and half games are

@@ -21,6 +21,10 @@ pub const ROW_ARRAYS: [(&str, &str); 5] = [
     ("game", "uint32"),
 ];
 
+/// The per-row arrays of a dataset labelled by the look-ahead: its action, and its value of each
+/// action id (float32 `[rows, actions]`, NaN where it played the action out in no world).
+pub const SEARCH_ARRAYS: [(&str, &str); 2] = [("search_action", "uint8"), ("search_value", "float32")];
+
 /// The per-game arrays: `scores` (points at the end, int32 `[games, 4]`) and `ranks` (final place,
 /// uint8 `[games, 4]`).
 pub const GAME_ARRAYS: [(&str, &str); 2] = [("scores", "int32"), ("ranks", "uint8")];
@@ -62,6 +66,7 @@ pub fn write_shard(
     games: &[GameRows],
     forms: &[Form],
     num_actions: usize,
+    labelled: bool,
 ) -> Result<u64, String> {
     let partial = out.join(format!(".{name}.partial"));
     let done = out.join(name);
@@ -88,6 +93,22 @@ pub fn write_shard(
     )?;
     write_npy(&partial, "seat", "|u1", &[n], games.iter().map(|g| g.seat.as_slice()))?;
     write_npy(&partial, "round", "|u1", &[n], games.iter().map(|g| g.round.as_slice()))?;
+    if labelled {
+        let chosen = games.iter().map(|g| g.search_action.as_slice());
+        write_npy(&partial, "search_action", "|u1", &[n], chosen)?;
+        let value: Vec<u8> = games
+            .iter()
+            .flat_map(|g| &g.search_value)
+            .flat_map(|v| v.to_le_bytes())
+            .collect();
+        write_npy(
+            &partial,
+            "search_value",
+            "<f4",
+            &[n, num_actions as u64],
+            [value.as_slice()],
+        )?;
+    }
     let game: Vec<u8> = games
         .iter()
         .enumerate()

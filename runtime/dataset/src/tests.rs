@@ -40,6 +40,7 @@ fn options(forms: &[Form]) -> Options {
         forms: forms.to_vec(),
         seats: Seats::All,
         forced: false,
+        search: None,
     }
 }
 
@@ -368,4 +369,89 @@ fn a_game_in_two_formats_is_kept_once() {
     for d in [a, b, c] {
         std::fs::remove_dir_all(d).unwrap();
     }
+}
+
+/// The look-ahead's labels on people's games: added beside rows that stay as they were, legal,
+/// the base agent's choice wherever the look-ahead left a decision to it, valued where it played
+/// actions out, and the same whichever games a game is replayed with.
+#[test]
+fn look_ahead_labels_are_legal_and_the_base_agents_where_it_looked_at_nothing() {
+    let paths: Vec<PathBuf> = logs("tenhou", "json").into_iter().take(2).collect();
+    let games: Vec<_> = paths.iter().map(|p| read_log(p).unwrap()).collect();
+    let plain = options(&[Form::Planes]);
+    let labelled = Options {
+        search: Some("search:rollouts=16:focus=all".into()),
+        ..plain.clone()
+    };
+    let base = rinshan_engine::agents::Agent::Defensive;
+    let na = rinshan_engine::env::action_names(VARIANT).len();
+    let without = record(&games, &plain).unwrap();
+    let with = record(&games, &labelled).unwrap();
+    let alone = record(&games[1..], &labelled).unwrap();
+    let (mut valued, mut left) = (0, 0);
+    for ((game, a), b) in games.iter().zip(&without).zip(&with) {
+        let (Outcome::Rows(a), Outcome::Rows(b)) = (a, b) else {
+            panic!("{}: {a:?} {b:?}", game.path);
+        };
+        assert_eq!(
+            (&a.observations, &a.mask, &a.action),
+            (&b.observations, &b.mask, &b.action)
+        );
+        assert!(a.search_action.is_empty() && a.search_value.is_empty());
+        assert_eq!((b.search_action.len(), b.search_value.len()), (b.rows(), b.rows() * na));
+        let positions: Vec<Vec<_>> = (0..game.rounds.len())
+            .map(|r| round_positions(game, r).unwrap())
+            .collect();
+        for row in 0..b.rows() {
+            let chosen = b.search_action[row] as usize;
+            assert_eq!(b.mask[row * na + chosen], 1, "{} row {row}: illegal label", game.path);
+            let values = &b.search_value[row * na..(row + 1) * na];
+            let (round, step) = b.at[row];
+            let state = &positions[round][step].state;
+            if values.iter().all(|v| v.is_nan()) {
+                assert_eq!(chosen as u32, base.act(VARIANT, state), "{} row {row}", game.path);
+                left += 1;
+                continue;
+            }
+            valued += 1;
+            assert!(
+                !values[chosen].is_nan(),
+                "{} row {row}: the label has no value",
+                game.path
+            );
+            for (action, v) in values.iter().enumerate() {
+                // Minus the expected final place (0 = first), and only for legal actions.
+                assert!(v.is_nan() || (b.mask[row * na + action] == 1 && (-3.0..=0.0).contains(v)));
+            }
+        }
+    }
+    assert!(
+        valued > 100 && left > 100,
+        "{valued} valued, {left} left to the base agent"
+    );
+    let (Outcome::Rows(together), Outcome::Rows(apart)) = (&with[1], &alone[0]) else {
+        panic!("the second game is kept");
+    };
+    assert_eq!(together.search_action, apart.search_action);
+    let bits = |v: &[f32]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+    assert_eq!(bits(&together.search_value), bits(&apart.search_value));
+}
+
+#[test]
+fn a_bad_look_ahead_setting_is_refused_before_anything_is_written() {
+    let out = scratch("bad-search");
+    let b = Build {
+        inputs: vec![data("tenhou").display().to_string()],
+        out: out.join("ds"),
+        options: Options {
+            search: Some("search:rollouts=lots".into()),
+            ..options(&[Form::Planes])
+        },
+        inputs_per_shard: 4,
+        threads: 1,
+    };
+    let err = build(&b, &mut |_| {}).unwrap_err();
+    assert!(err.contains("--search search:rollouts=lots"), "{err}");
+    assert!(!out.join("ds").exists());
+    let _ = std::fs::remove_dir_all(&out);
 }
