@@ -4,6 +4,9 @@ legal actions), with a held-out tenth to measure accuracy.
 python examples/train/bc.py --config configs/seed.toml --data runs/x/data --out runs/x
 
 `--data` may also be a dataset folder built from game logs (`rinshan dataset logs/ -o DIR`).
+With `[bc] target = "search_action"` the net learns the look-ahead's choices of a dataset built
+with `--search` (distillation); `[bc] init = "PATH"` starts from a trained checkpoint instead of
+a new net (its input statistics kept).
 """
 
 from __future__ import annotations
@@ -15,7 +18,16 @@ import time
 import numpy as np
 import torch
 from collect import Rows
-from common import Log, config_arguments, load_config, new_net, save, seed_everything, set_threads
+from common import (
+    Log,
+    config_arguments,
+    load_config,
+    load_net,
+    new_net,
+    save,
+    seed_everything,
+    set_threads,
+)
 
 # Validation rows at most (a tenth of the rows up to this), and rows the scalars' mean and spread
 # are taken from: enough for both, and a dataset of millions of rows is not read whole for them.
@@ -32,27 +44,33 @@ def train_bc(cfg: dict, seed: int, data: pathlib.Path, out: pathlib.Path) -> dic
     seed_everything(seed)
     set_threads(cfg)
     analysis = bool(cfg["run"].get("analysis", False))
-    d = Rows(data, analysis)
+    target = str(c.get("target", "action"))
+    if target not in ("action", "search_action"):
+        raise SystemExit(f'[bc] target = {target!r}: write "action" or "search_action"')
+    d = Rows(data, analysis, target)
     n = len(d)
     if n == 0:
         raise SystemExit(f"{data}: no rows to learn from")
     order = np.random.default_rng(seed).permutation(n)
     n_val = max(1, min(n // 10, VALIDATION_ROWS))
     val, train = np.sort(order[:n_val]), order[n_val:]
-    net = new_net(cfg)
+    init = c.get("init")
+    net = load_net(init) if init else new_net(cfg)
+    net.train()
     want = (net.row_scale.shape[0], net.config["num_actions"])
     if d.shape != want:
         raise SystemExit(
             f"{data}: shards hold {d.shape[0]} rows and {d.shape[1]} actions, "
             f"this config's net reads {want[0]} and writes {want[1]} (collect them again)"
         )
-    sample = train
-    if len(train) > SCALAR_ROWS:
-        sample = np.random.default_rng(seed + 2).choice(train, SCALAR_ROWS, replace=False)
-    s = torch.tensor(d.scalars(np.sort(sample)), dtype=torch.float32)
-    net.scalar_mean.copy_(s.mean(0))
-    net.scalar_std.copy_(s.std(0).clamp(min=1.0))
-    del s
+    if not init:
+        sample = train
+        if len(train) > SCALAR_ROWS:
+            sample = np.random.default_rng(seed + 2).choice(train, SCALAR_ROWS, replace=False)
+        s = torch.tensor(d.scalars(np.sort(sample)), dtype=torch.float32)
+        net.scalar_mean.copy_(s.mean(0))
+        net.scalar_std.copy_(s.std(0).clamp(min=1.0))
+        del s
     opt = torch.optim.Adam(net.parameters(), lr=float(c["lr"]))
     batch, epochs = int(c["batch"]), float(c["epochs"])
     total = int(epochs * len(train) / batch)

@@ -87,14 +87,20 @@ class Rows:
     (red) ids. collect.py's shards are held in memory; a dataset folder built from logs
     (`rinshan dataset`) stays memory-mapped, so a dataset larger than memory trains too."""
 
-    def __init__(self, folder: pathlib.Path, analysis: bool = False):
+    def __init__(self, folder: pathlib.Path, analysis: bool = False, target: str = "action"):
         self.analysis = analysis
+        self.target = target
         if (folder / "manifest.json").exists():
-            self._dataset = open_dataset(folder, analysis)
+            self._dataset = open_dataset(folder, analysis, target)
             self._scalars = rinshan.dataset.Dataset(folder, fields=["scalars"])
             self._arrays = None
             self._len = len(self._dataset)
             return
+        if target != "action":
+            raise SystemExit(
+                f"{folder}: collect.py's shards hold the agent's actions only; "
+                f"`{target}` labels come from `rinshan dataset --search`"
+            )
         files = sorted(folder.glob("shard-*.npz"))
         if not files:
             raise SystemExit(f"{folder}: no shard-*.npz (run collect.py first)")
@@ -120,7 +126,7 @@ class Rows:
             rows(d, self.analysis),
             d["scalars"],
             d["legal_action_mask"],
-            d["action"].astype(np.int64),
+            d[self.target].astype(np.int64),
         )
 
     def scalars(self, idx: np.ndarray) -> np.ndarray:
@@ -129,17 +135,21 @@ class Rows:
         return self._scalars[idx]["scalars"]
 
 
-def open_dataset(folder: pathlib.Path, analysis: bool) -> rinshan.dataset.Dataset:
+def open_dataset(
+    folder: pathlib.Path, analysis: bool, target: str = "action"
+) -> rinshan.dataset.Dataset:
     """A log dataset (`rinshan dataset logs/ -o DIR --observe planes[,analysis]`) with the fields
-    a net reads; its rows are already in the red variant's action ids."""
-    names = ["planes", "scalars", "legal_action_mask", "action"]
+    a net reads and `target`, the action it learns (`search_action`: the look-ahead's, in a
+    dataset built with `--search`); its rows are already in the red variant's action ids."""
+    names = ["planes", "scalars", "legal_action_mask", target]
     if analysis:
         names += ["discard_shanten", "discard_ukeire", "improving"]
     try:
         ds = rinshan.dataset.Dataset(folder, fields=names)
     except KeyError as e:
         forms = "planes,analysis" if analysis else "planes"
-        raise SystemExit(f"{folder}: {e} (build it with --observe {forms})") from None
+        search = " --search search:..." if target == "search_action" else ""
+        raise SystemExit(f"{folder}: {e} (build it with --observe {forms}{search})") from None
     if list(ds.actions) != list(rinshan.make(CANONICAL, num_envs=1).spec.action_names):
         raise SystemExit(f"{folder}: its action ids are not the {CANONICAL} variant's")
     return ds

@@ -106,6 +106,7 @@ def dataset_build(
     shard_size: int | None = None,
     threads: int | None = None,
     variant: str = "red",
+    search: str | None = None,
 ) -> dict[str, Any]: ...
 def dataset_records(
     inputs: list[str],
@@ -114,6 +115,7 @@ def dataset_records(
     players: list[str] | None = None,
     forced: bool = False,
     variant: str = "red",
+    search: str | None = None,
 ) -> list[Any]: ...
 def dataset_sources(inputs: list[str]) -> list[tuple[str, bool]]: ...
 def fields(form: str) -> tuple[int, list[tuple[str, int, str, list[int], str]]]: ...

@@ -54,13 +54,17 @@ def build(
     shard_size: Optional[int] = None,
     threads: Optional[int] = None,
     variant: str = "red",
+    search: Optional[str] = None,
 ) -> dict:
     """Builds (or resumes) the dataset folder `out` from `inputs` (files, folders, glob patterns,
     tar archives): what `rinshan dataset` does (`shard_size` logs per shard, default 128).
     `variant` is the rule set the logs are replayed in (`"sanma"` for three-player logs); logs of
     other rules are skipped, and a game that comes in two logs (two formats, two copies) is kept
-    from the first. Returns the summary (`skipped` lists each log left out with its reason,
-    `duplicates` each one left out as the same game as an earlier log, as `(input, same_as)`)."""
+    from the first. With `search` (`"search:rollouts=1024"`, the look-ahead's settings) every row
+    also gets the look-ahead's action (`search_action`) and its value of each action
+    (`search_value`, NaN for actions it did not play out). Returns the summary (`skipped` lists
+    each log left out with its reason, `duplicates` each one left out as the same game as an
+    earlier log, as `(input, same_as)`)."""
     return _core.dataset_build(
         _paths(inputs),
         str(out),
@@ -71,6 +75,7 @@ def build(
         None if shard_size is None else int(shard_size),
         threads,
         str(variant),
+        None if search is None else str(search),
     )
 
 
@@ -82,10 +87,12 @@ def iterate(
     forced: bool = False,
     chunk: int = 64,
     variant: str = "red",
+    search: Optional[str] = None,
 ) -> Iterator[dict]:
     """Each log of `inputs` replayed into rows without writing a dataset: one dict per log with
     `name` and either `skipped` (the reason) or the arrays of its rows (`observation` holds each
-    form's raw records; `scores` and `ranks` the game's end). Logs are replayed `chunk` files at a
+    form's raw records; `scores` and `ranks` the game's end; with `search`, the look-ahead's
+    `search_action` and `search_value` as in `build`). Logs are replayed `chunk` files at a
     time; a tar archive is read whole."""
     forms = _forms(observation)
     pending: list[str] = []
@@ -98,6 +105,7 @@ def iterate(
             None if players is None else [str(p) for p in players],
             bool(forced),
             str(variant),
+            None if search is None else str(search),
         )
         pending.clear()
         return records

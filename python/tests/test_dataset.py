@@ -263,3 +263,75 @@ def test_a_game_in_two_formats_is_kept_once(tmp_path):
         (p.name, p.with_suffix(".json").name) for p in MJLOG[:2]
     ]
     assert summary["skipped"] == []
+
+
+def test_look_ahead_labels_are_tenhou_reads_and_distil_through_bc(tmp_path):
+    """`search=` labels each row with the look-ahead's action, the one rinshan.tenhou.read gives
+    at the same decision, and its values of the actions it played out; bc.py learns those labels
+    (`[bc] target = "search_action"`), starting from a trained net (`[bc] init`)."""
+    spec = "search:rollouts=8:focus=all"
+    data = tmp_path / "ds"
+    build(TENHOU[0], data, observation=["planes", "analysis"], forced=True, search=spec)
+    ds = Dataset(data)
+    rows = ds[:]
+    read = rinshan.tenhou.read(TENHOU[0], search=spec)
+    want = np.concatenate([r["search_action"] for r in read["rounds"]])
+    np.testing.assert_array_equal(rows["search_action"], want)
+    values = rows["search_value"]
+    assert values.shape == rows["legal_action_mask"].shape and values.dtype == np.float32
+    valued = ~np.isnan(values).all(1)
+    assert 0 < valued.sum() < len(ds)
+    # Values only for legal actions, the label's among them, each minus an expected place.
+    assert not (~np.isnan(values) & ~rows["legal_action_mask"]).any()
+    assert not np.isnan(values[valued, rows["search_action"][valued]]).any()
+    assert np.nanmin(values) >= -3 and np.nanmax(values) <= 0
+    assert (
+        next(iterate(TENHOU[0], observation=None, forced=True, search=spec))["search_action"].shape
+        == want.shape
+    )
+    with pytest.raises(ValueError, match="rollouts"):
+        build(TENHOU[0], tmp_path / "bad", search="search:rollouts=x")
+    if not HAVE_TORCH:
+        return
+    config = TRAIN / "configs" / "from_logs.toml"
+
+    def bc(*sets):
+        args = ["bc.py", "--config", config, "--data", data, "--out", tmp_path / "out"]
+        for s in sets:
+            args += ["--set", s]
+        return subprocess.run(
+            [sys.executable, *map(str, args)],
+            capture_output=True,
+            text=True,
+            timeout=300,
+            cwd=TRAIN,
+        )
+
+    first = bc()
+    assert first.returncode == 0, first.stderr
+    start = tmp_path / "start.pt"
+    (tmp_path / "out" / "bc.pt").rename(start)
+    distilled = bc('bc.target="search_action"', f'bc.init="{start}"')
+    assert distilled.returncode == 0, distilled.stderr
+    assert f"'samples': {len(ds)}," in distilled.stdout
+    plain = tmp_path / "plain"
+    build(TENHOU[0], plain, observation=["planes", "analysis"])
+    refused = subprocess.run(
+        [
+            sys.executable,
+            "bc.py",
+            "--config",
+            str(config),
+            "--data",
+            str(plain),
+            "--out",
+            str(tmp_path / "x"),
+            "--set",
+            'bc.target="search_action"',
+        ],
+        capture_output=True,
+        text=True,
+        timeout=300,
+        cwd=TRAIN,
+    )
+    assert refused.returncode != 0 and "--search" in refused.stderr
