@@ -94,6 +94,7 @@ fn dataset_sources(py: Python<'_>, inputs: Vec<String>) -> PyResult<Vec<(String,
 /// with the reason or the arrays).
 #[pyfunction]
 #[pyo3(signature = (inputs, forms, seats=None, players=None, forced=false, variant="red", search=None))]
+#[allow(clippy::too_many_arguments)]
 fn dataset_records<'py>(
     py: Python<'py>,
     inputs: Vec<String>,

@@ -108,7 +108,7 @@ fn make_shard(out: &Path, shard: Parsed<'_>, options: &Options) -> Result<ShardR
         units.iter().zip(games).filter_map(|(u, g)| Some((u, g?))).unzip();
     for (unit, outcome) in replayed.into_iter().zip(record_parsed(parsed, options)?) {
         match outcome {
-            Outcome::Rows(rows) => kept.push(rows),
+            Outcome::Rows(rows) => kept.push(*rows),
             Outcome::Skipped(reason) => skipped.push(Skip {
                 input: unit.name.clone(),
                 reason,

@@ -59,7 +59,7 @@ pub fn label_rows(
         let positions = round_positions(game, round)?;
         let mut at = Vec::with_capacity(end - start);
         for &(_, step, seat, played) in &rows[start..end] {
-            match positions.get(step as usize) {
+            match positions.get(step) {
                 Some(p) if p.seat == u32::from(seat) && p.action == u32::from(played) => at.push(step),
                 _ => {
                     return Err(format!(

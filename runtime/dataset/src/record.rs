@@ -146,7 +146,7 @@ impl GameRows {
 #[derive(Debug, Clone, PartialEq)]
 pub enum Outcome {
     /// Its rows.
-    Rows(GameRows),
+    Rows(Box<GameRows>),
     /// Why it was skipped.
     Skipped(String),
 }
@@ -268,7 +268,7 @@ fn record_group(games: &[&Game], options: &Options) -> Result<Vec<Outcome>, Stri
                             .collect();
                         (rows.search_action, rows.search_value) = label_rows(search, game, &keys, num_actions)?;
                     }
-                    Ok(Outcome::Rows(rows))
+                    Ok(Outcome::Rows(Box::new(rows)))
                 }
             },
         )
