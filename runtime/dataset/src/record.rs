@@ -87,8 +87,9 @@ pub struct Options {
     /// with the claim; a forced draw-and-discard has more than one discard). Off by default: such
     /// a row teaches nothing.
     pub forced: bool,
-    /// The look-ahead that labels each row (`search:rollouts=N:...` as the agent is written), or
-    /// none: each row then gets its action and its value per action ([`crate::label`]).
+    /// The look-ahead that labels each row (`search:rollouts=N:...` as the agent is written): each
+    /// row then also gets its action and its value of each action ([`crate::label`]). `None`: no
+    /// labels.
     pub search: Option<String>,
 }
 
