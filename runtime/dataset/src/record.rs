@@ -168,13 +168,10 @@ impl Visitor for Recorder<'_> {
         let (i, step) = (d.slot, d.step);
         let game = d.game;
         let seat = step.current_player[i] as usize;
-        let at = match &mut self.step[game] {
-            s if s.0 == d.round => s,
-            s => {
-                *s = (d.round, 0);
-                s
-            }
-        };
+        let at = &mut self.step[game];
+        if at.0 != d.round {
+            *at = (d.round, 0);
+        }
         let here = *at;
         at.1 += 1;
         let mask = step.legal_action_mask[i];
