@@ -59,10 +59,12 @@ class NetBot(rinshan.mjai.Bot):
         import torch
 
         sys.path.insert(0, str(HERE.parent / "train"))
-        from common import load_net, rows
+        from common import Space, load_net, rows
 
         self.torch, self.rows = torch, rows
         self.net = load_net(checkpoint)
+        # The bot's ids are red's; the net's layout may hold more (kita).
+        self.space = Space(actions=self.net.actions, names=self.action_names)
         if self.net.analysis:
             self.observation = ("planes", "analysis")
             super().__init__(seat, dialect)
@@ -73,9 +75,9 @@ class NetBot(rinshan.mjai.Bot):
             logits = self.net(
                 self.torch.from_numpy(self.rows(batch, self.net.analysis).copy()),
                 self.torch.from_numpy(np.asarray(batch["scalars"]).copy()),
-                self.torch.from_numpy(legal_mask[None].copy()),
+                self.torch.from_numpy(self.space.mask(legal_mask[None])),
             )
-        return int(logits.argmax(1)[0])
+        return int(self.space.to_env(logits.argmax(1).numpy())[0])
 
 
 def main() -> None:

@@ -14,13 +14,13 @@ import pathlib
 import numpy as np
 import torch
 from collect import Rows
-from common import CANONICAL, Space, load_net, set_threads
+from common import load_net, set_threads
 
 
 def agreement(net_path: pathlib.Path, data: pathlib.Path, batch: int = 8192) -> dict:
     net = load_net(net_path)
     net.eval()
-    d = Rows(data, net.analysis)
+    d = Rows(data, net.analysis, actions=net.actions)
     n = len(d)
     chosen = np.empty(n, dtype=np.int64)
     taken = np.empty(n, dtype=np.int64)
@@ -34,7 +34,7 @@ def agreement(net_path: pathlib.Path, data: pathlib.Path, batch: int = 8192) -> 
             taken[i : i + len(action)] = action
     # The kind of a decision is its action name's first word (discard, riichi, pon, pass, ...),
     # counted by the action the log took.
-    kind = np.array([name.split("_")[0] for name in Space(CANONICAL).canonical_names])[taken]
+    kind = np.array([name.split("_")[0] for name in net.actions])[taken]
     same = chosen == taken
     by_kind = {
         k: {"rows": int((kind == k).sum()), "agreement": float(same[kind == k].mean())}

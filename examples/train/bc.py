@@ -5,8 +5,10 @@ python examples/train/bc.py --config configs/seed.toml --data runs/x/data --out 
 
 `--data` may also be a dataset folder built from game logs (`rinshan dataset logs/ -o DIR`).
 With `[bc] target = "search_action"` the net learns the look-ahead's choices of a dataset built
-with `--search` (distillation); `[bc] init = "PATH"` starts from a trained checkpoint instead of
-a new net (its input statistics kept).
+with `--search` (distillation); with `"search_value"` it learns the distribution its values give
+(softmax of value / `[bc] temperature`, in places; default 0.05) where it looked, its choice
+elsewhere. `[bc] init = "PATH"` starts from a trained checkpoint instead of a new net (its input
+statistics kept).
 """
 
 from __future__ import annotations
@@ -17,7 +19,7 @@ import time
 
 import numpy as np
 import torch
-from collect import Rows
+from collect import TARGETS, Rows
 from common import (
     Log,
     config_arguments,
@@ -45,18 +47,18 @@ def train_bc(cfg: dict, seed: int, data: pathlib.Path, out: pathlib.Path) -> dic
     set_threads(cfg)
     analysis = bool(cfg["run"].get("analysis", False))
     target = str(c.get("target", "action"))
-    if target not in ("action", "search_action"):
-        raise SystemExit(f'[bc] target = {target!r}: write "action" or "search_action"')
-    d = Rows(data, analysis, target)
+    if target not in TARGETS:
+        raise SystemExit(f"[bc] target = {target!r}: write one of {', '.join(TARGETS)}")
+    init = c.get("init")
+    net = load_net(init) if init else new_net(cfg)
+    net.train()
+    d = Rows(data, analysis, target, float(c.get("temperature", 0.05)), net.actions)
     n = len(d)
     if n == 0:
         raise SystemExit(f"{data}: no rows to learn from")
     order = np.random.default_rng(seed).permutation(n)
     n_val = max(1, min(n // 10, VALIDATION_ROWS))
     val, train = np.sort(order[:n_val]), order[n_val:]
-    init = c.get("init")
-    net = load_net(init) if init else new_net(cfg)
-    net.train()
     want = (net.row_scale.shape[0], net.config["num_actions"])
     if d.shape != want:
         raise SystemExit(
@@ -81,6 +83,11 @@ def train_bc(cfg: dict, seed: int, data: pathlib.Path, out: pathlib.Path) -> dic
     def rows(idx):
         return tuple(torch.from_numpy(x) for x in d.take(idx))
 
+    # A target is an action per row, or a distribution per row (the look-ahead's values), and
+    # cross-entropy takes either; a masked logit meets a zero probability, never a NaN.
+    def chosen(target):
+        return target if target.dim() == 1 else target.argmax(1)
+
     def validate() -> tuple[float, float]:
         net.eval()
         loss = correct = 0.0
@@ -89,7 +96,7 @@ def train_bc(cfg: dict, seed: int, data: pathlib.Path, out: pathlib.Path) -> dic
                 p, sc, m, a = rows(val[i : i + 8192])
                 logits = net(p, sc, m)
                 loss += torch.nn.functional.cross_entropy(logits, a, reduction="sum").item()
-                correct += (logits.argmax(1) == a).sum().item()
+                correct += (logits.argmax(1) == chosen(a)).sum().item()
         net.train()
         return loss / n_val, correct / n_val
 

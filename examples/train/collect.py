@@ -1,7 +1,7 @@
 """Behaviour-cloning data: a built-in agent (`rule` or `greedy`) plays all four seats and every
 decision with a real choice (two or more legal actions) is written as numpy shards:
 planes (N, R, 34) uint8 (the analysis rows under the 64 planes when `[run] analysis`), scalars
-(N, 48) int16, mask (N, A) bool and action (N,) int64 in the canonical (red) action ids.
+(N, 48) int16, mask (N, A) bool and action (N,) int64 in the nets' action ids (common.ACTIONS).
 
 python examples/train/collect.py --config configs/seed.toml --seed 0 --out runs/x/data
 """
@@ -13,9 +13,12 @@ import pathlib
 import time
 
 import numpy as np
-from common import CANONICAL, Log, Space, config_arguments, load_config, rows
+from common import ACTIONS, Log, Space, config_arguments, load_config, rows
 
 import rinshan
+
+# The config tables collecting reads.
+TABLES = ("run", "collect")
 
 
 def collect(cfg: dict, seed: int, out: pathlib.Path) -> dict:
@@ -81,17 +84,54 @@ def _collect_part(cfg, variant, mode, samples, seed, out, totals) -> dict:
     return {"samples": written, "env_steps": steps, "games": games}
 
 
-class Rows:
-    """Training rows fetched by index: `take(idx)` gives (planes, scalars, mask, action), the
-    planes with the analysis rows under them when the net reads those, actions in the canonical
-    (red) ids. collect.py's shards are held in memory; a dataset folder built from logs
-    (`rinshan dataset`) stays memory-mapped, so a dataset larger than memory trains too."""
+# What a row may teach: the move played, the look-ahead's choice, or its values (a distribution).
+TARGETS = ("action", "search_action", "search_value")
 
-    def __init__(self, folder: pathlib.Path, analysis: bool = False, target: str = "action"):
+
+def value_targets(values: np.ndarray, chosen: np.ndarray, temperature: float) -> np.ndarray:
+    """The distribution a row's look-ahead values teach: softmax(value / temperature) over the
+    actions it played out (a value is minus an expected place, so `temperature` is in places);
+    a row it did not look at teaches its label `chosen` alone, as imitation of the choice does."""
+    n, width = values.shape
+    out = np.zeros((n, width), np.float32)
+    finite = ~np.isnan(values)
+    looked = finite.any(1)
+    out[np.flatnonzero(~looked), chosen[~looked]] = 1.0
+    v = np.where(finite[looked], values[looked], -np.inf) / temperature
+    e = np.exp(v - v.max(1, keepdims=True))
+    out[looked] = e / e.sum(1, keepdims=True)
+    return out
+
+
+class Rows:
+    """Training rows fetched by index: `take(idx)` gives (planes, scalars, mask, target), the
+    planes with the analysis rows under them when the net reads those, actions in the ids of the
+    net's layout `actions`. The target is an action per row, or with `target = "search_value"` a
+    distribution over the actions per row (`value_targets`). collect.py's shards are held in
+    memory; a dataset folder built from logs (`rinshan dataset`) stays memory-mapped, so a
+    dataset larger than memory trains too."""
+
+    def __init__(
+        self,
+        folder: pathlib.Path,
+        analysis: bool = False,
+        target: str = "action",
+        temperature: float = 0.05,
+        actions: tuple[str, ...] = ACTIONS,
+    ):
+        if target not in TARGETS:
+            raise SystemExit(f"target {target!r}: write one of {', '.join(TARGETS)}")
+        if not temperature > 0:
+            raise SystemExit(f"temperature {temperature}: it must be above 0")
         self.analysis = analysis
         self.target = target
+        self.temperature = temperature
         if (folder / "manifest.json").exists():
             self._dataset = open_dataset(folder, analysis, target)
+            try:
+                self._space = Space(actions=actions, names=self._dataset.actions)
+            except ValueError as e:
+                raise SystemExit(f"{folder}: {e}") from None
             self._scalars = rinshan.dataset.Dataset(folder, fields=["scalars"])
             self._arrays = None
             self._len = len(self._dataset)
@@ -122,12 +162,14 @@ class Rows:
             d = self._arrays
             return d["planes"][idx], d["scalars"][idx], d["mask"][idx], d["action"][idx]
         d = self._dataset[idx]
-        return (
-            rows(d, self.analysis),
-            d["scalars"],
-            d["legal_action_mask"],
-            d[self.target].astype(np.int64),
-        )
+        cols = self._space.columns
+        if self.target == "search_value":
+            chosen = cols[d["search_action"]]
+            target = value_targets(self._space.values(d["search_value"]), chosen, self.temperature)
+        else:
+            target = cols[d[self.target]]
+        mask = self._space.mask(d["legal_action_mask"])
+        return rows(d, self.analysis), d["scalars"], mask, target
 
     def scalars(self, idx: np.ndarray) -> np.ndarray:
         if self._arrays is not None:
@@ -139,19 +181,19 @@ def open_dataset(
     folder: pathlib.Path, analysis: bool, target: str = "action"
 ) -> rinshan.dataset.Dataset:
     """A log dataset (`rinshan dataset logs/ -o DIR --observe planes[,analysis]`) with the fields
-    a net reads and `target`, the action it learns (`search_action`: the look-ahead's, in a
-    dataset built with `--search`); its rows are already in the red variant's action ids."""
-    names = ["planes", "scalars", "legal_action_mask", target]
+    a net reads and what `target` needs: the action it learns, or the look-ahead's choice
+    (`search_action`) or values and choice (`search_value`) of a dataset built with `--search`;
+    `Rows` brings its action ids (its variant's) to the net's."""
+    names = ["planes", "scalars", "legal_action_mask"]
+    names += ["search_action", "search_value"] if target == "search_value" else [target]
     if analysis:
         names += ["discard_shanten", "discard_ukeire", "improving"]
     try:
         ds = rinshan.dataset.Dataset(folder, fields=names)
     except KeyError as e:
         forms = "planes,analysis" if analysis else "planes"
-        search = " --search search:..." if target == "search_action" else ""
+        search = " --search search:..." if target.startswith("search_") else ""
         raise SystemExit(f"{folder}: {e} (build it with --observe {forms}{search})") from None
-    if list(ds.actions) != list(rinshan.make(CANONICAL, num_envs=1).spec.action_names):
-        raise SystemExit(f"{folder}: its action ids are not the {CANONICAL} variant's")
     return ds
 
 
@@ -161,7 +203,7 @@ def main() -> None:
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument("--out", required=True, help="folder for the shards")
     a = ap.parse_args()
-    print(collect(load_config(a.config, sets=a.set), a.seed, pathlib.Path(a.out)))
+    print(collect(load_config(a.config, TABLES, a.set), a.seed, pathlib.Path(a.out)))
 
 
 if __name__ == "__main__":

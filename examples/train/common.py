@@ -6,6 +6,7 @@ A config is one TOML file (configs/*.toml); every stage reads its own table and 
 from __future__ import annotations
 
 import contextlib
+import functools
 import json
 import pathlib
 import random
@@ -29,23 +30,46 @@ ANALYSIS = ("discard_shanten", "discard_ukeire", "improving")
 PLANE_SCALE = 0.25
 ANALYSIS_SCALE = (0.25, 1 / 16, 1 / 16)
 MASKED = -1e9
-# The nets act in the red variant's action space, a superset of no-red's, so that one net plays
-# both; `Space` maps an env's ids to and from it.
-CANONICAL = "red"
+
+
+@functools.cache
+def action_names(variant: str) -> tuple[str, ...]:
+    """A variant's action names, by id."""
+    return tuple(rinshan.make(variant, num_envs=1).spec.action_names)
+
+
+@functools.cache
+def seats(variant: str) -> int:
+    """How many play a variant: 4, or 3 (sanma)."""
+    return int(rinshan.make(variant, num_envs=1).spec.num_players)
+
+
+# The nets' action layout: red's actions (every four-player kind), then those only other variants
+# have (three players' kita), so that one net can play every variant. Nets saved before kita was
+# added have red's layout (`load_net` reads them so).
+RED = "red"
+ACTIONS = tuple(dict.fromkeys(a for v in (RED, *rinshan.VARIANTS) for a in action_names(v)))
 
 
 class Space:
-    """An env variant's action ids against the canonical (red) ones."""
+    """One layout's action ids against a net's (`actions`, by default the nets' `ACTIONS`): a
+    variant's env, or a dataset's rows (`names`)."""
 
-    def __init__(self, variant: str):
-        canon = rinshan.make(CANONICAL, num_envs=1).spec.action_names
-        names = rinshan.make(variant, num_envs=1).spec.action_names
-        missing = [a for a in names if a not in canon]
+    def __init__(
+        self,
+        variant: str | None = None,
+        actions: tuple[str, ...] | list[str] = ACTIONS,
+        names: tuple[str, ...] | list[str] | None = None,
+    ):
+        names = list(names if names is not None else action_names(variant or RED))
+        actions = list(actions)
+        missing = [a for a in names if a not in actions]
         if missing:
-            raise ValueError(f"{variant} actions {missing} are not in the {CANONICAL} variant's")
-        self.canonical_names = canon
-        self.size = len(canon)
-        self.columns = np.array([canon.index(a) for a in names])
+            what = variant or "the data"
+            raise ValueError(f"{what}: actions {missing} are not in the net's layout")
+        self.canonical_names = actions
+        self.size = len(actions)
+        self.columns = np.array([actions.index(a) for a in names])
         self.back = np.full(self.size, -1)
         self.back[self.columns] = np.arange(len(names))
 
@@ -64,6 +88,12 @@ class Space:
     def mask(self, m: np.ndarray) -> np.ndarray:
         out = np.zeros((m.shape[0], self.size), bool)
         out[:, self.columns] = m
+        return out
+
+    def values(self, v: np.ndarray) -> np.ndarray:
+        """Per-action values (NaN: none) in the net's columns."""
+        out = np.full((v.shape[0], self.size), np.nan, v.dtype)
+        out[:, self.columns] = v
         return out
 
     def to_env(self, actions: np.ndarray) -> np.ndarray:
@@ -140,8 +170,13 @@ class Net(nn.Module):
         extra: int = 0,
         tile_head: bool = False,
         tile_hidden: int = 64,
+        actions: list[str] | None = None,
     ):
         super().__init__()
+        if actions is None and num_actions == len(ACTIONS):
+            actions = list(ACTIONS)
+        if actions is not None and len(actions) != num_actions:
+            raise ValueError(f"{len(actions)} action names for {num_actions} logits")
         blocks: list[nn.Module] = []
         rows = PLANES[0] + (len(ANALYSIS) if analysis else 0)
         width = rows * PLANES[1] + SCALARS + extra
@@ -161,7 +196,7 @@ class Net(nn.Module):
             self.tile_head = nn.Sequential(
                 nn.Linear(len(scale) + 32, tile_hidden), nn.ReLU(), nn.Linear(tile_hidden, 1)
             )
-            cols = torch.from_numpy(Space(CANONICAL).discard_columns())
+            cols = torch.from_numpy(Space(actions=self.actions_of(actions)).discard_columns())
             self.register_buffer("discard_column", cols.clamp(min=0))
             self.register_buffer("is_discard", (cols >= 0).float())
         self.config = {
@@ -173,6 +208,18 @@ class Net(nn.Module):
             "tile_head": tile_head,
             "tile_hidden": tile_hidden,
         }
+        if actions is not None:
+            self.config["actions"] = list(actions)
+
+    @staticmethod
+    def actions_of(actions: list[str] | None) -> tuple[str, ...]:
+        # A policy saved without names is from before kita joined the layout: red's.
+        return tuple(actions) if actions is not None else action_names(RED)
+
+    @property
+    def actions(self) -> tuple[str, ...]:
+        """The action name of each logit (a policy net's)."""
+        return self.actions_of(self.config.get("actions"))
 
     def features(self, planes, scalars, extra=None, scaled=None) -> torch.Tensor:
         """The torso's output; `scaled` is `planes` already scaled by row (the forward pass
@@ -208,7 +255,7 @@ def new_net(cfg: dict) -> Net:
     """An untrained policy net of the config's `[bc]` shape."""
     c = cfg["bc"]
     return Net(
-        Space(CANONICAL).size,
+        len(ACTIONS),
         int(c["hidden"]),
         int(c["layers"]),
         bool(cfg["run"].get("analysis", False)),
@@ -296,7 +343,7 @@ def tensors(ts, space: Space, analysis: bool, take=None):
 
 def greedy_policy(net: Net, variant: str):
     """A function TimeStep -> actions for `rinshan.evaluate`: the net's most likely legal action."""
-    space = Space(variant)
+    space = Space(variant, net.actions)
 
     def act(ts) -> np.ndarray:
         with torch.no_grad():

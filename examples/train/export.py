@@ -17,7 +17,7 @@ import json
 import pathlib
 
 import torch
-from common import ANALYSIS, CANONICAL, PLANES, SCALARS, Net, Space, load_net
+from common import ANALYSIS, PLANES, SCALARS, Net, load_net
 from safetensors.torch import save_file
 
 # What a reader checks first: a file of another layout is refused, not misread.
@@ -36,7 +36,7 @@ def export(net: Net, path: str | pathlib.Path) -> None:
         "format": FORMAT,
         "version": VERSION,
         "config": json.dumps(net.config),
-        "actions": json.dumps(Space(CANONICAL).canonical_names),
+        "actions": json.dumps(list(net.actions)),
         "plane_rows": str(PLANES[0]),
         "scalars": str(SCALARS),
         "analysis_rows": json.dumps(list(ANALYSIS) if net.analysis else []),

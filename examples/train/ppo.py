@@ -1,11 +1,11 @@
 """PPO from the cloned policy, with a KL penalty that keeps it near the frozen BC policy.
 
 Opponents (`[ppo] opponents`):
-- "bc": the frozen BC net plays the three other seats (its most likely action); the learner sits in
-  seat `env % 4`, so every seat and wind is trained; with `bc_in_rust = true` the env plays those
-  seats itself (the BC net exported, as `net:PATH` opponents), measured slower on 2 cores
+- "bc": the frozen BC net plays the other seats (its most likely action); the learner sits in
+  seat `env % seats`, so every seat and wind is trained; with `bc_in_rust = true` the env plays
+  those seats itself (the BC net exported, as `net:PATH` opponents), measured slower on 2 cores
   (docs/rl-validation.md);
-- "self": the learner plays all four seats;
+- "self": the learner plays every seat;
 - a built-in agent ("rule", "greedy", ...): hero mode, the agents play inside `step`.
 
 Per-seat GAE: a transition is one of a learner seat's decisions; the rewards of every step until
@@ -41,6 +41,7 @@ from common import (
     make_env,
     oracle_features,
     save,
+    seats,
     seed_everything,
     set_threads,
     setting,
@@ -99,7 +100,9 @@ class Rollout:
         adv = np.zeros(n, np.float32)
         ok = np.zeros(n, bool)
         # Position of each chain's next decision, filled walking backwards.
-        nxt = np.full((int(self.env[:n].max(initial=0)) + 1, 4), -1)
+        nxt = np.full(
+            (int(self.env[:n].max(initial=0)) + 1, int(self.seat[:n].max(initial=0)) + 1), -1
+        )
         for a, b in reversed(self.blocks):
             e, s = self.env[a:b], self.seat[a:b]
             j = nxt[e, s]
@@ -154,18 +157,22 @@ def train_ppo(
     if bc_in_rust:
         env_opponents = f"net:{out / 'bc.safetensors'}"
         export(bc, out / "bc.safetensors")
+    variant, mode = setting(cfg, table)
+    players = seats(variant)
+    rank_reward = np.asarray(c["rank_reward"], np.float32)
+    if len(rank_reward) != players:
+        raise SystemExit(f"[{table}] rank_reward: {len(rank_reward)} values for {players} places")
+    # The env's per-seat arrays are four wide for three players too (the fourth seat empty).
     learner = np.zeros((n, 4), bool)
     hero_mode = bc_in_rust or opponents not in ("bc", "self")
     if opponents == "self":
-        learner[:] = True
+        learner[:, :players] = True
     else:
-        learner[np.arange(n), np.arange(n) % 4] = True
-    kw = {"opponents": env_opponents, "hero_seats": np.arange(n) % 4} if hero_mode else {}
+        learner[np.arange(n), np.arange(n) % players] = True
+    kw = {"opponents": env_opponents, "hero_seats": np.arange(n) % players} if hero_mode else {}
     kw["oracle"] = oracle
     env = make_env(cfg, table, n, seed + 1000, **kw)
-    variant, mode = setting(cfg, table)
-    space = Space(variant)
-    rank_reward = np.asarray(c["rank_reward"], np.float32)
+    space = Space(variant, bc.actions)
     points_scale = float(c.get("points_scale", 0.0))
     gamma, lam = float(c["gamma"]), float(c["gae_lambda"])
     clip, ent_coef = float(c["clip"]), float(c["entropy"])
@@ -385,12 +392,10 @@ def main() -> None:
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument("--bc", required=True, help="the BC checkpoint (bc.pt)")
     ap.add_argument("--out", required=True)
+    ap.add_argument("--table", default="ppo", help="the config table of settings (ppo, finetune)")
     a = ap.parse_args()
-    print(
-        train_ppo(
-            load_config(a.config, sets=a.set), a.seed, pathlib.Path(a.bc), pathlib.Path(a.out)
-        )
-    )
+    cfg = load_config(a.config, ("run", a.table), a.set)
+    print(train_ppo(cfg, a.seed, pathlib.Path(a.bc), pathlib.Path(a.out), a.table))
 
 
 if __name__ == "__main__":

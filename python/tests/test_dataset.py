@@ -248,6 +248,20 @@ def test_a_three_player_log_makes_a_sanma_dataset(tmp_path, cli):
             assert (mine / f.relative_to(out)).read_bytes() == f.read_bytes(), f
     with pytest.raises(ValueError, match="variant"):
         build(SANMA, tmp_path / "bad", variant="nine-player")
+    if HAVE_TORCH:
+        # The training example reads it in the nets' layout, kita included, the same actions.
+        sys.path.insert(0, str(TRAIN))
+        from collect import Rows
+        from common import ACTIONS
+
+        _, _, mask, action = Rows(out).take(np.arange(len(ds)))
+        assert mask.shape == (len(ds), len(ACTIONS))
+        assert [ACTIONS[a] for a in action] == [ds.actions[a] for a in rows["action"]]
+        for m, want in zip(mask, rows["legal_action_mask"]):
+            assert sorted(ACTIONS[a] for a in np.flatnonzero(m)) == sorted(
+                ds.actions[a] for a in np.flatnonzero(want)
+            )
+        assert mask[:, ACTIONS.index("kita")].any()
 
 
 def test_a_game_in_two_formats_is_kept_once(tmp_path):
@@ -314,6 +328,11 @@ def test_look_ahead_labels_are_tenhou_reads_and_distil_through_bc(tmp_path):
     distilled = bc('bc.target="search_action"', f'bc.init="{start}"')
     assert distilled.returncode == 0, distilled.stderr
     assert f"'samples': {len(ds)}," in distilled.stdout
+    valued = bc('bc.target="search_value"', "bc.temperature=0.02", f'bc.init="{start}"')
+    assert valued.returncode == 0, valued.stderr
+    assert f"'samples': {len(ds)}," in valued.stdout
+    cold = bc('bc.target="search_value"', "bc.temperature=0")
+    assert cold.returncode != 0 and "temperature" in cold.stderr
     plain = tmp_path / "plain"
     build(TENHOU[0], plain, observation=["planes", "analysis"])
     refused = subprocess.run(
@@ -335,3 +354,20 @@ def test_look_ahead_labels_are_tenhou_reads_and_distil_through_bc(tmp_path):
         cwd=TRAIN,
     )
     assert refused.returncode != 0 and "--search" in refused.stderr
+
+
+@needs_torch
+def test_values_teach_their_softmax_where_the_look_ahead_played_out():
+    """bc.py's `search_value` target: softmax(value / temperature) over the actions played out,
+    nothing on the rest; a row the look-ahead left alone teaches its label alone."""
+    sys.path.insert(0, str(TRAIN))
+    from collect import value_targets
+
+    nan = np.nan
+    values = np.array([[nan, -1.0, -1.1, nan], [nan] * 4, [-2.0, nan, nan, nan]], np.float32)
+    got = value_targets(values, np.array([1, 3, 0]), 0.1)
+    p = 1 / (1 + np.exp(-1.0))  # two actions 0.1 places apart at temperature 0.1
+    np.testing.assert_allclose(got[0], [0, p, 1 - p, 0], rtol=1e-6)
+    np.testing.assert_array_equal(got[1:], [[0, 0, 0, 1], [1, 0, 0, 0]])
+    sharp = value_targets(values[:1], np.array([2]), 1e-4)
+    np.testing.assert_allclose(sharp[0], [0, 1, 0, 0], atol=1e-6)

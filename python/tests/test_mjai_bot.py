@@ -137,3 +137,27 @@ def test_the_example_bot_plays_arena_games(cli, dialect):
     assert report["faults"] == []
     me = next(s for s in report["standings"] if s["agent"] == bot)
     assert me["games"] == 4 and me["illegal"] == 0
+
+
+def test_the_example_net_bot_maps_its_nets_actions(tmp_path, capsys):
+    """examples/mjai/bot.py's NetBot plays a trained net's choice in the bot's (red) ids, whatever
+    the net's layout: here a net whose logits are in reverse order, biased towards ron."""
+    torch = pytest.importorskip("torch")
+    sys.path.insert(0, str(ROOT / "examples" / "mjai"))
+    sys.path.insert(0, str(ROOT / "examples" / "train"))
+    from bot import NetBot
+    from common import ACTIONS, Net, save
+
+    names = list(reversed(ACTIONS))
+    net = Net(len(names), 16, 1, actions=names)
+    with torch.no_grad():
+        net.head.weight.zero_()
+        net.head.bias.zero_()
+        net.head.bias[names.index("ron")] = 10.0
+    save(net, tmp_path / "model.pt")
+    bot = NetBot(tmp_path / "model.pt", 1, "app")
+    line = [kyoku(), {"type": "tsumo", "actor": 0, "pai": "?"}]
+    line.append({"type": "dahai", "actor": 0, "pai": "E", "tsumogiri": True})
+    reply = json.loads(bot.react(json.dumps(line)))
+    assert reply == {"type": "hora", "actor": 1, "target": 0, "pai": "E"}
+    assert "the policy failed" not in capsys.readouterr().err

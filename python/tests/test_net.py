@@ -28,11 +28,11 @@ def exported(tmp_path_factory):
     import torch
 
     sys.path.insert(0, str(TRAIN))
-    from common import CANONICAL, SCALARS, Net, Space
+    from common import ACTIONS, SCALARS, Net
     from export import export
 
     torch.manual_seed(3)
-    net = Net(Space(CANONICAL).size, 96, 2, analysis=True, tile_head=True, tile_hidden=24)
+    net = Net(len(ACTIONS), 96, 2, analysis=True, tile_head=True, tile_hidden=24)
     with torch.no_grad():
         # Trained nets' statistics are far from 0 and 1: the normalisation must be read.
         net.scalar_mean.copy_(torch.rand(SCALARS) * 20)
@@ -45,16 +45,16 @@ def exported(tmp_path_factory):
     return net, path
 
 
-@pytest.mark.parametrize("variant,mode", [("red", "half"), ("no-red", "single")])
+@pytest.mark.parametrize("variant,mode", [("red", "half"), ("no-red", "single"), ("sanma", "east")])
 def test_the_rust_net_gives_pytorchs_logits(exported, variant, mode):
     import torch
     from common import Space, tensors
 
     net, path = exported
     rust = _core.Net(str(path))
-    assert rust.actions == list(Space("red").canonical_names)
+    assert rust.actions == list(net.actions)
     assert rust.analysis == ["discard_shanten", "discard_ukeire", "improving"]
-    space = Space(variant)
+    space = Space(variant, net.actions)
     env = rinshan.make(variant, num_envs=32, mode=mode, seed=5, analysis=True)
     ts = env.reset()
     rows = 0
@@ -72,15 +72,17 @@ def test_the_rust_net_gives_pytorchs_logits(exported, variant, mode):
     assert rows == 32 * 40
 
 
-def test_net_opponents_play_pytorchs_games(exported):
+@pytest.mark.parametrize("variant", ["red", "sanma"])
+def test_net_opponents_play_pytorchs_games(exported, variant):
     """The same walls, the net in the other seats: once as `opponents="net:PATH"` (the Rust side
-    plays it inside step), once as a PyTorch greedy policy function: the same results."""
+    plays it inside step), once as a PyTorch greedy policy function: the same results. One net
+    plays four and three players (its layout holds kita)."""
     from common import greedy_policy
 
     net, path = exported
-    kw = dict(games=16, seed=11, variant="red", mode="east", analysis=True)
+    kw = dict(games=16, seed=11, variant=variant, mode="east", analysis=True)
     rust = rinshan.evaluate("rule", opponents=f"net:{path}", **kw)
-    torch_side = rinshan.evaluate("rule", opponents=greedy_policy(net, "red"), **kw)
+    torch_side = rinshan.evaluate("rule", opponents=greedy_policy(net, variant), **kw)
     assert rust.rank_counts == torch_side.rank_counts
     assert rust.average_score == torch_side.average_score
     # Not the same as any seating: the rule agent in their seats plays other games.
@@ -94,10 +96,18 @@ def test_a_file_that_is_not_a_net_is_a_value_error(tmp_path, exported):
         _core.Net(str(bad))
     with pytest.raises(ValueError, match="no such file|No such file"):
         rinshan.make("red", num_envs=2, opponents=f"net:{tmp_path / 'missing.safetensors'}")
+    # A net saved in red's layout, before kita joined the nets' actions, cannot play sanma.
+    from common import RED, Net, action_names
+    from export import export
+
+    red_only = tmp_path / "red.safetensors"
+    export(Net(len(action_names(RED)), 32, 1, analysis=True).eval(), red_only)
     with pytest.raises(ValueError, match="no logit for kita"):
-        rinshan.make("sanma", num_envs=2, opponents=f"net:{exported[1]}")
+        rinshan.make("sanma", num_envs=2, opponents=f"net:{red_only}")
     rust = _core.Net(str(exported[1]))
     with pytest.raises(ValueError, match="decisions"):
         rust.logits(
-            np.zeros((2, 67, 34), np.uint8), np.zeros((3, 48), np.int16), np.ones((2, 87), bool)
+            np.zeros((2, 67, 34), np.uint8),
+            np.zeros((3, 48), np.int16),
+            np.ones((2, len(rust.actions)), bool),
         )

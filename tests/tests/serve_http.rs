@@ -401,9 +401,19 @@ async fn a_net_plays_as_an_opponent() {
     use rinshan_net::random::{net_file, Shape};
     let net = rinshan_net::Net::from_bytes(&net_file(Shape::default(), 2), "small.safetensors", "small".into())
         .expect("a random net");
+    // A net saved in red's actions alone, before kita joined the nets' layout.
+    let red_only = Shape {
+        kita: false,
+        ..Shape::default()
+    };
+    let old =
+        rinshan_net::Net::from_bytes(&net_file(red_only, 2), "old.safetensors", "old".into()).expect("a random net");
     let app = app(Limits {
         fixed_seed: Some(9),
-        nets: vec![("small".into(), std::sync::Arc::new(net))],
+        nets: vec![
+            ("small".into(), std::sync::Arc::new(net)),
+            ("old".into(), std::sync::Arc::new(old)),
+        ],
         ..Limits::default()
     });
     let (_, agents) = get(&app, "/api/agents").await;
@@ -419,9 +429,14 @@ async fn a_net_plays_as_an_opponent() {
     let last = play_to_the_end(&app, &id).await;
     assert_eq!(last["phase"], "over", "{last}");
     replayed_log(&app, &id).await;
+    let body = json!({"variant": "sanma", "mode": "east", "seat": 1, "agents": ["net:small", "rule"], "delay_ms": 0});
+    let v = new_game(&app, body).await;
+    let id = v["id"].as_str().expect("an id").to_string();
+    assert_eq!(play_to_the_end(&app, &id).await["phase"], "over");
+    replayed_log(&app, &id).await;
     for (variant, agent, says) in [
-        ("red", "net:large", "no net `large`: this server offers small"),
-        ("sanma", "net:small", "no logit for kita"),
+        ("red", "net:large", "no net `large`: this server offers small, old"),
+        ("sanma", "net:old", "no logit for kita"),
     ] {
         let body = json!({"variant": variant, "wind": 0, "agents": [agent, "rule", "rule", "rule"]});
         let (status, text) = post(&app, "/api/games", &body).await;

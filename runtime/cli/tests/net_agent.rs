@@ -11,10 +11,14 @@ use rinshan_net::random::{net_file, Shape};
 
 /// A random net's file, written once per name.
 fn net(name: &str, seed: u64) -> PathBuf {
+    net_of(name, seed, Shape::default())
+}
+
+fn net_of(name: &str, seed: u64, shape: Shape) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("rinshan-cli-net-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp dir");
     let path = dir.join(format!("{name}.safetensors"));
-    std::fs::write(&path, net_file(Shape::default(), seed)).expect("write the net");
+    std::fs::write(&path, net_file(shape, seed)).expect("write the net");
     path
 }
 
@@ -80,6 +84,33 @@ fn mjai_bot_plays_a_net_exactly_as_the_arena_seats_it() {
 }
 
 #[test]
+fn a_net_sits_at_a_three_player_table() {
+    // The nets' actions hold kita, so the same file plays sanma's three seats.
+    let path = net("sanma", 8);
+    let agents = format!("net:{},defensive,rule", path.display());
+    let v = json(&rinshan(&[
+        "arena",
+        "--variant",
+        "sanma",
+        "--agents",
+        &agents,
+        "--games",
+        "6",
+        "--mode",
+        "east",
+        "--seed",
+        "3",
+        "--json",
+    ]));
+    assert_eq!(v["faults"], serde_json::json!([]));
+    let me = standings(&v)
+        .into_iter()
+        .find(|(n, _)| n == &format!("net:{}", path.display()))
+        .expect("the net's standing");
+    assert_eq!((me.1["games"].as_u64(), me.1["illegal"].as_u64()), (Some(6), Some(0)));
+}
+
+#[test]
 fn selfplay_seats_a_net() {
     let path = net("selfplay", 5);
     let agents = format!("net:{},rule,rule,rule", path.display());
@@ -100,8 +131,12 @@ fn a_net_that_cannot_be_played_is_refused_with_the_reason() {
     let out = rinshan(&["arena", "--agents", "net:,rule,rule,rule"]);
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("`net:` needs the path"));
-    // The random nets, as the training example's, act in red's actions: sanma's kita is not one.
-    let path = net("sanma", 6);
+    // A net saved in red's actions alone (before kita joined the nets' layout) cannot play sanma.
+    let red_only = Shape {
+        kita: false,
+        ..Shape::default()
+    };
+    let path = net_of("red-only", 6, red_only);
     let out = rinshan(&[
         "arena",
         "--variant",

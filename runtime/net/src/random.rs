@@ -23,6 +23,9 @@ pub struct Shape {
     pub analysis: bool,
     /// Whether it has the tile head, and its width.
     pub tile_hidden: Option<usize>,
+    /// Whether its actions are every variant's (red's, then three players' `kita`), as the
+    /// training example's nets are, or red's alone, as nets saved before kita joined them.
+    pub kita: bool,
 }
 
 impl Default for Shape {
@@ -32,6 +35,7 @@ impl Default for Shape {
             layers: 2,
             analysis: true,
             tile_hidden: Some(16),
+            kita: true,
         }
     }
 }
@@ -53,7 +57,7 @@ pub fn discard_column(name: &str) -> i64 {
 }
 
 /// The bytes of a safetensors file of a net of `shape` with random weights (seeded by `seed`),
-/// indexed by the red variant's actions.
+/// indexed by red's actions and, with `shape.kita`, those only other variants have after them.
 pub fn net_file(shape: Shape, seed: u64) -> Vec<u8> {
     let mut rng = Rng::new(seed);
     let mut uniform = |n: usize, bound: f32| -> Vec<f32> {
@@ -61,7 +65,14 @@ pub fn net_file(shape: Shape, seed: u64) -> Vec<u8> {
             .map(|_| ((rng.next_u64() >> 40) as f32 / (1u64 << 24) as f32 * 2.0 - 1.0) * bound)
             .collect()
     };
-    let actions = action_names(Variant::Red);
+    let mut actions = action_names(Variant::Red);
+    if shape.kita {
+        for name in Variant::ALL.iter().flat_map(|&v| action_names(v)) {
+            if !actions.contains(&name) {
+                actions.push(name);
+            }
+        }
+    }
     let (planes, scalars) = planes_shape();
     let analysis: &[&str] = if shape.analysis { &ANALYSIS } else { &[] };
     let rows = planes + analysis.len();
