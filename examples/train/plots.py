@@ -28,6 +28,7 @@ def plot_run(run: pathlib.Path) -> list[pathlib.Path]:
     stages = [s for s in ("ppo", "finetune") if any((d / f"{s}.jsonl").exists() for d in seeds)]
     fig, axes = plt.subplots(1, len(stages), figsize=(6 * len(stages), 4), squeeze=False)
     for ax, stage in zip(axes[0], stages):
+        even = 2.5  # four players, unless the log says otherwise
         for d in seeds:
             ev = [r for r in read(d / f"{stage}.jsonl") if r.get("kind") == "evaluate"]
             if ev:
@@ -35,7 +36,8 @@ def plot_run(run: pathlib.Path) -> list[pathlib.Path]:
                 y = [r["rank"] for r in ev]
                 ci = [r["ci95"] for r in ev]
                 ax.errorbar(x, y, yerr=ci, marker="o", capsize=3, label=d.name)
-        ax.axhline(2.5, color="grey", linestyle="--", linewidth=1, label="even (2.5)")
+                even = ev[0].get("even", even)
+        ax.axhline(even, color="grey", linestyle="--", linewidth=1, label=f"even ({even:g})")
         ax.set_xlabel("env steps (millions; hero mode: the learner's)")
         ax.set_ylabel("average rank (95% CI)")
         ax.set_title(f"{stage}: rank against the stage's opponents")

@@ -211,6 +211,7 @@ def train_ppo(
         )
         policy.train()
         row = {"update": update, "env_steps": env_steps, "rank": r.average_rank, "ci95": r.ci95}
+        row["even"] = (players + 1) / 2  # the average rank of an even match
         evaluations.append(row)
         log.write(kind="evaluate", **row)
         print(f"{table} update {update}: average rank {r.average_rank:.3f} ± {r.ci95:.3f}")
