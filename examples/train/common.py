@@ -46,7 +46,7 @@ def seats(variant: str) -> int:
 
 # The nets' action layout: red's actions (every four-player kind), then those only other variants
 # have (three players' kita), so that one net can play every variant. Nets saved before kita was
-# added have red's layout (`load_net` reads them so).
+# added have red's layout (`Net.actions` reads them so).
 RED = "red"
 ACTIONS = tuple(dict.fromkeys(a for v in (RED, *rinshan.VARIANTS) for a in action_names(v)))
 
@@ -67,17 +67,17 @@ class Space:
         if missing:
             what = variant or "the data"
             raise ValueError(f"{what}: actions {missing} are not in the net's layout")
-        self.canonical_names = actions
+        self.actions = actions
         self.size = len(actions)
         self.columns = np.array([actions.index(a) for a in names])
         self.back = np.full(self.size, -1)
         self.back[self.columns] = np.arange(len(names))
 
     def discard_columns(self) -> np.ndarray:
-        """Per canonical action, the tile type it discards (a red five is its type's five; 34 =
-        the drawn tile, for tsumogiri), -1 when it is not a discard."""
+        """Per action of the net's, the tile type it discards (a red five is its type's five;
+        34 = the drawn tile, for tsumogiri), -1 when it is not a discard."""
         cols = np.full(self.size, -1)
-        for i, name in enumerate(self.canonical_names):
+        for i, name in enumerate(self.actions):
             if name == "tsumogiri":
                 cols[i] = 34
             elif name.startswith("discard_"):
@@ -329,8 +329,8 @@ def rows(obs: dict, analysis: bool) -> np.ndarray:
 
 
 def tensors(ts, space: Space, analysis: bool, take=None):
-    """(planes, scalars, canonical mask) tensors of a TimeStep, of the envs `take` (default:
-    all). Copies: the env rewrites its arrays."""
+    """(planes, scalars, mask in the net's actions) tensors of a TimeStep, of the envs `take`
+    (default: all). Copies: the env rewrites its arrays."""
     obs = ts.observation
     planes, scalars = rows(obs, analysis), np.asarray(obs["scalars"])
     mask = ts.legal_action_mask

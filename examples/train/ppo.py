@@ -100,9 +100,7 @@ class Rollout:
         adv = np.zeros(n, np.float32)
         ok = np.zeros(n, bool)
         # Position of each chain's next decision, filled walking backwards.
-        nxt = np.full(
-            (int(self.env[:n].max(initial=0)) + 1, int(self.seat[:n].max(initial=0)) + 1), -1
-        )
+        nxt = np.full((int(self.env[:n].max(initial=0)) + 1, 4), -1)
         for a, b in reversed(self.blocks):
             e, s = self.env[a:b], self.seat[a:b]
             j = nxt[e, s]
@@ -394,9 +392,11 @@ def main() -> None:
     ap.add_argument("--bc", required=True, help="the BC checkpoint (bc.pt)")
     ap.add_argument("--out", required=True)
     ap.add_argument("--table", default="ppo", help="the config table of settings (ppo, finetune)")
+    ap.add_argument("--start", help="a policy checkpoint to go on from (default: the BC net)")
     a = ap.parse_args()
     cfg = load_config(a.config, ("run", a.table), a.set)
-    print(train_ppo(cfg, a.seed, pathlib.Path(a.bc), pathlib.Path(a.out), a.table))
+    start = pathlib.Path(a.start) if a.start else None
+    print(train_ppo(cfg, a.seed, pathlib.Path(a.bc), pathlib.Path(a.out), a.table, start))
 
 
 if __name__ == "__main__":

@@ -75,7 +75,7 @@ def test_smoke_pipeline_runs_and_learns(tmp_path):
     assert first["update"] == 0 and first["rank"] == 2.5 and first["ci95"] == 0
     for r in result["evaluate"]:
         assert r["illegal"] == 0 and 1 <= r["rank"] <= 4 and sum(r["places"]) == r["games"]
-    # The no-red net plays the red variant through the canonical action space.
+    # The no-red net plays the red variant through the nets' action layout.
     assert result["evaluate"][2]["variant"] == "red"
 
 
@@ -86,14 +86,14 @@ def test_tile_head_is_one_layer_over_each_tile_and_the_context():
     import torch
 
     sys.path.insert(0, str(TRAIN))
-    from common import DRAWN_ROW, PLANES, SCALARS, Net
+    from common import ACTIONS, DRAWN_ROW, PLANES, SCALARS, Net
 
     torch.manual_seed(0)
-    net = Net(87, hidden=32, analysis=True, tile_head=True, tile_hidden=16)
+    net = Net(len(ACTIONS), hidden=32, analysis=True, tile_head=True, tile_hidden=16)
     b = 64
     planes = torch.randint(0, 5, (b, net.row_scale.shape[0], PLANES[1]), dtype=torch.uint8)
     scalars = torch.randint(0, 30, (b, SCALARS), dtype=torch.int16)
-    mask = torch.rand(b, 87) < 0.5
+    mask = torch.rand(b, len(ACTIONS)) < 0.5
     with torch.no_grad():
         got = net(planes, scalars, mask)
         x = planes.float() * net.row_scale
