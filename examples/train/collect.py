@@ -1,5 +1,6 @@
-"""Behaviour-cloning data: a built-in agent (`rule` or `greedy`) plays all four seats and every
-decision with a real choice (two or more legal actions) is written as numpy shards:
+"""Behaviour-cloning data: a built-in agent (`[collect] agent`: `rule`, `defensive`, ...) plays
+every seat and each decision with a real choice (two or more legal actions) is written as numpy
+shards:
 planes (N, R, 34) uint8 (the analysis rows under the 64 planes when `[run] analysis`), scalars
 (N, 48) int16, mask (N, A) bool and action (N,) int64 in the nets' action ids (common.ACTIONS).
 

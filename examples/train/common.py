@@ -196,7 +196,8 @@ class Net(nn.Module):
             self.tile_head = nn.Sequential(
                 nn.Linear(len(scale) + 32, tile_hidden), nn.ReLU(), nn.Linear(tile_hidden, 1)
             )
-            cols = torch.from_numpy(Space(actions=self.actions_of(actions)).discard_columns())
+            names = self.actions_of(actions)
+            cols = torch.from_numpy(Space(actions=names, names=names).discard_columns())
             self.register_buffer("discard_column", cols.clamp(min=0))
             self.register_buffer("is_discard", (cols >= 0).float())
         self.config = {
