@@ -121,7 +121,7 @@ class Rows:
         actions: tuple[str, ...] = ACTIONS,
     ):
         if target not in TARGETS:
-            raise SystemExit(f"target {target!r}: write one of {', '.join(TARGETS)}")
+            raise SystemExit(f"[bc] target = {target!r}: write one of {', '.join(TARGETS)}")
         if not temperature > 0:
             raise SystemExit(f"temperature {temperature}: it must be above 0")
         self.analysis = analysis

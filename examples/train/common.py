@@ -33,15 +33,18 @@ MASKED = -1e9
 
 
 @functools.cache
+def _spec(variant: str):
+    return rinshan.make(variant, num_envs=1).spec
+
+
 def action_names(variant: str) -> tuple[str, ...]:
     """A variant's action names, by id."""
-    return tuple(rinshan.make(variant, num_envs=1).spec.action_names)
+    return tuple(_spec(variant).action_names)
 
 
-@functools.cache
 def seats(variant: str) -> int:
     """How many play a variant: 4, or 3 (sanma)."""
-    return int(rinshan.make(variant, num_envs=1).spec.num_players)
+    return int(_spec(variant).num_players)
 
 
 # The nets' action layout: red's actions (every four-player kind), then those only other variants

@@ -402,12 +402,8 @@ async fn a_net_plays_as_an_opponent() {
     let net = rinshan_net::Net::from_bytes(&net_file(Shape::default(), 2), "small.safetensors", "small".into())
         .expect("a random net");
     // A net saved in red's actions alone, before kita joined the nets' layout.
-    let red_only = Shape {
-        kita: false,
-        ..Shape::default()
-    };
-    let old =
-        rinshan_net::Net::from_bytes(&net_file(red_only, 2), "old.safetensors", "old".into()).expect("a random net");
+    let old = rinshan_net::Net::from_bytes(&net_file(Shape::red_only(), 2), "old.safetensors", "old".into())
+        .expect("a random net");
     let app = app(Limits {
         fixed_seed: Some(9),
         nets: vec![

@@ -132,11 +132,7 @@ fn a_net_that_cannot_be_played_is_refused_with_the_reason() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("`net:` needs the path"));
     // A net saved in red's actions alone (before kita joined the nets' layout) cannot play sanma.
-    let red_only = Shape {
-        kita: false,
-        ..Shape::default()
-    };
-    let path = net_of("red-only", 6, red_only);
+    let path = net_of("red-only", 6, Shape::red_only());
     let out = rinshan(&[
         "arena",
         "--variant",

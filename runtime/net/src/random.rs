@@ -40,6 +40,16 @@ impl Default for Shape {
     }
 }
 
+impl Shape {
+    /// The default shape in red's actions alone: a net saved before kita joined the layout.
+    pub fn red_only() -> Shape {
+        Shape {
+            kita: false,
+            ..Shape::default()
+        }
+    }
+}
+
 /// The analysis rows the training example's nets read.
 const ANALYSIS: [&str; 3] = ["discard_shanten", "discard_ukeire", "improving"];
 

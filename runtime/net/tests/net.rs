@@ -204,11 +204,7 @@ fn the_forward_pass_is_the_training_examples_function() {
 #[test]
 fn a_net_plays_whole_games_legally_in_every_variant() {
     let net = Arc::new(load(&net_file(Shape::default(), 3)));
-    let red_only = Shape {
-        kita: false,
-        ..Shape::default()
-    };
-    let red_only = Arc::new(load(&net_file(red_only, 3)));
+    let red_only = Arc::new(load(&net_file(Shape::red_only(), 3)));
     for &variant in Variant::ALL.iter() {
         // A net of red's actions alone is refused exactly where the variant has one red lacks
         // (three players' kita); a net of every variant's actions plays them all.
