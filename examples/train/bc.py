@@ -9,6 +9,10 @@ with `--search` (distillation); with `"search_value"` it learns the distribution
 (softmax of value / `[bc] temperature`, in places; default 0.05) where it looked, its choice
 elsewhere. `[bc] init = "PATH"` starts from a trained checkpoint instead of a new net (its input
 statistics kept).
+
+With `[bc] evaluate_games = N` (and `evaluate_every` steps, `opponents`), the net plays N games
+against `opponents` in the run's variant and mode, on the same walls each time, at the start, every
+`evaluate_every` steps and at the end: the points of a rank curve (`kind = "evaluate"` in bc.jsonl).
 """
 
 from __future__ import annotations
@@ -26,9 +30,11 @@ from common import (
     load_config,
     load_net,
     new_net,
+    rank_point,
     save,
     seed_everything,
     set_threads,
+    setting,
 )
 
 # Validation rows at most (a tenth of the rows up to this), and rows the scalars' mean and spread
@@ -98,8 +104,30 @@ def train_bc(cfg: dict, seed: int, data: pathlib.Path, out: pathlib.Path) -> dic
         net.train()
         return loss / n_val, correct / n_val
 
+    games = int(c.get("evaluate_games", 0))
+    if games > 0 and "opponents" not in c:
+        raise SystemExit("[bc] evaluate_games needs [bc] opponents, an agent's name (defensive)")
+    evaluate_every = int(c.get("evaluate_every", 0)) or total
+    variant, mode = setting(cfg, "bc")
+    evaluations, evaluation_s = [], 0.0
+
+    # Rank against training time: the seconds learning took, the evaluations' own left out.
+    def evaluate(step: int) -> None:
+        nonlocal evaluation_s
+        if games <= 0:
+            return
+        t = time.time()
+        point = rank_point(net, variant, mode, analysis, c["opponents"], games, 10_000 + seed)
+        evaluation_s += time.time() - t
+        train_s = round(time.time() - start - evaluation_s, 1)
+        row = {"step": step, "samples": step * batch, "train_s": train_s, **point}
+        evaluations.append(row)
+        log.write(kind="evaluate", **row)
+        print(f"bc step {step}: average rank {point['rank']:.3f} ± {point['ci95']:.3f}")
+
     val_loss, acc = validate()
     log.write(step=0, samples=0, train_loss=None, val_loss=val_loss, val_accuracy=acc)
+    evaluate(0)
     first_loss = val_loss
     rng = np.random.default_rng(seed + 1)
     step, running = 0, []
@@ -126,6 +154,8 @@ def train_bc(cfg: dict, seed: int, data: pathlib.Path, out: pathlib.Path) -> dic
                 )
                 print(f"bc step {step}/{total} loss {np.mean(running):.4f} val acc {acc:.3f}")
                 running = []
+            if step % evaluate_every == 0 or step == total:
+                evaluate(step)
             if step >= total:
                 break
     seconds = round(time.time() - start, 1)
@@ -138,6 +168,7 @@ def train_bc(cfg: dict, seed: int, data: pathlib.Path, out: pathlib.Path) -> dic
         "val_loss": val_loss,
         "val_accuracy": acc,
         "seconds": seconds,
+        "evaluations": evaluations,
     }
 
 

@@ -357,6 +357,25 @@ def greedy_policy(net: Net, variant: str):
     return act
 
 
+def rank_point(net: Net, variant: str, mode: str, analysis: bool, opponents, games: int, seed: int):
+    """One point of a rank curve: the net's greedy play against `opponents` (an agent's name or a
+    policy function) on the walls of `seed`, every set of walls once from each seat."""
+    was_training = net.training
+    net.eval()
+    r = rinshan.evaluate(
+        greedy_policy(net, variant),
+        opponents=opponents,
+        games=games,
+        seed=seed,
+        variant=variant,
+        mode=mode,
+        analysis=analysis,
+    )
+    net.train(was_training)
+    # `even` is the average rank of an even match, the curve's reference line.
+    return {"rank": r.average_rank, "ci95": r.ci95, "even": (seats(variant) + 1) / 2}
+
+
 def entropy_and_kl(logp: torch.Tensor, ref_logp: torch.Tensor, mask: torch.Tensor):
     """Entropy of the policy and KL(policy || reference) over the legal actions only (illegal ones
     have probability 0 in both, and their log-probabilities are not finite in any useful sense)."""

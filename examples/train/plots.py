@@ -19,6 +19,17 @@ def read(path: pathlib.Path) -> list[dict]:
     return [json.loads(line) for line in path.read_text().splitlines()] if path.exists() else []
 
 
+def evaluations(path: pathlib.Path) -> list[dict]:
+    return [r for r in read(path) if r.get("kind") == "evaluate"]
+
+
+# A curve's x: rows learnt for behaviour cloning, env steps for PPO.
+X_AXES = {
+    "bc": ("samples", "rows learnt (millions)"),
+    "rl": ("env_steps", "env steps (millions; hero mode: the learner's)"),
+}
+
+
 def plot_run(run: pathlib.Path) -> list[pathlib.Path]:
     seeds = sorted(p for p in run.glob("seed*") if p.is_dir())
     out = run / "plots"
@@ -26,19 +37,23 @@ def plot_run(run: pathlib.Path) -> list[pathlib.Path]:
     written = []
 
     stages = [s for s in ("ppo", "finetune") if any((d / f"{s}.jsonl").exists() for d in seeds)]
-    fig, axes = plt.subplots(1, len(stages), figsize=(6 * len(stages), 4), squeeze=False)
-    for ax, stage in zip(axes[0], stages):
+    # Behaviour cloning's curve where it evaluated along the way (`[bc] evaluate_games`).
+    curves = [s for s in ("bc", *stages) if any(evaluations(d / f"{s}.jsonl") for d in seeds)]
+    columns = max(1, len(curves))
+    fig, axes = plt.subplots(1, columns, figsize=(6 * columns, 4), squeeze=False)
+    for ax, stage in zip(axes[0], curves):
         even = 2.5  # four players, unless the log says otherwise
+        x_key, x_label = X_AXES["bc" if stage == "bc" else "rl"]
         for d in seeds:
-            ev = [r for r in read(d / f"{stage}.jsonl") if r.get("kind") == "evaluate"]
+            ev = evaluations(d / f"{stage}.jsonl")
             if ev:
-                x = [r["env_steps"] / 1e6 for r in ev]
+                x = [r[x_key] / 1e6 for r in ev]
                 y = [r["rank"] for r in ev]
                 ci = [r["ci95"] for r in ev]
                 ax.errorbar(x, y, yerr=ci, marker="o", capsize=3, label=d.name)
                 even = ev[0].get("even", even)
         ax.axhline(even, color="grey", linestyle="--", linewidth=1, label=f"even ({even:g})")
-        ax.set_xlabel("env steps (millions; hero mode: the learner's)")
+        ax.set_xlabel(x_label)
         ax.set_ylabel("average rank (95% CI)")
         ax.set_title(f"{stage}: rank against the stage's opponents")
         ax.invert_yaxis()

@@ -40,6 +40,7 @@ from common import (
     load_net,
     make_env,
     oracle_features,
+    rank_point,
     save,
     seats,
     seed_everything,
@@ -48,8 +49,6 @@ from common import (
     tensors,
 )
 from export import export
-
-import rinshan
 
 
 class Rollout:
@@ -197,22 +196,12 @@ def train_ppo(
         games = int(c.get("evaluate_games", 0))
         if games <= 0:
             return
-        policy.eval()
-        r = rinshan.evaluate(
-            greedy_policy(policy, variant),
-            opponents=bc_act if opponents in ("bc", "self") else opponents,
-            games=games,
-            seed=10_000 + seed,
-            variant=variant,
-            mode=mode,
-            analysis=analysis,
-        )
-        policy.train()
-        row = {"update": update, "env_steps": env_steps, "rank": r.average_rank, "ci95": r.ci95}
-        row["even"] = (players + 1) / 2  # the average rank of an even match
+        against = bc_act if opponents in ("bc", "self") else opponents
+        point = rank_point(policy, variant, mode, analysis, against, games, 10_000 + seed)
+        row = {"update": update, "env_steps": env_steps, **point}
         evaluations.append(row)
         log.write(kind="evaluate", **row)
-        print(f"{table} update {update}: average rank {r.average_rank:.3f} ± {r.ci95:.3f}")
+        print(f"{table} update {update}: average rank {row['rank']:.3f} ± {row['ci95']:.3f}")
 
     evaluate(0)
     total = Split()

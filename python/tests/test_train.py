@@ -45,6 +45,13 @@ def test_smoke_pipeline_runs_and_learns(tmp_path):
     bc = result["bc"]
     assert bc["val_loss"] < 0.8 * bc["first_val_loss"]
     assert bc["val_accuracy"] > 0.5
+    # The clone's rank curve: at the start, every 50 steps and at the last step.
+    ev = [r for r in lines(seed / "bc.jsonl") if r.get("kind") == "evaluate"]
+    assert [r["step"] for r in ev] == [*range(0, bc["steps"], 50), bc["steps"]]
+    assert all(1 <= r["rank"] <= 4 and r["ci95"] > 0 and r["even"] == 2.5 for r in ev)
+    # Its clock is learning's: it grows, and leaves the evaluations' own time out.
+    assert all(a["train_s"] <= b["train_s"] for a, b in zip(ev, ev[1:]))
+    assert ev[-1]["train_s"] < ev[-1]["wall_s"]
     # PPO's losses fall: over each rollout, the last epoch's value and policy losses are below
     # the first epoch's (summed over the updates, which are few and noisy one by one).
     updates = [r for r in lines(seed / "ppo.jsonl") if r["kind"] == "update"]
