@@ -88,7 +88,9 @@ def plot_run(run: pathlib.Path) -> list[pathlib.Path]:
     kl.set(xlabel=steps, title="KL(learner || BC)")
     entropy.set(xlabel=steps, title="policy entropy (nats)")
     for ax in axes.flat:
-        ax.legend(fontsize=7)
+        # A run without a stage (BC alone, PPO from a given clone) leaves its panels empty.
+        if ax.get_legend_handles_labels()[0]:
+            ax.legend(fontsize=7)
     fig.tight_layout()
     written.append(out / "losses.png")
     fig.savefig(written[-1], dpi=90)
