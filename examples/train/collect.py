@@ -104,6 +104,26 @@ def value_targets(values: np.ndarray, chosen: np.ndarray, temperature: float) ->
     return out
 
 
+def gather(files: list[pathlib.Path]) -> dict[str, np.ndarray]:
+    """The shards' arrays end to end, written into arrays allocated once: concatenating loaded
+    shards would hold every row twice, and a few million rows of planes no longer fit twice."""
+    sizes = []
+    for f in files:
+        with np.load(f) as z:
+            sizes.append(len(z["action"]))
+    out: dict[str, np.ndarray] = {}
+    at = 0
+    for f, n in zip(files, sizes, strict=True):
+        with np.load(f) as z:
+            for k in z.files:
+                a = z[k]
+                if k not in out:
+                    out[k] = np.empty((sum(sizes), *a.shape[1:]), a.dtype)
+                out[k][at : at + n] = a
+        at += n
+    return out
+
+
 class Rows:
     """Training rows fetched by index: `take(idx)` gives (planes, scalars, mask, target), the
     planes with the analysis rows under them when the net reads those, actions in the ids of the
@@ -145,8 +165,7 @@ class Rows:
         files = sorted(folder.glob("shard-*.npz"))
         if not files:
             raise SystemExit(f"{folder}: no shard-*.npz (run collect.py first)")
-        parts = [np.load(f) for f in files]
-        self._arrays = {k: np.concatenate([p[k] for p in parts]) for k in parts[0].files}
+        self._arrays = gather(files)
         self._len = len(self._arrays["action"])
 
     def __len__(self) -> int:
