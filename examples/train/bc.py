@@ -23,7 +23,7 @@ import time
 
 import numpy as np
 import torch
-from collect import Rows
+from collect import Rows, held_out
 from common import (
     Log,
     config_arguments,
@@ -37,9 +37,8 @@ from common import (
     setting,
 )
 
-# Validation rows at most (a tenth of the rows up to this), and rows the scalars' mean and spread
-# are taken from: enough for both, and a dataset of millions of rows is not read whole for them.
-VALIDATION_ROWS = 65536
+# Rows the scalars' mean and spread are taken from: enough for them, and a dataset of millions of
+# rows is not read whole for them.
 SCALAR_ROWS = 1 << 20
 
 
@@ -60,9 +59,8 @@ def train_bc(cfg: dict, seed: int, data: pathlib.Path, out: pathlib.Path) -> dic
     n = len(d)
     if n == 0:
         raise SystemExit(f"{data}: no rows to learn from")
-    order = np.random.default_rng(seed).permutation(n)
-    n_val = max(1, min(n // 10, VALIDATION_ROWS))
-    val, train = np.sort(order[:n_val]), order[n_val:]
+    val, train = held_out(n, seed)
+    n_val = len(val)
     want = (net.row_scale.shape[0], net.config["num_actions"])
     if d.shape != want:
         raise SystemExit(

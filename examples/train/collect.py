@@ -124,6 +124,19 @@ def gather(files: list[pathlib.Path]) -> dict[str, np.ndarray]:
     return out
 
 
+# Held-out rows at most (a tenth of the rows up to this): enough to measure a net on, and a
+# dataset of millions of rows is not read whole for them.
+VALIDATION_ROWS = 65536
+
+
+def held_out(n: int, seed: int) -> tuple[np.ndarray, np.ndarray]:
+    """bc.py's split of `n` rows for its `seed`: the held-out rows (sorted) and the training rows,
+    so that agreement.py can score a net on the rows it did not learn from."""
+    order = np.random.default_rng(seed).permutation(n)
+    n_val = max(1, min(n // 10, VALIDATION_ROWS))
+    return np.sort(order[:n_val]), order[n_val:]
+
+
 class Rows:
     """Training rows fetched by index: `take(idx)` gives (planes, scalars, mask, target), the
     planes with the analysis rows under them when the net reads those, actions in the ids of the
@@ -147,6 +160,8 @@ class Rows:
         self.analysis = analysis
         self.target = target
         self.temperature = temperature
+        self._folder = folder
+        self._labels: dict[str, rinshan.dataset.Dataset] = {}
         if (folder / "manifest.json").exists():
             self._dataset = open_dataset(folder, analysis, target)
             try:
@@ -190,6 +205,20 @@ class Rows:
             target = cols[d[self.target]]
         mask = self._space.mask(d["legal_action_mask"])
         return rows(d, self.analysis), d["scalars"], mask, target
+
+    def labels(self, name: str, idx: np.ndarray) -> np.ndarray:
+        """A dataset folder's action array `name` (`action`, `search_action`) at rows `idx`, in
+        the net's action ids, without the observations."""
+        if self._arrays is not None:
+            if name != "action":
+                raise SystemExit(f"collect.py's shards hold no `{name}`")
+            return self._arrays["action"][idx]
+        if name not in self._labels:
+            try:
+                self._labels[name] = rinshan.dataset.Dataset(self._folder, fields=[name])
+            except KeyError as e:
+                raise SystemExit(f"{self._folder}: {e}") from None
+        return self._space.columns[self._labels[name][idx][name]]
 
     def scalars(self, idx: np.ndarray) -> np.ndarray:
         if self._arrays is not None:

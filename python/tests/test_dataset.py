@@ -8,6 +8,7 @@ import importlib.util
 import json
 import os
 import pathlib
+import re
 import subprocess
 import sys
 
@@ -328,6 +329,24 @@ def test_look_ahead_labels_are_tenhou_reads_and_distil_through_bc(tmp_path):
     distilled = bc('bc.target="search_action"', f'bc.init="{start}"')
     assert distilled.returncode == 0, distilled.stderr
     assert f"'samples': {len(ds)}," in distilled.stdout
+    # agreement.py scores the distilled net on the rows bc.py held out (bc.py's seed, 0): its
+    # agreement with the look-ahead there is bc.py's last validation accuracy, to the last digit.
+    scored = subprocess.run(
+        [sys.executable, "agreement.py", str(tmp_path / "out" / "bc.pt"), str(data)]
+        + ["--held-out", "0"],
+        capture_output=True,
+        text=True,
+        timeout=300,
+        cwd=TRAIN,
+    )
+    assert scored.returncode == 0, scored.stderr
+    report = json.loads(scored.stdout)
+    assert report["rows"] == max(1, len(ds) // 10)
+    accuracy = re.search(r"'val_accuracy': ([0-9.e-]+)", distilled.stdout)
+    assert accuracy and report["look_ahead"]["agreement"] == float(accuracy.group(1))
+    la = report["look_ahead"]
+    assert (rows["search_action"] != rows["action"]).any() and 0 < la["differ"] <= report["rows"]
+    assert la["takes_look_ahead"] + la["takes_log"] <= 1.0
     valued = bc('bc.target="search_value"', "bc.temperature=0.02", f'bc.init="{start}"')
     assert valued.returncode == 0, valued.stderr
     assert f"'samples': {len(ds)}," in valued.stdout
