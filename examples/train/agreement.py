@@ -49,6 +49,7 @@ def agreement(
     report = {
         "net": str(net_path),
         "data": str(data),
+        "held_out": held_out_seed,
         "rows": n,
         "agreement": float(same.mean()) if n else None,
         "by_kind": by_kind,
@@ -81,7 +82,11 @@ def look_ahead(chosen: np.ndarray, taken: np.ndarray, searched: np.ndarray) -> d
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("net", type=pathlib.Path, help="a checkpoint (bc.pt)")
-    ap.add_argument("data", type=pathlib.Path, help="a `rinshan dataset` folder of held-out games")
+    ap.add_argument(
+        "data",
+        type=pathlib.Path,
+        help="a `rinshan dataset` folder of held-out games, or with --held-out the net's own",
+    )
     ap.add_argument(
         "--held-out",
         type=int,

@@ -341,7 +341,7 @@ def test_look_ahead_labels_are_tenhou_reads_and_distil_through_bc(tmp_path):
     )
     assert scored.returncode == 0, scored.stderr
     report = json.loads(scored.stdout)
-    assert report["rows"] == max(1, len(ds) // 10)
+    assert report["held_out"] == 0 and report["rows"] == max(1, len(ds) // 10)
     accuracy = re.search(r"'val_accuracy': ([0-9.e-]+)", distilled.stdout)
     assert accuracy and report["look_ahead"]["agreement"] == float(accuracy.group(1))
     la = report["look_ahead"]
