@@ -54,16 +54,9 @@ def agreement(
         "agreement": float(same.mean()) if n else None,
         "by_kind": by_kind,
     }
-    if searched(data):
+    if d.has("search_action"):
         report["look_ahead"] = look_ahead(chosen, taken, d.labels("search_action", idx))
     return report
-
-
-def searched(data: pathlib.Path) -> bool:
-    """Whether `data` is a dataset folder built with `--search` (its rows carry the look-ahead's
-    choice)."""
-    manifest = data / "manifest.json"
-    return manifest.exists() and bool(json.loads(manifest.read_text())["options"].get("search"))
 
 
 def look_ahead(chosen: np.ndarray, taken: np.ndarray, searched: np.ndarray) -> dict:

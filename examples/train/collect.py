@@ -161,14 +161,13 @@ class Rows:
         self.target = target
         self.temperature = temperature
         self._folder = folder
-        self._labels: dict[str, rinshan.dataset.Dataset] = {}
+        self._columns: dict[str, rinshan.dataset.Dataset] = {}
         if (folder / "manifest.json").exists():
             self._dataset = open_dataset(folder, analysis, target)
             try:
                 self._space = Space(actions=actions, names=self._dataset.actions)
             except ValueError as e:
                 raise SystemExit(f"{folder}: {e}") from None
-            self._scalars = rinshan.dataset.Dataset(folder, fields=["scalars"])
             self._arrays = None
             self._len = len(self._dataset)
             return
@@ -206,24 +205,33 @@ class Rows:
         mask = self._space.mask(d["legal_action_mask"])
         return rows(d, self.analysis), d["scalars"], mask, target
 
-    def labels(self, name: str, idx: np.ndarray) -> np.ndarray:
-        """A dataset folder's action array `name` (`action`, `search_action`) at rows `idx`, in
-        the net's action ids, without the observations."""
+    def has(self, name: str) -> bool:
+        """Whether the rows carry the array `name` (`search_action` in a dataset built with
+        `--search`)."""
         if self._arrays is not None:
-            if name != "action":
-                raise SystemExit(f"collect.py's shards hold no `{name}`")
-            return self._arrays["action"][idx]
-        if name not in self._labels:
-            try:
-                self._labels[name] = rinshan.dataset.Dataset(self._folder, fields=[name])
-            except KeyError as e:
-                raise SystemExit(f"{self._folder}: {e}") from None
-        return self._space.columns[self._labels[name][idx][name]]
+            return name in self._arrays
+        return name in self._dataset.field_names
+
+    def labels(self, name: str, idx: np.ndarray) -> np.ndarray:
+        """The action array `name` (`action`, `search_action`) at rows `idx`, in the net's action
+        ids, without the observations."""
+        if not self.has(name):
+            raise SystemExit(f"{self._folder}: the rows hold no `{name}`")
+        if self._arrays is not None:
+            return self._arrays[name][idx]
+        return self._space.columns[self._column(name)[idx][name]]
 
     def scalars(self, idx: np.ndarray) -> np.ndarray:
         if self._arrays is not None:
             return self._arrays["scalars"][idx]
-        return self._scalars[idx]["scalars"]
+        return self._column("scalars")[idx]["scalars"]
+
+    def _column(self, name: str) -> rinshan.dataset.Dataset:
+        """The dataset folder opened for the one field `name`, so that reading it reads nothing
+        else (opened once)."""
+        if name not in self._columns:
+            self._columns[name] = rinshan.dataset.Dataset(self._folder, fields=[name])
+        return self._columns[name]
 
 
 def open_dataset(

@@ -30,6 +30,13 @@ HAVE_TORCH = importlib.util.find_spec("torch") is not None
 needs_torch = pytest.mark.skipif(not HAVE_TORCH and not os.environ.get("CI"), reason="no torch")
 
 
+def train(*args) -> subprocess.CompletedProcess:
+    """Runs one of the training example's scripts (`bc.py`, `agreement.py`) with `args`."""
+    return subprocess.run(
+        [sys.executable, *map(str, args)], capture_output=True, text=True, timeout=300, cwd=TRAIN
+    )
+
+
 @pytest.fixture(scope="module")
 def built(tmp_path_factory):
     logs = tmp_path_factory.mktemp("logs")
@@ -198,13 +205,7 @@ def test_behaviour_cloning_from_a_log_dataset(built, tmp_path):
     config = TRAIN / "configs" / "from_logs.toml"
 
     def script(*args):
-        done = subprocess.run(
-            [sys.executable, *map(str, args)],
-            capture_output=True,
-            text=True,
-            timeout=300,
-            cwd=TRAIN,
-        )
+        done = train(*args)
         assert done.returncode == 0, done.stdout + done.stderr
         return done.stdout
 
@@ -314,13 +315,7 @@ def test_look_ahead_labels_are_tenhou_reads_and_distil_through_bc(tmp_path):
         args = ["bc.py", "--config", config, "--data", data, "--out", tmp_path / "out"]
         for s in sets:
             args += ["--set", s]
-        return subprocess.run(
-            [sys.executable, *map(str, args)],
-            capture_output=True,
-            text=True,
-            timeout=300,
-            cwd=TRAIN,
-        )
+        return train(*args)
 
     first = bc()
     assert first.returncode == 0, first.stderr
@@ -331,14 +326,7 @@ def test_look_ahead_labels_are_tenhou_reads_and_distil_through_bc(tmp_path):
     assert f"'samples': {len(ds)}," in distilled.stdout
     # agreement.py scores the distilled net on the rows bc.py held out (bc.py's seed, 0): its
     # agreement with the look-ahead there is bc.py's last validation accuracy, to the last digit.
-    scored = subprocess.run(
-        [sys.executable, "agreement.py", str(tmp_path / "out" / "bc.pt"), str(data)]
-        + ["--held-out", "0"],
-        capture_output=True,
-        text=True,
-        timeout=300,
-        cwd=TRAIN,
-    )
+    scored = train("agreement.py", tmp_path / "out" / "bc.pt", data, "--held-out", "0")
     assert scored.returncode == 0, scored.stderr
     report = json.loads(scored.stdout)
     assert report["held_out"] == 0 and report["rows"] == max(1, len(ds) // 10)
@@ -354,23 +342,16 @@ def test_look_ahead_labels_are_tenhou_reads_and_distil_through_bc(tmp_path):
     assert cold.returncode != 0 and "temperature" in cold.stderr
     plain = tmp_path / "plain"
     build(TENHOU[0], plain, observation=["planes", "analysis"])
-    refused = subprocess.run(
-        [
-            sys.executable,
-            "bc.py",
-            "--config",
-            str(config),
-            "--data",
-            str(plain),
-            "--out",
-            str(tmp_path / "x"),
-            "--set",
-            'bc.target="search_action"',
-        ],
-        capture_output=True,
-        text=True,
-        timeout=300,
-        cwd=TRAIN,
+    refused = train(
+        "bc.py",
+        "--config",
+        config,
+        "--data",
+        plain,
+        "--out",
+        tmp_path / "x",
+        "--set",
+        'bc.target="search_action"',
     )
     assert refused.returncode != 0 and "--search" in refused.stderr
 
