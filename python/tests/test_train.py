@@ -116,6 +116,54 @@ def test_tile_head_is_one_layer_over_each_tile_and_the_context():
 
 
 @needs_torch
+def test_average_is_the_mean_of_the_parameters_of_nets_from_one_start(tmp_path):
+    import torch
+
+    sys.path.insert(0, str(TRAIN))
+    from average import average
+    from common import ACTIONS, Net, load_net, save
+
+    torch.manual_seed(0)
+    shape = dict(hidden=16, analysis=True, tile_head=True, tile_hidden=8)
+    a, b = Net(len(ACTIONS), **shape), Net(len(ACTIONS), **shape)
+    for net in (a, b):
+        net.scalar_mean.fill_(3.0)  # the start's normalisation, shared
+    save(a, tmp_path / "a.pt")
+    save(b, tmp_path / "b.pt")
+    done = subprocess.run(
+        [
+            sys.executable,
+            str(TRAIN / "average.py"),
+            str(tmp_path / "mean.pt"),
+            str(tmp_path / "a.pt"),
+            str(tmp_path / "b.pt"),
+        ],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert done.returncode == 0, done.stdout + done.stderr
+    mean = load_net(tmp_path / "mean.pt")
+    sa, sb = a.state_dict(), b.state_dict()
+    for name, t in mean.state_dict().items():
+        assert torch.allclose(t.float(), (sa[name].float() + sb[name].float()) / 2), name
+    assert torch.equal(mean.discard_column, a.discard_column)
+
+    # A net averaged with itself is the same function.
+    planes = torch.randint(0, 5, (8, a.row_scale.shape[0], 34), dtype=torch.uint8)
+    scalars = torch.randint(0, 30, (8, mean.scalar_mean.shape[0]), dtype=torch.int16)
+    legal = torch.ones(8, len(ACTIONS), dtype=torch.bool)
+    with torch.no_grad():
+        assert torch.allclose(average([a, a])(planes, scalars, legal), a(planes, scalars, legal))
+
+    with pytest.raises(ValueError, match="another shape"):
+        average([a, Net(len(ACTIONS), **{**shape, "hidden": 32})])
+    other = Net(len(ACTIONS), **shape)
+    with pytest.raises(ValueError, match="not trained from one start"):
+        average([a, other])
+
+
+@needs_torch
 @pytest.mark.parametrize("bc_in_rust", ["false", "true"])
 def test_throughput_reports_the_split_of_a_few_updates(bc_in_rust):
     """With `bc_in_rust` the BC seats are the env's `net:PATH` opponents: the same loop."""
