@@ -3,10 +3,11 @@
 python examples/train/average.py runs/sla/ppo/mean.pt runs/sla/ppo/seed*/ppo.pt
 
 Runs fine-tuned from the same net (PPO with different seeds, say) tend to stay in one basin of the
-loss, where the mean of their weights plays at least as well as each and with less of any one run's
-noise (Wortsman et al., 2022, "Model soups"). Nets from different starts have no such relation:
-their mean is not a net that plays. So the nets must share their shape and the buffers their start
-fixed (the scalars' normalisation, the discard columns), and only parameters are averaged.
+loss, where the mean of their weights often plays as well as each or better, with less of any one
+run's noise (Wortsman et al., 2022, "Model soups"; docs/rl-validation.md measures it in sanma).
+Nets from different starts have no such relation: their mean is not a net that plays. So the nets
+must share their shape and the buffers their start fixed (the scalars' normalisation, the discard
+columns), and only parameters are averaged.
 """
 
 from __future__ import annotations
