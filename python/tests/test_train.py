@@ -121,7 +121,7 @@ def test_average_is_the_mean_of_the_parameters_of_nets_from_one_start(tmp_path):
 
     sys.path.insert(0, str(TRAIN))
     from average import average
-    from common import ACTIONS, Net, load_net, save
+    from common import ACTIONS, PLANES, SCALARS, Net, load_net, save
 
     torch.manual_seed(0)
     shape = dict(hidden=16, analysis=True, tile_head=True, tile_hidden=8)
@@ -150,8 +150,8 @@ def test_average_is_the_mean_of_the_parameters_of_nets_from_one_start(tmp_path):
     assert torch.equal(mean.discard_column, a.discard_column)
 
     # A net averaged with itself is the same function.
-    planes = torch.randint(0, 5, (8, a.row_scale.shape[0], 34), dtype=torch.uint8)
-    scalars = torch.randint(0, 30, (8, mean.scalar_mean.shape[0]), dtype=torch.int16)
+    planes = torch.randint(0, 5, (8, a.row_scale.shape[0], PLANES[1]), dtype=torch.uint8)
+    scalars = torch.randint(0, 30, (8, SCALARS), dtype=torch.int16)
     legal = torch.ones(8, len(ACTIONS), dtype=torch.bool)
     with torch.no_grad():
         assert torch.allclose(average([a, a])(planes, scalars, legal), a(planes, scalars, legal))
